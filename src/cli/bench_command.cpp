@@ -1,0 +1,90 @@
+// polyroll bench: real-time factor of a scene at each fidelity preset, tracked run against bare
+// Box2D stepping of the same bodies, so the project's own overhead is visible. Single-threaded.
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/scene_options.h"
+#include "sim/assets.h"
+#include "sim/simulation.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+struct BenchOptions {
+    SceneOptions scene;
+    int repeats = 3;
+    std::vector<std::string> presets;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+int bench(const BenchOptions& o) {
+    Scene base = o.scene.resolve();
+    std::vector<std::string> presets = o.presets;
+    if (presets.empty()) presets = assets::preset_names(assets::Kind::fidelity);
+    fmt::print("polyroll bench: {} (n = {}), {} r = {:g}, {} at {:g} deg; best of {} on one core\n",
+               base.shell.preset, base.shell.sides, base.fill.material.preset + ",", base.fill.ratio,
+               base.ramp.preset, base.ramp.angle_deg, o.repeats);
+    fmt::print("{:<10} {:>9} {:>7} {:>8} {:>9} {:>9} {:>9} {:>9} {:>9}  {}\n", "fidelity", "step_s", "grains",
+               "sim_s", "build_s", "run_s", "run_x_rt", "bare_x_rt", "overhead", "behaviour");
+    for (const std::string& name : presets) {
+        Scene s = base;
+        // The preset's values replace the fidelity; everything else stays.
+        const auto& v = assets::preset_values(assets::Kind::fidelity, name);
+        s.fidelity.preset = name;
+        s.fidelity.step_hz = v.at("step_hz").get<double>();
+        s.fidelity.substeps = v.at("substeps").get<int>();
+        s.fidelity.velocity_iterations = v.at("velocity_iterations").get<int>();
+        s.fidelity.position_iterations = v.at("position_iterations").get<int>();
+        double best_run = 1e300, best_bare = 1e300, best_build = 1e300;
+        long steps = 0;
+        RunResult last;
+        for (int rep = 0; rep < o.repeats; ++rep) {
+            auto t0 = Clock::now();
+            Simulation sim(s);
+            best_build = std::min(best_build, seconds_since(t0));
+            t0 = Clock::now();
+            while (sim.step()) {
+            }
+            best_run = std::min(best_run, seconds_since(t0));
+            steps = sim.steps();
+            last = sim.result();
+
+            // The same bodies, stepped the same number of times with nothing watching.
+            std::unique_ptr<SimWorld> bare = build_world(s);
+            t0 = Clock::now();
+            for (long i = 0; i < steps; ++i) bare->step();
+            best_bare = std::min(best_bare, seconds_since(t0));
+        }
+        const double sim_s = static_cast<double>(steps) / s.fidelity.step_hz;
+        fmt::print("{:<10} {:>9.6f} {:>7} {:>8.3f} {:>9.4f} {:>9.4f} {:>9.1f} {:>9.1f} {:>8.1f}%  {}\n", name,
+                   1.0 / (s.fidelity.step_hz * s.fidelity.substeps), last.grains, sim_s, best_build, best_run,
+                   sim_s / best_run, sim_s / best_bare, 100.0 * (best_run - best_bare) / best_bare,
+                   to_string(last.measured.behaviour));
+        std::fflush(stdout);
+    }
+    fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
+               "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_bench_command(CLI::App& app) {
+    auto opts = std::make_shared<BenchOptions>();
+    CLI::App* sub = app.add_subcommand("bench", "measure speed: real-time factor per fidelity preset, and overhead "
+                                                "over bare Box2D stepping");
+    opts->scene.add_to(*sub);
+    sub->add_option("--repeats", opts->repeats, "runs per preset; the best is reported")
+        ->check(CLI::Range(1, 100));
+    sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
+    return [opts] { return bench(*opts); };
+}
+
+}  // namespace polyroll::cli

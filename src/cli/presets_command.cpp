@@ -1,0 +1,53 @@
+// polyroll presets: the bundled polygons, materials, ramps and fidelity levels, from assets/.
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "sim/assets.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+std::string value_text(const nlohmann::ordered_json& v) {
+    if (v.is_null()) return "from volumes";
+    if (v.is_number_float()) return fmt::format("{:g}", v.get<double>());
+    return v.dump();
+}
+
+int list(bool as_json) {
+    using assets::Kind;
+    const Kind kinds[] = {Kind::polygon, Kind::material, Kind::ramp, Kind::fidelity};
+    if (as_json) {
+        nlohmann::ordered_json out;
+        for (Kind k : kinds) out[std::string(assets::kind_label(k))] = assets::file(assets::kind_file(k)).at("presets");
+        fmt::print("{}\n", out.dump(2));
+        return kExitOk;
+    }
+    for (Kind k : kinds) {
+        fmt::print("{}s (assets/{}):\n", assets::kind_label(k), assets::kind_file(k));
+        for (const std::string& name : assets::preset_names(k)) {
+            const auto& entry = assets::preset_entry(k, name);
+            fmt::print("  {:<18} {}\n", name, entry.at("description").get<std::string>());
+            std::string values;
+            for (const auto& [key, v] : entry.at("values").items())
+                values += fmt::format("{}{} = {}", values.empty() ? "" : ", ", key, value_text(v));
+            fmt::print("  {:<18} {}\n", "", values);
+        }
+        fmt::print("\n");
+    }
+    fmt::print("Each value's source (a measurement of the experiment, or a stated choice and why) is in the\n"
+               "file named above, under \"sources\"; 'polyroll presets --json' prints them all.\n");
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_presets_command(CLI::App& app) {
+    auto as_json = std::make_shared<bool>(false);
+    CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps and fidelity levels");
+    sub->add_flag("--json", *as_json, "print them, with their sources, as JSON");
+    return [as_json] { return list(*as_json); };
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,102 @@
+// polyroll run: one scene, a human summary (or JSON) on stdout, the files with --out.
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/scene_options.h"
+#include "sim/atomic_file.h"
+#include "sim/results_io.h"
+#include "sim/scene_json.h"
+#include "sim/simulation.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+struct RunOptions {
+    SceneOptions scene;
+    std::string out;
+    bool json = false;
+    bool force = false;
+};
+
+std::string describe_scene(const Scene& s) {
+    return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {} fidelity",
+                       s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
+                       s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
+                       s.fill.ratio, s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
+                       to_string(s.release.pose), s.fidelity.preset.empty() ? "custom" : s.fidelity.preset);
+}
+
+void print_summary(const RunResult& r, const std::string& out) {
+    const Measurements& m = r.measured;
+    fmt::print("polyroll run: {}\n", describe_scene(r.scene));
+    fmt::print("  behaviour          {}\n", to_string(m.behaviour));
+    if (m.behaviour == Behaviour::diverged) fmt::print("  divergence         {}\n", m.divergence);
+    fmt::print("  distance           {:.3f} m\n", m.distance_m);
+    if (m.terminal_velocity_m_s)
+        fmt::print("  terminal velocity  {:.3f} m/s (mean over the last {} faces)\n", *m.terminal_velocity_m_s,
+                   m.terminal_velocity_faces);
+    else
+        fmt::print("  terminal velocity  - (only when it rolls to the end)\n");
+    if (m.impacts.empty())
+        fmt::print("  face impacts       0\n");
+    else
+        fmt::print("  face impacts       {} (mean kinetic energy ratio {:.3f})\n", m.impacts.size(),
+                   mean_impact_ratio(m));
+    const double rtf = r.wall_time_s > 0 ? m.end_time_s / r.wall_time_s : 0.0;
+    fmt::print("  time               {:.3f} s simulated in {:.3f} s ({:.0f}x real time)\n", m.end_time_s,
+               r.wall_time_s, rtf);
+    if (r.grains > 0)
+        fmt::print("  grains             {} ({} inside at the end), fill mass {:.4f} kg\n", r.grains, m.grains_inside,
+                   r.fill_mass_kg);
+    else
+        fmt::print("  grains             none (empty shell)\n");
+    if (!out.empty()) fmt::print("  files              {}/summary.json, trajectory.csv, impacts.csv\n", out);
+}
+
+int run(const RunOptions& o) {
+    const Scene scene = o.scene.resolve();
+    std::optional<std::filesystem::path> created;
+    if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
+    RunResult r;
+    try {
+        r = run_scene(scene);
+        if (!o.out.empty()) write_run_files(o.out, r);
+    } catch (...) {
+        // Nothing half-written: a folder this run created goes with it.
+        std::error_code ec;
+        if (created) std::filesystem::remove_all(*created, ec);
+        throw;
+    }
+    if (o.json)
+        fmt::print("{}\n", summary_json(r).dump(2));
+    else
+        print_summary(r, o.out);
+    if (r.measured.behaviour == Behaviour::diverged) {
+        fmt::print(stderr, "polyroll: the run diverged {}\n", r.measured.divergence);
+        return kExitDiverged;
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_run_command(CLI::App& app) {
+    auto opts = std::make_shared<RunOptions>();
+    CLI::App* sub = app.add_subcommand("run", "run one scene and report what the experiment measured");
+    sub->footer(
+        "Examples:\n"
+        "  polyroll run\n"
+        "  polyroll run --sides 8 --fill 0.375 --material rice --angle 14 --out runs/oct-rice\n"
+        "  polyroll run --scene my-scene.json --json\n"
+        "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 1 other failure.");
+    opts->scene.add_to(*sub);
+    sub->add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv")->group("Output");
+    sub->add_flag("--json", opts->json, "print the summary as JSON instead of text")->group("Output");
+    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
+    return [opts] { return run(*opts); };
+}
+
+}  // namespace polyroll::cli

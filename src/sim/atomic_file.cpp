@@ -1,0 +1,75 @@
+// Whole-or-nothing file writes: see atomic_file.h.
+#include "sim/atomic_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "sim/errors.h"
+
+namespace polyroll {
+
+namespace fs = std::filesystem;
+
+void write_file_atomic(const fs::path& path, std::string_view content) {
+    const fs::path tmp = path.parent_path() / fmt::format(".{}.tmp-{}", path.filename().string(), ::getpid());
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    size_t done = 0;
+    while (done < content.size()) {
+        const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int err = errno;
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(err)));
+        }
+        done += static_cast<size_t>(n);
+    }
+    // Data on disk before the rename makes it visible, so a power cut cannot leave an empty file.
+    if (::fsync(fd) != 0 || ::close(fd) != 0 || ::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int err = errno;
+        ::unlink(tmp.c_str());
+        throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(err)));
+    }
+}
+
+std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
+    std::error_code ec;
+    std::optional<fs::path> created;
+    if (fs::exists(dir, ec)) {
+        if (!fs::is_directory(dir, ec))
+            throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
+        if (!force && !fs::is_empty(dir, ec))
+            throw InputError(fmt::format("--out {}: folder exists and is not empty (use --force to overwrite "
+                                         "its files, or choose a new folder)",
+                                         dir.string()));
+    } else {
+        // The first missing ancestor is what to remove if the run fails.
+        fs::path top = fs::absolute(dir, ec).lexically_normal();
+        if (!top.has_filename()) top = top.parent_path();
+        while (top.has_parent_path() && top.parent_path() != top && !fs::exists(top.parent_path(), ec))
+            top = top.parent_path();
+        if (!fs::create_directories(dir, ec) || ec)
+            throw InputError(fmt::format("--out {}: cannot create the folder ({})", dir.string(),
+                                         ec ? ec.message() : "unknown error"));
+        created = top;
+    }
+    const fs::path probe = dir / fmt::format(".polyroll-probe-{}", ::getpid());
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        const int err = errno;
+        if (created) fs::remove_all(*created, ec);
+        throw InputError(fmt::format("--out {}: cannot write files there ({})", dir.string(), std::strerror(err)));
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return created;
+}
+
+}  // namespace polyroll

@@ -1,0 +1,19 @@
+// Files written whole or not at all: each is written under a temporary name in the same folder and
+// renamed into place, so a crash leaves the old file or the new one, never half of one.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace polyroll {
+
+// Throws std::runtime_error naming the path on any failure (the temporary is removed).
+void write_file_atomic(const std::filesystem::path& path, std::string_view content);
+
+// Makes `dir` ready for a run's files before any work is done, so a bad folder fails at once.
+// Refuses a non-empty folder unless `force`; checks that files can be created in it. Returns the
+// topmost folder it created, if any, for the caller to remove if the run fails. Throws InputError.
+std::optional<std::filesystem::path> prepare_output_dir(const std::filesystem::path& dir, bool force);
+
+}  // namespace polyroll

@@ -1,0 +1,38 @@
+// Where the grains go before release: circles packed in the bulk region of the fill (the part of
+// the inside below a level free surface holding fraction r of the inside area), in the shell's own
+// frame. Plain geometry, no engine: the builder turns the plan into bodies, the tests check it.
+#pragma once
+
+#include <vector>
+
+#include "sim/geometry.h"
+#include "sim/scene.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll {
+
+struct PlannedGrain {
+    geom::Vec2 position_m;  // in the shell's frame (centre of the polygon at the origin)
+    double radius_m = 0.0;
+    double mass_kg = 0.0;
+};
+
+struct FillPlan {
+    geom::Vec2 up;                    // unit vector against gravity, in the shell's frame
+    double surface_level_m = 0.0;     // free surface: points with dot(p, up) <= level are below it
+    double target_mass_kg = 0.0;      // r x inside volume x bulk density
+    std::vector<PlannedGrain> grains;
+};
+
+// The shell's inner polygon in its own frame (counter-clockwise). Vertex 0 and 1 span the face
+// that lies on the ramp when the shell's angle is 0; vertex 1 is the downhill one.
+std::vector<geom::Vec2> shell_inner_polygon_m(const ShellParams& shell);
+std::vector<geom::Vec2> shell_outer_polygon_m(const ShellParams& shell);
+
+// Packs the grains: a hexagonal lattice (spacing a little over the largest diameter) with its rows
+// level, keeping the sites whose circles fit inside and whose centres lie below the free surface.
+// The count therefore follows from r and the packing; the masses share the fill's target mass in
+// proportion to grain area. Sizes and a small jitter are drawn from `seed`.
+FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, geom::Vec2 up_in_shell_frame);
+
+}  // namespace polyroll

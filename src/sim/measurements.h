@@ -1,0 +1,46 @@
+// What a run measures, as the experiment did (shared/physics.md, last section), in SI units.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace polyroll {
+
+struct TrajectorySample {
+    double time_s = 0.0;
+    double position_m = 0.0;   // lid centre along the ramp, from its position at release
+    double speed_m_s = 0.0;    // lid centre's velocity along the ramp (negative when rocking back)
+    double angle_deg = 0.0;    // shell rotation since release, positive rolling down
+    double kinetic_J = 0.0;    // shell and grains
+    double potential_J = 0.0;  // shell and grains, relative to release
+    double dissipated_J = 0.0; // energy at release minus kinetic minus potential
+};
+
+struct FaceImpact {
+    int index = 0;  // 1 for the first face landed
+    double time_s = 0.0;
+    double position_m = 0.0;
+    double kinetic_before_J = 0.0;
+    double kinetic_after_J = 0.0;
+    double ratio() const { return kinetic_before_J > 0.0 ? kinetic_after_J / kinetic_before_J : 0.0; }
+};
+
+enum class Behaviour { running, stopped_at_first_impact, stopped, rolled_to_end, time_limit, diverged };
+std::string to_string(Behaviour b);
+
+struct Measurements {
+    Behaviour behaviour = Behaviour::running;
+    std::string divergence;              // what went wrong, when behaviour == diverged
+    double end_time_s = 0.0;
+    double distance_m = 0.0;             // lid centre along the ramp, release to stop or end
+    std::optional<double> terminal_velocity_m_s;
+    int terminal_velocity_faces = 0;     // how many face intervals the terminal velocity averages
+    std::optional<double> stop_time_s;   // when the shell came to rest (start of the rest window)
+    double max_energy_gain_J = 0.0;      // largest rise of total energy above its release value
+    int grains_inside = 0;               // at the last check
+    std::vector<FaceImpact> impacts;
+    std::vector<TrajectorySample> trajectory;
+};
+
+}  // namespace polyroll

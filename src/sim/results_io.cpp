@@ -1,0 +1,88 @@
+// A run's output files: see results_io.h.
+#include "sim/results_io.h"
+
+#include <fmt/format.h>
+
+#include "sim/atomic_file.h"
+#include "sim/scene_json.h"
+
+namespace polyroll {
+
+using json = nlohmann::ordered_json;
+
+double mean_impact_ratio(const Measurements& m) {
+    if (m.impacts.empty()) return 0.0;
+    double sum = 0.0;
+    for (const FaceImpact& f : m.impacts) sum += f.ratio();
+    return sum / static_cast<double>(m.impacts.size());
+}
+
+json summary_json(const RunResult& r) {
+    const Measurements& m = r.measured;
+    json results;
+    results["behaviour"] = to_string(m.behaviour);
+    if (m.behaviour == Behaviour::diverged) results["divergence"] = m.divergence;
+    results["distance_m"] = m.distance_m;
+    results["terminal_velocity_m_s"] = m.terminal_velocity_m_s ? json(*m.terminal_velocity_m_s) : json(nullptr);
+    results["terminal_velocity_faces"] = m.terminal_velocity_faces;
+    results["stop_time_s"] = m.stop_time_s ? json(*m.stop_time_s) : json(nullptr);
+    results["impacts"] = m.impacts.size();
+    results["mean_impact_energy_ratio"] = m.impacts.empty() ? json(nullptr) : json(mean_impact_ratio(m));
+    results["sim_time_s"] = m.end_time_s;
+    results["wall_time_s"] = r.wall_time_s;
+    results["grains"] = r.grains;
+    results["grains_inside_at_end"] = m.grains_inside;
+    results["fill_mass_kg"] = r.fill_mass_kg;
+    results["settle_time_s"] = r.settle_time_s;
+    results["settled"] = r.settled;
+    results["max_energy_gain_J"] = m.max_energy_gain_J;
+    results["steps"] = r.steps;
+
+    json shell;
+    shell["mass_kg"] = r.shell.mass_kg;
+    shell["inertia_kg_m2"] = r.shell.inertia_kg_m2;
+    shell["pivot_radius_m"] = r.shell.pivot_radius_m;
+    shell["outer_circumradius_m"] = r.shell.outer_circumradius_m;
+    shell["outer_side_m"] = r.shell.outer_side_m;
+    shell["inside_volume_m3"] = r.shell.inside_volume_m3;
+    shell["lid_mass_fraction"] = r.shell.lid_mass_fraction;
+    shell["lid_inertia_share"] = r.shell.lid_inertia_share;
+
+    json engine;
+    engine["length_unit_m"] = 1.0 / r.units.units_per_m;
+    engine["engine_step_s"] = 1.0 / (r.scene.fidelity.step_hz * r.scene.fidelity.substeps);
+    engine["speed_cap_m_s"] = r.units.speed_cap_m_s(r.scene.fidelity);
+
+    json out;
+    out["polyroll"] = "0.1.0";
+    out["scene"] = scene_to_json(r.scene);
+    out["results"] = results;
+    out["shell"] = shell;
+    out["engine"] = engine;
+    return out;
+}
+
+std::string trajectory_csv(const RunResult& r) {
+    std::string s = "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J\n";
+    for (const TrajectorySample& t : r.measured.trajectory)
+        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g}\n", t.time_s, t.position_m, t.speed_m_s,
+                         t.angle_deg, t.kinetic_J, t.potential_J, t.dissipated_J);
+    return s;
+}
+
+std::string impacts_csv(const RunResult& r) {
+    std::string s = "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio\n";
+    for (const FaceImpact& f : r.measured.impacts)
+        s += fmt::format("{},{:.6f},{:.6f},{:.9g},{:.9g},{:.6f}\n", f.index, f.time_s, f.position_m,
+                         f.kinetic_before_J, f.kinetic_after_J, f.ratio());
+    return s;
+}
+
+void write_run_files(const std::filesystem::path& dir, const RunResult& r) {
+    write_file_atomic(dir / "trajectory.csv", trajectory_csv(r));
+    write_file_atomic(dir / "impacts.csv", impacts_csv(r));
+    // The summary last: its presence means the run's files are complete.
+    write_file_atomic(dir / "summary.json", summary_json(r).dump(2) + "\n");
+}
+
+}  // namespace polyroll

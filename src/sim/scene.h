@@ -1,0 +1,91 @@
+// The scene: every parameter of one run, as plain data in SI units and degrees.
+// Values come from assets/ (defaults.json and the presets); scene_json.h reads and writes them and
+// scene_validate.h checks them. No defaults live here: a Scene is always resolved from the assets.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace polyroll {
+
+// A hollow regular n-gon: the 3D box whose cross-section the 2D body is.
+struct ShellParams {
+    std::string preset;                 // the preset these values started from ("" if none)
+    int sides = 0;                      // n
+    double inner_circumradius_m = 0.0;  // inside centre-to-vertex radius
+    double wall_thickness_m = 0.0;      // side walls, measured perpendicular to each face
+    double depth_m = 0.0;               // inside length along the roll axis (between the lids)
+    double lid_thickness_m = 0.0;       // each of the two end faces
+    double mass_kg = 0.0;               // walls plus both lids
+    // Share of mass_kg in the two lids; empty = walls and lids of one material (split by volume).
+    std::optional<double> lid_mass_fraction;
+};
+
+// A bulk grain material, modelled in 2D as circles.
+struct MaterialParams {
+    std::string preset;
+    double diameter_m = 0.0;           // mean grain diameter
+    double diameter_spread = 0.0;      // diameters uniform in d (1 +- spread)
+    double bulk_density_kg_m3 = 0.0;   // poured bulk density (mass / bulk volume)
+    double friction = 0.0;             // grain on grain
+    double wall_friction = 0.0;        // grain on the shell's walls
+    double restitution = 0.0;          // grain on grain and on walls
+};
+
+struct FillParams {
+    double ratio = 0.0;  // r: fraction of the inside volume occupied by bulk grains, 0..1
+    MaterialParams material;
+};
+
+struct RampParams {
+    std::string preset;
+    double length_m = 0.0;
+    double friction = 0.0;      // shell on ramp surface
+    double restitution = 0.0;   // shell on ramp surface
+    double angle_deg = 0.0;     // theta, from horizontal
+};
+
+enum class ReleasePose { vertex, face };
+
+struct ReleaseParams {
+    ReleasePose pose = ReleasePose::vertex;
+    // Vertex release: rotation past the balance point (centre of the polygon straight above the
+    // pivot vertex), downhill. A hand never lets go exactly at balance.
+    double tilt_deg = 0.0;
+};
+
+// Time step, sub-steps and solver iterations: what the user pays for accuracy.
+struct FidelityParams {
+    std::string preset;
+    double step_hz = 0.0;          // tracker steps per simulated second
+    int substeps = 0;              // engine Step calls per tracker step
+    int velocity_iterations = 0;
+    int position_iterations = 0;
+};
+
+// Which physics computes the run: the grain simulation, or one of the experimenters' reduced models
+// (shared/physics.md), which treat the polygon and its fill as one rigid body between impacts.
+enum class Model { grains, segments, rigid };
+
+struct RunParams {
+    Model model = Model::grains;
+    std::uint64_t seed = 0;
+    double time_limit_s = 0.0;
+    double sample_hz = 0.0;        // trajectory.csv rows per simulated second
+    double gravity_m_s2 = 0.0;
+    double settle_time_s = 0.0;    // longest time given to the grains to settle before release
+    double rest_speed_m_s = 0.0;   // the shell counts as at rest below this speed...
+    double rest_time_s = 0.0;      // ... held for this long
+};
+
+struct Scene {
+    ShellParams shell;
+    FillParams fill;
+    RampParams ramp;
+    ReleaseParams release;
+    FidelityParams fidelity;
+    RunParams run;
+};
+
+}  // namespace polyroll
