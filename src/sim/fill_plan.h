@@ -29,10 +29,9 @@ struct FillPlan {
 std::vector<geom::Vec2> shell_inner_polygon_m(const ShellParams& shell);
 std::vector<geom::Vec2> shell_outer_polygon_m(const ShellParams& shell);
 
-// Packs the grains: a hexagonal lattice (spacing a little over the largest diameter) with its rows
-// level, keeping the sites whose circles fit inside and whose centres lie below the free surface.
-// The count therefore follows from r and the packing; the masses share the fill's target mass in
-// proportion to grain area. Sizes and a small jitter are drawn from `seed`.
+// Packs the grains by pouring them (grain_deposition.h) into the inside, in the release pose, up to
+// the free surface. The count therefore follows from r and the packing; the masses share the fill's
+// target mass in proportion to grain area. Sizes are drawn with run.seed.
 FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, geom::Vec2 up_in_shell_frame);
 
 }  // namespace polyroll

@@ -189,6 +189,8 @@ std::unique_ptr<SimWorld> build_world(const Scene& scene) {
     w->shell->SetAngularVelocity(0.0f);
     w->shell->SetAwake(true);
     for (b2Body* b : w->grains) b->SetAwake(true);
+    // Measure from where the engine holds the shell (floats), so the first row reads exactly 0.
+    w->start_centre_x_m = u.to_m(w->shell->GetPosition().x);
     return w;
 }
 
