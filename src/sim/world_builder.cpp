@@ -76,6 +76,12 @@ std::unique_ptr<SimWorld> build_world(const Scene& scene) {
     w->world = std::make_unique<b2World>(to_b2(w->gravity_m_s2, u));
     w->world->SetContactListener(w->materials.get());
     w->world->SetAllowSleeping(true);
+    // Continuous collision in Box2D 2.4 only guards dynamic-vs-static pairs, here the shell on the
+    // ramp. The ramp is 5 cm thick and the tracker stops any run whose shell nears 1.6 engine
+    // units (at most 1.6 cm) per step, so the shell cannot pass through it; the
+    // time-of-impact sub-steps cost about 10% of the default scene and, measured, moved the
+    // rigid-impact energy ratios of empty shells further from the model (0.7-1.0% against 0.2-0.7%).
+    w->world->SetContinuousPhysics(false);
 
     // Ramp: a thick static box whose top face is y = 0, reaching past both ends so a polygon at
     // the end still has a surface under it until the run stops it.
