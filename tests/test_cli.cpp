@@ -158,3 +158,15 @@ TEST_CASE("presets lists every bundled preset", "[cli]") {
                              "wooden", "draft", "standard", "precise", "reference"})
         CHECK(r.out.find(name) != std::string::npos);
 }
+
+TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli][divergence]") {
+    const fs::path out = scratch("diverged");
+    const Result r = polyroll("run --step-hz 30 --angle 60 --out " + out.string());
+    CHECK(r.exit_code == 3);
+    CHECK(r.out.find("diverged") != std::string::npos);
+    std::ifstream in(out / "summary.json");
+    const auto summary = nlohmann::json::parse(in);
+    CHECK(summary.at("results").at("behaviour") == "diverged");
+    CHECK(summary.at("results").at("divergence").get<std::string>().find("finer fidelity") != std::string::npos);
+    fs::remove_all(out);
+}

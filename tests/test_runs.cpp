@@ -120,3 +120,24 @@ TEST_CASE("trajectory rows come at the sample rate and start at release", "[runs
     CHECK(t[3].time_s == Approx(0.1).margin(1e-3));
     CHECK(t.back().time_s == Approx(1.0).margin(1e-3));
 }
+
+TEST_CASE("a run too coarse for its scene is stopped as diverged, with the reason", "[runs][divergence]") {
+    // 30 steps a second lets grains fall through the walls while they settle.
+    const Scene s = test::scene_with({{"fidelity", {{"step_hz", 30}, {"substeps", 1}}},
+                                      {"ramp", {{"angle_deg", 60}}}});
+    const RunResult r = run_scene(s);
+    CHECK(r.measured.behaviour == Behaviour::diverged);
+    CHECK(r.measured.divergence.find("finer fidelity") != std::string::npos);
+    CHECK(r.measured.grains_inside < r.grains);
+    for (const TrajectorySample& t : r.measured.trajectory) CHECK(std::isfinite(t.position_m));
+}
+
+TEST_CASE("a shell nearing the engine's per-step speed limit is stopped as diverged", "[runs][divergence]") {
+    // Empty, steep and coarse: 2 cm per step at 60 Hz caps speeds at 1.2 m/s; the shell passes 0.96.
+    const Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}},
+                                      {"fidelity", {{"step_hz", 60}, {"substeps", 1}}},
+                                      {"ramp", {{"angle_deg", 45}}}});
+    const RunResult r = run_scene(s);
+    CHECK(r.measured.behaviour == Behaviour::diverged);
+    CHECK(r.measured.divergence.find("engine's limit") != std::string::npos);
+}

@@ -176,8 +176,9 @@ bool Tracker::check_grains(double time_s) {
     const int inside = count_grains_inside();
     m_.grains_inside = inside;
     if (inside < static_cast<int>(w_.grains.size())) {
-        diverge(fmt::format("{} of {} grains left the shell through its walls; use a finer fidelity",
-                            static_cast<int>(w_.grains.size()) - inside, w_.grains.size()),
+        diverge(fmt::format("{} of {} grains left the shell through its walls{}; use a finer fidelity",
+                            static_cast<int>(w_.grains.size()) - inside, w_.grains.size(),
+                            time_s == 0.0 ? " while they settled before release" : ""),
                 time_s);
         return false;
     }
