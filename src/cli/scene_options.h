@@ -2,10 +2,13 @@
 // runs one. They become the last layer over assets/defaults.json and any --scene file.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "sim/scene.h"
 
@@ -20,12 +23,13 @@ public:
 private:
     struct Flag {
         CLI::Option* option = nullptr;
-        std::string field;  // e.g. "shell.sides"
+        std::string field;                           // e.g. "shell.sides"
+        std::function<nlohmann::ordered_json()> value;  // the parsed value, as JSON
     };
-    std::string scene_file_, model_, polygon_, material_, ramp_, fidelity_, release_;
-    int sides_ = 0, substeps_ = 0, velocity_iterations_ = 0, position_iterations_ = 0;
-    double fill_ = 0, angle_ = 0, tilt_ = 0, step_hz_ = 0, time_limit_ = 0, sample_hz_ = 0;
-    std::uint64_t seed_ = 0;
+    template <class T>
+    void add_flag(CLI::App& app, const std::string& name, const std::string& field, const std::string& help);
+
+    std::string scene_file_;
     CLI::Option* scene_option_ = nullptr;
     std::vector<Flag> flags_;
 };

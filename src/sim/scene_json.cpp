@@ -4,6 +4,9 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <type_traits>
+#include <variant>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -17,17 +20,72 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-// The keys each section takes besides "preset", in output order.
-const std::vector<std::string> kShellKeys = {"sides", "inner_circumradius_m", "wall_thickness_m", "depth_m",
-                                             "lid_thickness_m", "mass_kg", "lid_mass_fraction"};
-const std::vector<std::string> kMaterialKeys = {"diameter_m", "diameter_spread", "bulk_density_kg_m3",
-                                                "friction", "wall_friction", "restitution"};
-const std::vector<std::string> kRampKeys = {"length_m", "friction", "restitution", "angle_deg"};
-const std::vector<std::string> kReleaseKeys = {"pose", "tilt_deg"};
-const std::vector<std::string> kFidelityKeys = {"step_hz", "substeps", "velocity_iterations",
-                                                "position_iterations"};
-const std::vector<std::string> kRunKeys = {"model", "seed", "time_limit_s", "sample_hz", "gravity_m_s2",
-                                           "settle_time_s", "rest_speed_m_s", "rest_time_s"};
+// Each section's numeric fields, in output order: one table serves reading, writing and the list
+// of allowed keys. Fields with their own form (preset names, release.pose, run.model, run.seed)
+// are handled by name.
+template <class S>
+struct Field {
+    const char* key;
+    std::variant<double S::*, int S::*, std::optional<double> S::*> member;
+};
+const std::vector<Field<ShellParams>> kShellFields = {
+    {"sides", &ShellParams::sides},
+    {"inner_circumradius_m", &ShellParams::inner_circumradius_m},
+    {"wall_thickness_m", &ShellParams::wall_thickness_m},
+    {"depth_m", &ShellParams::depth_m},
+    {"lid_thickness_m", &ShellParams::lid_thickness_m},
+    {"mass_kg", &ShellParams::mass_kg},
+    {"lid_mass_fraction", &ShellParams::lid_mass_fraction}};
+const std::vector<Field<MaterialParams>> kMaterialFields = {
+    {"diameter_m", &MaterialParams::diameter_m},
+    {"diameter_spread", &MaterialParams::diameter_spread},
+    {"bulk_density_kg_m3", &MaterialParams::bulk_density_kg_m3},
+    {"friction", &MaterialParams::friction},
+    {"wall_friction", &MaterialParams::wall_friction},
+    {"restitution", &MaterialParams::restitution}};
+const std::vector<Field<RampParams>> kRampFields = {{"length_m", &RampParams::length_m},
+                                                   {"friction", &RampParams::friction},
+                                                   {"restitution", &RampParams::restitution},
+                                                   {"angle_deg", &RampParams::angle_deg}};
+const std::vector<Field<ReleaseParams>> kReleaseFields = {{"tilt_deg", &ReleaseParams::tilt_deg}};
+const std::vector<Field<FidelityParams>> kFidelityFields = {
+    {"step_hz", &FidelityParams::step_hz},
+    {"substeps", &FidelityParams::substeps},
+    {"velocity_iterations", &FidelityParams::velocity_iterations},
+    {"position_iterations", &FidelityParams::position_iterations}};
+const std::vector<Field<RunParams>> kRunFields = {{"time_limit_s", &RunParams::time_limit_s},
+                                                  {"sample_hz", &RunParams::sample_hz},
+                                                  {"gravity_m_s2", &RunParams::gravity_m_s2},
+                                                  {"settle_time_s", &RunParams::settle_time_s},
+                                                  {"rest_speed_m_s", &RunParams::rest_speed_m_s},
+                                                  {"rest_time_s", &RunParams::rest_time_s}};
+
+template <class S>
+std::vector<std::string> keys_of(const std::vector<Field<S>>& fields, std::vector<std::string> extra = {}) {
+    for (const auto& f : fields) extra.emplace_back(f.key);
+    return extra;
+}
+const std::vector<std::string> kShellKeys = keys_of(kShellFields);
+const std::vector<std::string> kMaterialKeys = keys_of(kMaterialFields);
+const std::vector<std::string> kRampKeys = keys_of(kRampFields);
+const std::vector<std::string> kReleaseKeys = keys_of(kReleaseFields, {"pose"});
+const std::vector<std::string> kFidelityKeys = keys_of(kFidelityFields);
+const std::vector<std::string> kRunKeys = keys_of(kRunFields, {"model", "seed"});
+
+template <class S>
+void write_fields(json& out, const S& params, const std::vector<Field<S>>& fields) {
+    for (const auto& f : fields) {
+        std::visit(
+            [&](auto member) {
+                const auto& v = params.*member;
+                if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::optional<double>>)
+                    out[f.key] = v ? json(*v) : json(nullptr);
+                else
+                    out[f.key] = v;
+            },
+            f.member);
+    }
+}
 const std::vector<std::string> kSections = {"shell", "fill", "ramp", "release", "fidelity", "run"};
 
 std::string join(const std::vector<std::string>& v) {
@@ -87,42 +145,22 @@ public:
     Scene scene() const {
         Scene s;
         s.shell.preset = shell_.value("preset", "");
-        s.shell.sides = integer(shell_, "shell", "sides");
-        s.shell.inner_circumradius_m = number(shell_, "shell", "inner_circumradius_m");
-        s.shell.wall_thickness_m = number(shell_, "shell", "wall_thickness_m");
-        s.shell.depth_m = number(shell_, "shell", "depth_m");
-        s.shell.lid_thickness_m = number(shell_, "shell", "lid_thickness_m");
-        s.shell.mass_kg = number(shell_, "shell", "mass_kg");
-        if (!shell_.at("lid_mass_fraction").is_null())
-            s.shell.lid_mass_fraction = number(shell_, "shell", "lid_mass_fraction");
-
+        read_fields(shell_, "shell", s.shell, kShellFields);
         s.fill.ratio = number_value(fill_ratio_, "fill.ratio");
         s.fill.material.preset = material_.value("preset", "");
-        s.fill.material.diameter_m = number(material_, "fill.material", "diameter_m");
-        s.fill.material.diameter_spread = number(material_, "fill.material", "diameter_spread");
-        s.fill.material.bulk_density_kg_m3 = number(material_, "fill.material", "bulk_density_kg_m3");
-        s.fill.material.friction = number(material_, "fill.material", "friction");
-        s.fill.material.wall_friction = number(material_, "fill.material", "wall_friction");
-        s.fill.material.restitution = number(material_, "fill.material", "restitution");
-
+        read_fields(material_, "fill.material", s.fill.material, kMaterialFields);
         s.ramp.preset = ramp_.value("preset", "");
-        s.ramp.length_m = number(ramp_, "ramp", "length_m");
-        s.ramp.friction = number(ramp_, "ramp", "friction");
-        s.ramp.restitution = number(ramp_, "ramp", "restitution");
-        s.ramp.angle_deg = number(ramp_, "ramp", "angle_deg");
+        read_fields(ramp_, "ramp", s.ramp, kRampFields);
+        read_fields(release_, "release", s.release, kReleaseFields);
+        s.fidelity.preset = fidelity_.value("preset", "");
+        read_fields(fidelity_, "fidelity", s.fidelity, kFidelityFields);
+        read_fields(run_, "run", s.run, kRunFields);
 
         const json& pose = release_.at("pose");
         if (pose == "vertex") s.release.pose = ReleasePose::vertex;
         else if (pose == "face") s.release.pose = ReleasePose::face;
         else throw InputError(fmt::format("release.pose = {}{} is not allowed (allowed: vertex, face)",
                                           pose.dump(), where("release.pose")));
-        s.release.tilt_deg = number(release_, "release", "tilt_deg");
-
-        s.fidelity.preset = fidelity_.value("preset", "");
-        s.fidelity.step_hz = number(fidelity_, "fidelity", "step_hz");
-        s.fidelity.substeps = integer(fidelity_, "fidelity", "substeps");
-        s.fidelity.velocity_iterations = integer(fidelity_, "fidelity", "velocity_iterations");
-        s.fidelity.position_iterations = integer(fidelity_, "fidelity", "position_iterations");
 
         const json& model = run_.at("model");
         if (model == "grains") s.run.model = Model::grains;
@@ -136,18 +174,30 @@ public:
             throw InputError(fmt::format("run.seed = {}{} must be a whole number from 0 to 2^64-1", seed.dump(),
                                          where("run.seed")));
         s.run.seed = seed.get<std::uint64_t>();
-        s.run.time_limit_s = number(run_, "run", "time_limit_s");
-        s.run.sample_hz = number(run_, "run", "sample_hz");
-        s.run.gravity_m_s2 = number(run_, "run", "gravity_m_s2");
-        s.run.settle_time_s = number(run_, "run", "settle_time_s");
-        s.run.rest_speed_m_s = number(run_, "run", "rest_speed_m_s");
-        s.run.rest_time_s = number(run_, "run", "rest_time_s");
 
         validate_scene(s, [this](const std::string& field) { return where(field); });
         return s;
     }
 
 private:
+    template <class S>
+    void read_fields(const json& sec, const std::string& path, S& out, const std::vector<Field<S>>& fields) const {
+        for (const auto& f : fields) {
+            std::visit(
+                [&](auto member) {
+                    auto& target = out.*member;
+                    using T = std::decay_t<decltype(target)>;
+                    if constexpr (std::is_same_v<T, int>)
+                        target = integer(sec, path, f.key);
+                    else if constexpr (std::is_same_v<T, std::optional<double>>)
+                        target = sec.at(f.key).is_null() ? std::nullopt : std::optional(number(sec, path, f.key));
+                    else
+                        target = number(sec, path, f.key);
+                },
+                f.member);
+        }
+    }
+
     std::string label(const std::string& field) const {
         for (const auto& [f, flag] : layer_->field_labels)
             if (f == field) return flag;
@@ -271,57 +321,30 @@ std::string to_string(Model model) {
 }
 
 nlohmann::ordered_json scene_to_json(const Scene& s) {
-    json j;
-    auto preset = [](json& sec, const std::string& name) {
-        if (!name.empty()) sec["preset"] = name;
+    auto section = [](const std::string& preset) {
+        json sec = json::object();
+        if (!preset.empty()) sec["preset"] = preset;
+        return sec;
     };
-    json shell = json::object();
-    preset(shell, s.shell.preset);
-    shell["sides"] = s.shell.sides;
-    shell["inner_circumradius_m"] = s.shell.inner_circumradius_m;
-    shell["wall_thickness_m"] = s.shell.wall_thickness_m;
-    shell["depth_m"] = s.shell.depth_m;
-    shell["lid_thickness_m"] = s.shell.lid_thickness_m;
-    shell["mass_kg"] = s.shell.mass_kg;
-    shell["lid_mass_fraction"] = s.shell.lid_mass_fraction ? json(*s.shell.lid_mass_fraction) : json(nullptr);
+    json j;
+    json shell = section(s.shell.preset);
+    write_fields(shell, s.shell, kShellFields);
     j["shell"] = shell;
-
-    json material = json::object();
-    preset(material, s.fill.material.preset);
-    material["diameter_m"] = s.fill.material.diameter_m;
-    material["diameter_spread"] = s.fill.material.diameter_spread;
-    material["bulk_density_kg_m3"] = s.fill.material.bulk_density_kg_m3;
-    material["friction"] = s.fill.material.friction;
-    material["wall_friction"] = s.fill.material.wall_friction;
-    material["restitution"] = s.fill.material.restitution;
+    json material = section(s.fill.material.preset);
+    write_fields(material, s.fill.material, kMaterialFields);
     j["fill"] = json{{"ratio", s.fill.ratio}, {"material", material}};
-
-    json ramp = json::object();
-    preset(ramp, s.ramp.preset);
-    ramp["length_m"] = s.ramp.length_m;
-    ramp["friction"] = s.ramp.friction;
-    ramp["restitution"] = s.ramp.restitution;
-    ramp["angle_deg"] = s.ramp.angle_deg;
+    json ramp = section(s.ramp.preset);
+    write_fields(ramp, s.ramp, kRampFields);
     j["ramp"] = ramp;
-
-    j["release"] = json{{"pose", to_string(s.release.pose)}, {"tilt_deg", s.release.tilt_deg}};
-
-    json fidelity = json::object();
-    preset(fidelity, s.fidelity.preset);
-    fidelity["step_hz"] = s.fidelity.step_hz;
-    fidelity["substeps"] = s.fidelity.substeps;
-    fidelity["velocity_iterations"] = s.fidelity.velocity_iterations;
-    fidelity["position_iterations"] = s.fidelity.position_iterations;
+    json release = json{{"pose", to_string(s.release.pose)}};
+    write_fields(release, s.release, kReleaseFields);
+    j["release"] = release;
+    json fidelity = section(s.fidelity.preset);
+    write_fields(fidelity, s.fidelity, kFidelityFields);
     j["fidelity"] = fidelity;
-
-    j["run"] = json{{"model", to_string(s.run.model)},
-                    {"seed", s.run.seed},
-                    {"time_limit_s", s.run.time_limit_s},
-                    {"sample_hz", s.run.sample_hz},
-                    {"gravity_m_s2", s.run.gravity_m_s2},
-                    {"settle_time_s", s.run.settle_time_s},
-                    {"rest_speed_m_s", s.run.rest_speed_m_s},
-                    {"rest_time_s", s.run.rest_time_s}};
+    json run = json{{"model", to_string(s.run.model)}, {"seed", s.run.seed}};
+    write_fields(run, s.run, kRunFields);
+    j["run"] = run;
     return j;
 }
 
