@@ -111,3 +111,11 @@ TEST_CASE("scene files: malformed JSON, a directory, a missing file", "[scene][b
     CHECK_THROWS_WITH(read_scene_file(arr), Catch::Contains("JSON object"));
     fs::remove_all(dir);
 }
+
+TEST_CASE("a release tilt past one face's turn is refused", "[scene][bad-input]") {
+    // A 64-gon turns 5.6 degrees per face; a 10 degree tilt would start its next vertex in the ramp.
+    const std::string msg = error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})");
+    CHECK(msg.find("release.tilt_deg = 10") != std::string::npos);
+    CHECK(msg.find("n = 64") != std::string::npos);
+    CHECK(error_of(R"({"shell": {"sides": 6}, "release": {"tilt_deg": 10}})").empty());
+}

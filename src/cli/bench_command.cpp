@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "cli/bench_models.h"
+#include "cli/bench_render.h"
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/assets.h"
@@ -18,6 +20,7 @@ struct BenchOptions {
     SceneOptions scene;
     int repeats = 3;
     std::vector<std::string> presets;
+    bool render_only = false, no_render = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -26,6 +29,10 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 int bench(const BenchOptions& o) {
     Scene base = o.scene.resolve();
+    if (o.render_only) {
+        bench_rendering(base, o.repeats);
+        return kExitOk;
+    }
     std::vector<std::string> presets = o.presets;
     if (presets.empty()) presets = assets::preset_names(assets::Kind::fidelity);
     fmt::print("polyroll bench: {} (n = {}), {} r = {:g}, {} at {:g} deg; best of {} on one core\n",
@@ -33,6 +40,7 @@ int bench(const BenchOptions& o) {
                base.ramp.preset, base.ramp.angle_deg, o.repeats);
     fmt::print("{:<10} {:>9} {:>7} {:>8} {:>9} {:>9} {:>9} {:>9} {:>9}  {}\n", "fidelity", "step_s", "grains",
                "sim_s", "build_s", "run_s", "run_x_rt", "bare_x_rt", "overhead", "behaviour");
+    std::optional<double> grain_run_s;  // at the scene's own fidelity, for the reduced models' speed-up
     for (const std::string& name : presets) {
         Scene s = base;
         // The preset's values replace the fidelity; everything else stays.
@@ -63,6 +71,7 @@ int bench(const BenchOptions& o) {
             best_bare = std::min(best_bare, seconds_since(t0));
         }
         const double sim_s = static_cast<double>(steps) / s.fidelity.step_hz;
+        if (name == base.fidelity.preset) grain_run_s = best_build + best_run;
         fmt::print("{:<10} {:>9.6f} {:>7} {:>8.3f} {:>9.4f} {:>9.4f} {:>9.1f} {:>9.1f} {:>8.1f}%  {}\n", name,
                    1.0 / (s.fidelity.step_hz * s.fidelity.substeps), last.grains, sim_s, best_build, best_run,
                    sim_s / best_run, sim_s / best_bare, 100.0 * (best_run - best_bare) / best_bare,
@@ -71,6 +80,8 @@ int bench(const BenchOptions& o) {
     }
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
+    bench_models(base, o.repeats, grain_run_s);
+    if (!o.no_render) bench_rendering(base, o.repeats);
     return kExitOk;
 }
 
@@ -84,6 +95,8 @@ Action add_bench_command(CLI::App& app) {
     sub->add_option("--repeats", opts->repeats, "runs per preset; the best is reported")
         ->check(CLI::Range(1, 100));
     sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
+    sub->add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
+    sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     return [opts] { return bench(*opts); };
 }
 

@@ -19,5 +19,9 @@ using Action = std::function<int()>;
 Action add_run_command(CLI::App& app);
 Action add_presets_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
+Action add_compare_command(CLI::App& app);
+Action add_render_command(CLI::App& app);
+Action add_sweep_command(CLI::App& app);
+Action add_figures_command(CLI::App& app);
 
 }  // namespace polyroll::cli

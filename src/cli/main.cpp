@@ -1,5 +1,5 @@
-// polyroll: the headless tool. Runs scenes, lists presets and measures speed; never opens a window
-// or a GL context.
+// polyroll: the headless tool. Runs scenes, renders them to frames, lists presets and measures speed;
+// never opens a window. Only rendering creates a GL context (OSMesa, offscreen); a data run has none.
 #include <cstdio>
 #include <exception>
 
@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
     };
     add(add_run_command);
     add(add_presets_command);
+    add(add_render_command);
+    add(add_compare_command);
+    add(add_sweep_command);
+    add(add_figures_command);
     add(add_bench_command);
     try {
         app.parse(argc, argv);

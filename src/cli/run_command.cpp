@@ -34,6 +34,10 @@ void print_summary(const RunResult& r, const std::string& out) {
     fmt::print("polyroll run: {}\n", describe_scene(r.scene));
     fmt::print("  behaviour          {}\n", to_string(m.behaviour));
     if (m.behaviour == Behaviour::diverged) fmt::print("  divergence         {}\n", m.divergence);
+    if (!r.model_valid)
+        fmt::print("  model valid        no: from t = {:.3f} s the {} model needs a negative normal force (the real "
+                   "polygon would hop); its numbers after that mean little\n",
+                   r.model_invalid_time_s.value_or(0.0), to_string(r.scene.run.model));
     fmt::print("  distance           {:.3f} m\n", m.distance_m);
     if (m.terminal_velocity_m_s)
         fmt::print("  terminal velocity  {:.3f} m/s (mean over the last {} faces)\n", *m.terminal_velocity_m_s,

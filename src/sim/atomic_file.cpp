@@ -15,7 +15,7 @@ namespace polyroll {
 
 namespace fs = std::filesystem;
 
-void write_file_atomic(const fs::path& path, std::string_view content) {
+void write_file_atomic(const fs::path& path, std::string_view content, Durability durability) {
     const fs::path tmp = path.parent_path() / fmt::format(".{}.tmp-{}", path.filename().string(), ::getpid());
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
@@ -32,7 +32,8 @@ void write_file_atomic(const fs::path& path, std::string_view content) {
         done += static_cast<size_t>(n);
     }
     // Data on disk before the rename makes it visible, so a power cut cannot leave an empty file.
-    if (::fsync(fd) != 0 || ::close(fd) != 0 || ::rename(tmp.c_str(), path.c_str()) != 0) {
+    const bool synced = durability == Durability::unsynced || ::fsync(fd) == 0;
+    if (!synced || ::close(fd) != 0 || ::rename(tmp.c_str(), path.c_str()) != 0) {
         const int err = errno;
         ::unlink(tmp.c_str());
         throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(), std::strerror(err)));

@@ -8,8 +8,14 @@
 
 namespace polyroll {
 
+// Whether the data must reach the disk before the rename. Results are synced; frames, which are
+// cheap to make again and come by the hundred, need not be (a crash then loses recent frames, but
+// never leaves half of one).
+enum class Durability { synced, unsynced };
+
 // Throws std::runtime_error naming the path on any failure (the temporary is removed).
-void write_file_atomic(const std::filesystem::path& path, std::string_view content);
+void write_file_atomic(const std::filesystem::path& path, std::string_view content,
+                       Durability durability = Durability::synced);
 
 // Makes `dir` ready for a run's files before any work is done, so a bad folder fails at once.
 // Refuses a non-empty folder unless `force`; checks that files can be created in it. Returns the

@@ -43,4 +43,9 @@ struct Measurements {
     std::vector<TrajectorySample> trajectory;
 };
 
+// The terminal velocity of a run that rolled to the end, as the experiment took it: the mean speed
+// of the lid centre over the last full turn (n face intervals, or as many as there were), from the
+// impacts' positions and times. Empty with fewer than two impacts. Sets terminal_velocity_faces.
+void set_terminal_velocity(Measurements& m, int sides);
+
 }  // namespace polyroll

@@ -20,6 +20,7 @@ double mean_impact_ratio(const Measurements& m) {
 json summary_json(const RunResult& r) {
     const Measurements& m = r.measured;
     json results;
+    results["model"] = to_string(r.scene.run.model);
     results["behaviour"] = to_string(m.behaviour);
     if (m.behaviour == Behaviour::diverged) results["divergence"] = m.divergence;
     results["distance_m"] = m.distance_m;
@@ -37,6 +38,8 @@ json summary_json(const RunResult& r) {
     results["settled"] = r.settled;
     results["max_energy_gain_J"] = m.max_energy_gain_J;
     results["steps"] = r.steps;
+    results["model_valid"] = r.model_valid;
+    results["model_invalid_time_s"] = r.model_invalid_time_s ? json(*r.model_invalid_time_s) : json(nullptr);
 
     json shell;
     shell["mass_kg"] = r.shell.mass_kg;
@@ -58,15 +61,22 @@ json summary_json(const RunResult& r) {
     out["scene"] = scene_to_json(r.scene);
     out["results"] = results;
     out["shell"] = shell;
-    out["engine"] = engine;
+    // Box2D's units and step mean nothing to the reduced models, which integrate their own equations.
+    if (r.scene.run.model == Model::grains) out["engine"] = engine;
     return out;
 }
+
+namespace {
+// fmt prints -0.0 as "-0"; a table reads better without it.
+double tidy(double x) { return x == 0.0 ? 0.0 : x; }
+}  // namespace
 
 std::string trajectory_csv(const RunResult& r) {
     std::string s = "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J\n";
     for (const TrajectorySample& t : r.measured.trajectory)
-        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g}\n", t.time_s, t.position_m, t.speed_m_s,
-                         t.angle_deg, t.kinetic_J, t.potential_J, t.dissipated_J);
+        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g}\n", t.time_s, tidy(t.position_m),
+                         tidy(t.speed_m_s), tidy(t.angle_deg), tidy(t.kinetic_J), tidy(t.potential_J),
+                         tidy(t.dissipated_J));
     return s;
 }
 

@@ -1,6 +1,7 @@
 // Range checks for scenes: see scene_validate.h.
 #include "sim/scene_validate.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -77,6 +78,19 @@ void validate_scene(const Scene& s, const std::function<std::string(const std::s
     c.range("ramp.angle_deg", s.ramp.angle_deg, 0.0, 89.0, "degrees");
 
     c.range("release.tilt_deg", s.release.tilt_deg, 0.0, 30.0, "degrees");
+    {
+        // The release turns the shell about its downhill vertex; past one face's turn (360/n degrees,
+        // less the turn a vertex release already makes) the next vertex would start inside the ramp.
+        const double face_turn_deg = 360.0 / s.shell.sides;
+        const double balance_turn_deg =
+            s.release.pose == ReleasePose::vertex ? std::max(0.0, 180.0 / s.shell.sides - s.ramp.angle_deg) : 0.0;
+        const double max_tilt_deg = 0.9 * (face_turn_deg - balance_turn_deg);
+        if (s.release.tilt_deg > max_tilt_deg)
+            throw InputError(fmt::format(
+                "release.tilt_deg = {:g}{} is too large for n = {} at {:g} degrees (allowed: 0 to {:.2f} degrees; "
+                "more would start the next vertex inside the ramp)",
+                s.release.tilt_deg, c.from("release.tilt_deg"), s.shell.sides, s.ramp.angle_deg, max_tilt_deg));
+    }
 
     c.range("fidelity.step_hz", s.fidelity.step_hz, 30.0, 100000.0, "Hz");
     c.irange("fidelity.substeps", s.fidelity.substeps, 1, 100);

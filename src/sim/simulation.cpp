@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "sim/errors.h"
+#include "sim/models/reduced_models.h"
 #include "sim/scene_json.h"
 
 namespace polyroll {
@@ -39,8 +40,7 @@ RunResult Simulation::result() const {
 }
 
 RunResult run_scene(const Scene& scene) {
-    if (scene.run.model != Model::grains)
-        throw InputError(fmt::format("run.model = {} is not available yet (allowed: grains)", to_string(scene.run.model)));
+    if (scene.run.model != Model::grains) return models::run_reduced_model(scene);
     const auto start = std::chrono::steady_clock::now();
     Simulation sim(scene);
     while (sim.step()) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "sim/measurements.h"
 #include "sim/scene.h"
@@ -22,6 +23,10 @@ struct RunResult {
     bool settled = true;
     long steps = 0;
     double wall_time_s = 0.0;  // building, settling and running, measured by the caller's clock
+    // The reduced models assume the polygon stays on the ramp; false once the normal force they need
+    // turns negative (the real polygon hops), from model_invalid_time_s on. Always true for grains.
+    bool model_valid = true;
+    std::optional<double> model_invalid_time_s;
 };
 
 class Simulation {

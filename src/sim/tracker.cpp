@@ -7,6 +7,15 @@
 
 namespace polyroll {
 
+void set_terminal_velocity(Measurements& m, int sides) {
+    const auto& imp = m.impacts;
+    if (imp.size() < 2) return;
+    const size_t last = imp.size() - 1;
+    const size_t first = last >= static_cast<size_t>(sides) ? last - static_cast<size_t>(sides) : 0;
+    m.terminal_velocity_m_s = (imp[last].position_m - imp[first].position_m) / (imp[last].time_s - imp[first].time_s);
+    m.terminal_velocity_faces = static_cast<int>(last - first);
+}
+
 std::string to_string(Behaviour b) {
     switch (b) {
         case Behaviour::running: return "running";
@@ -89,16 +98,8 @@ void Tracker::finish(Behaviour b, double time_s) {
     // The last state is always in the trajectory, so the file ends where the run ended.
     if (m_.trajectory.empty() || m_.trajectory.back().time_s < time_s) m_.trajectory.push_back(now_);
     if (b == Behaviour::rolled_to_end) {
-        // Mean speed over the last full turn (n face intervals), or as many as there were.
-        const auto& imp = m_.impacts;
-        const int n = w_.scene.shell.sides;
-        if (imp.size() >= 2) {
-            const size_t last = imp.size() - 1;
-            const size_t first = last >= static_cast<size_t>(n) ? last - n : 0;
-            m_.terminal_velocity_m_s =
-                (imp[last].position_m - imp[first].position_m) / (imp[last].time_s - imp[first].time_s);
-            m_.terminal_velocity_faces = static_cast<int>(last - first);
-        } else {
+        set_terminal_velocity(m_, w_.scene.shell.sides);
+        if (!m_.terminal_velocity_m_s) {
             // No face rhythm to average over (a sliding or hopping shell): the mean speed of the
             // last tenth of the run.
             const double t0 = 0.9 * time_s;

@@ -1,0 +1,143 @@
+// polyroll compare: one scene with each model (grains, segments, rigid), side by side: what each
+// level of modelling predicts and what it costs. With --out, the three runs' files and a combined
+// speed-versus-time CSV.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/scene_options.h"
+#include "sim/atomic_file.h"
+#include "sim/results_io.h"
+#include "sim/scene_json.h"
+#include "sim/simulation.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+struct CompareOptions {
+    SceneOptions scene;
+    std::string out;
+    bool force = false;
+};
+
+// The grain simulation first: it is the reference the others are timed against.
+constexpr Model kModels[] = {Model::grains, Model::segments, Model::rigid};
+
+std::string optional_number(const std::optional<double>& v, const char* format) {
+    return v ? fmt::format(fmt::runtime(format), *v) : std::string("-");
+}
+
+// One row per sample time any run has; a run without a row at that time leaves its cell empty.
+std::string speed_csv(const std::vector<RunResult>& runs) {
+    std::map<long long, std::vector<std::optional<double>>> rows;  // keyed by time in nanoseconds
+    for (size_t i = 0; i < runs.size(); ++i) {
+        for (const TrajectorySample& s : runs[i].measured.trajectory) {
+            auto& row = rows[std::llround(s.time_s * 1e9)];
+            row.resize(runs.size());
+            row[i] = s.speed_m_s;
+        }
+    }
+    std::string csv = "time_s";
+    for (const RunResult& r : runs) csv += fmt::format(",{}_speed_m_s", to_string(r.scene.run.model));
+    csv += "\n";
+    for (const auto& [ns, row] : rows) {
+        csv += fmt::format("{:.6f}", static_cast<double>(ns) * 1e-9);
+        for (const auto& v : row) csv += v ? fmt::format(",{:.6f}", *v) : std::string(",");
+        csv += "\n";
+    }
+    return csv;
+}
+
+void print_table(const std::vector<RunResult>& runs) {
+    const RunResult& ref = runs.front();
+    const Scene& s = ref.scene;
+    fmt::print("polyroll compare: {} (n = {}), {} r = {:g}, {} at {:g} deg, {} fidelity for grains\n",
+               s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
+               s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",", s.fill.ratio,
+               s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
+               s.fidelity.preset.empty() ? "custom" : s.fidelity.preset);
+    fmt::print("{:<9} {:<24} {:>10} {:>10} {:>8} {:>10} {:>11} {:>9}  {}\n", "model", "behaviour", "distance_m",
+               "vt_m_s", "impacts", "mean_Q", "wall_s", "speed_up", "model valid");
+    for (const RunResult& r : runs) {
+        const Measurements& m = r.measured;
+        const std::string valid = r.model_valid ? std::string("yes")
+                                                : fmt::format("no: would hop from t = {:.3f} s",
+                                                              r.model_invalid_time_s.value_or(0.0));
+        fmt::print("{:<9} {:<24} {:>10.3f} {:>10} {:>8} {:>10} {:>11.6f} {:>9}  {}\n",
+                   to_string(r.scene.run.model), to_string(m.behaviour), m.distance_m,
+                   optional_number(m.terminal_velocity_m_s, "{:.3f}"), m.impacts.size(),
+                   m.impacts.empty() ? std::string("-") : fmt::format("{:.4f}", mean_impact_ratio(m)), r.wall_time_s,
+                   r.wall_time_s > 0.0 ? fmt::format("{:.0f}x", ref.wall_time_s / r.wall_time_s) : std::string("-"),
+                   valid);
+    }
+    fmt::print("vt: terminal velocity (rolled to the end); mean_Q: mean kinetic-energy ratio over the face impacts;\n"
+               "wall_s: one run on one core (grains: building and settling included); speed_up: over the grain model.\n");
+}
+
+int compare(const CompareOptions& o) {
+    const Scene base = o.scene.resolve();
+    std::optional<std::filesystem::path> created;
+    if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
+    std::vector<RunResult> runs;
+    try {
+        for (Model model : kModels) {
+            Scene s = base;
+            s.run.model = model;
+            runs.push_back(run_scene(s));
+        }
+        if (!o.out.empty()) {
+            const std::filesystem::path dir(o.out);
+            for (const RunResult& r : runs) {
+                const std::filesystem::path sub = dir / to_string(r.scene.run.model);
+                std::filesystem::create_directories(sub);
+                write_run_files(sub, r);
+            }
+            write_file_atomic(dir / "speed_vs_time.csv", speed_csv(runs));
+        }
+    } catch (...) {
+        std::error_code ec;
+        if (created) std::filesystem::remove_all(*created, ec);
+        throw;
+    }
+    print_table(runs);
+    if (!o.out.empty())
+        fmt::print("files: {0}/{{grains,segments,rigid}}/summary.json, trajectory.csv, impacts.csv; "
+                   "{0}/speed_vs_time.csv\n",
+                   o.out);
+    for (const RunResult& r : runs) {
+        if (r.measured.behaviour == Behaviour::diverged) {
+            fmt::print(stderr, "polyroll: the {} run diverged {}\n", to_string(r.scene.run.model),
+                       r.measured.divergence);
+            return kExitDiverged;
+        }
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_compare_command(CLI::App& app) {
+    auto opts = std::make_shared<CompareOptions>();
+    CLI::App* sub = app.add_subcommand(
+        "compare", "run one scene with the grain simulation and both reduced models (segments, rigid), side by side");
+    sub->footer(
+        "Examples:\n"
+        "  polyroll compare\n"
+        "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
+        "Any --model flag is ignored: every model runs.\n"
+        "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.");
+    opts->scene.add_to(*sub);
+    sub->add_option("--out", opts->out,
+                    "folder for grains/, segments/ and rigid/ (each summary.json, trajectory.csv, impacts.csv) "
+                    "and speed_vs_time.csv")
+        ->group("Output");
+    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
+    return [opts] { return compare(*opts); };
+}
+
+}  // namespace polyroll::cli

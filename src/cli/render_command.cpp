@@ -1,0 +1,287 @@
+// polyroll render: a scene rendered headless (OSMesa, no display or GPU) to a PNG frame sequence,
+// with the run's summary.json, trajectory.csv and impacts.csv beside the frames, and optionally a
+// video made with ffmpeg when it is installed.
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/scene_options.h"
+#include "render/frame_encoder.h"
+#include "render/render_sequence.h"
+#include "sim/atomic_file.h"
+#include "sim/errors.h"
+#include "sim/results_io.h"
+#include "sim/scene_json.h"
+
+extern char** environ;
+
+namespace polyroll::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The limits of the render flags, in one place.
+constexpr double kMaxFps = 240.0;
+constexpr int kMaxSlow = 100;
+constexpr int kMinSide = 16, kMaxWidth = 7680, kMaxHeight = 4320;
+constexpr double kMaxHold = 60.0;
+
+struct RenderOptions {
+    SceneOptions scene;
+    std::string out;
+    std::string size = "1280x720";
+    double fps = 30.0;
+    int slow = 1;
+    double hold_s = 1.0;
+    bool follow = false;
+    std::string colour_by = "material";
+    std::string video;
+    bool force = false;
+};
+
+struct Size {
+    int width = 0, height = 0;
+};
+
+Size parse_size(const std::string& text) {
+    static const std::regex pattern(R"(\s*(\d{1,6})\s*[xX]\s*(\d{1,6})\s*)");
+    std::smatch m;
+    const std::string allowed = fmt::format("allowed: WIDTHxHEIGHT, width {}..{}, height {}..{}, e.g. 1280x720",
+                                            kMinSide, kMaxWidth, kMinSide, kMaxHeight);
+    if (!std::regex_match(text, m, pattern)) throw InputError(fmt::format("--size {}: not a size ({})", text, allowed));
+    const Size s{std::stoi(m[1]), std::stoi(m[2])};
+    if (s.width < kMinSide || s.width > kMaxWidth || s.height < kMinSide || s.height > kMaxHeight)
+        throw InputError(fmt::format("--size {}: out of range ({})", text, allowed));
+    return s;
+}
+
+// The full path of an executable on PATH, or "" when there is none.
+std::string find_on_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    if (!path) return {};
+    std::string dirs = path;
+    size_t start = 0;
+    while (start <= dirs.size()) {
+        size_t end = dirs.find(':', start);
+        if (end == std::string::npos) end = dirs.size();
+        const fs::path candidate = fs::path(dirs.substr(start, end - start).empty() ? "." : dirs.substr(start, end - start)) / name;
+        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+        start = end + 1;
+    }
+    return {};
+}
+
+std::vector<std::string> ffmpeg_args(const std::string& ffmpeg, const RenderOptions& o) {
+    return {ffmpeg, "-y", "-hide_banner", "-loglevel", "error", "-framerate", fmt::format("{:g}", o.fps), "-i",
+            (fs::path(o.out) / "frame_%06d.png").string(),
+            // yuv420p plays everywhere but needs even sides.
+            "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", o.video};
+}
+
+std::string shell_quote(const std::string& s) {
+    if (s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=%:") ==
+        std::string::npos)
+        return s;
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string command_line(const std::vector<std::string>& args) {
+    std::string line;
+    for (const std::string& a : args) line += (line.empty() ? "" : " ") + shell_quote(a);
+    return line;
+}
+
+// Runs ffmpeg and waits; returns its exit status (or -1 if it could not start).
+int run_ffmpeg(const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (::posix_spawn(&pid, args[0].c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string no_ffmpeg_message(const RenderOptions& o) {
+    return fmt::format(
+        "--video {}: ffmpeg is not installed, so no video was made (the frames are in {}).\n"
+        "  Install it with:  sudo apt-get install ffmpeg\n"
+        "  then make the video from these frames with:\n"
+        "  {}",
+        o.video, o.out, command_line(ffmpeg_args("ffmpeg", o)));
+}
+
+// A progress line: in place on a terminal, otherwise a line every tenth of the way.
+class ProgressLine {
+public:
+    ProgressLine() : tty_(::isatty(STDERR_FILENO) != 0) {}
+    void update(const render::SequenceProgress& p) {
+        const double fps = p.wall_s > 0 ? static_cast<double>(p.frames_done) / p.wall_s : 0.0;
+        const double left = fps > 0 ? static_cast<double>(p.frames_expected - p.frames_done) / fps : 0.0;
+        const std::string line = fmt::format("  rendering: frame {}/{}, {:.0f} frames/s, {:.1f} s left", p.frames_done,
+                                             p.frames_expected, fps, left);
+        if (tty_) {
+            fmt::print(stderr, "\r{:<70}", line);
+            if (p.frames_done >= p.frames_expected) fmt::print(stderr, "\n");
+        } else {
+            const long tenth = p.frames_done * 10 / std::max(1L, p.frames_expected);
+            if (tenth > last_tenth_) {
+                last_tenth_ = tenth;
+                fmt::print(stderr, "{}\n", line);
+            }
+        }
+        std::fflush(stderr);
+    }
+
+private:
+    bool tty_;
+    long last_tenth_ = 0;
+};
+
+void remove_old_frames(const fs::path& dir) {
+    // With --force, frames of an earlier, longer render would otherwise trail the new sequence.
+    static const std::regex frame(R"(frame_\d{6}\.png)");
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (std::regex_match(e.path().filename().string(), frame)) fs::remove(e.path(), ec);
+}
+
+int render(const RenderOptions& o) {
+    // Every flag is checked before any work, so bad input leaves nothing behind.
+    const Size size = parse_size(o.size);
+    if (!(o.fps >= 1.0 && o.fps <= kMaxFps))
+        throw InputError(fmt::format("--fps {:g}: out of range (allowed: 1 to {:g} frames per second)", o.fps, kMaxFps));
+    if (o.slow < 1 || o.slow > kMaxSlow)
+        throw InputError(fmt::format("--slow {}: out of range (allowed: 1 to {}, the slow-motion factor)", o.slow, kMaxSlow));
+    if (!(o.hold_s >= 0.0 && o.hold_s <= kMaxHold))
+        throw InputError(fmt::format("--hold {:g}: out of range (allowed: 0 to {:g} s)", o.hold_s, kMaxHold));
+    if (o.colour_by != "material" && o.colour_by != "speed")
+        throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
+    std::string ffmpeg;
+    if (!o.video.empty()) {
+        const fs::path parent = fs::absolute(o.video).parent_path();
+        std::error_code ec;
+        if (!fs::is_directory(parent, ec))
+            throw InputError(fmt::format("--video {}: the folder {} does not exist", o.video, parent.string()));
+        if (fs::path(o.video).extension().empty())
+            throw InputError(fmt::format("--video {}: needs an extension that names the format (e.g. .mp4)", o.video));
+        ffmpeg = find_on_path("ffmpeg");
+    }
+    const Scene scene = o.scene.resolve();
+    if (scene.run.model != Model::grains)
+        throw InputError(fmt::format("--model {}: only the grains model can be rendered (allowed: grains)",
+                                     to_string(scene.run.model)));
+    const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);
+    if (!o.video.empty() && ffmpeg.empty())
+        fmt::print(stderr, "polyroll: note: ffmpeg is not installed: the frames will be written, but no video (how "
+                           "to make one follows at the end)\n");
+
+    render::SequenceSettings st;
+    st.frame.width_px = size.width;
+    st.frame.height_px = size.height;
+    st.frame.follow = o.follow;
+    st.frame.grain_colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
+    st.fps = o.fps;
+    st.slow = o.slow;
+    st.hold_s = o.hold_s;
+
+    fmt::print("polyroll render: n = {}, r = {:g} {}, theta = {:g} deg on the {}, {}x{} at {:g} fps{}{}\n",
+               scene.shell.sides, scene.fill.ratio, scene.fill.material.preset, scene.ramp.angle_deg,
+               scene.ramp.preset.empty() ? "custom ramp" : scene.ramp.preset, size.width, size.height, o.fps,
+               o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");
+    std::fflush(stdout);
+    render::SequenceResult res;
+    ProgressLine progress;
+    try {
+        if (o.force) remove_old_frames(o.out);
+        res = render::render_sequence(scene, st, o.out,
+                                      [&](const render::SequenceProgress& p) { progress.update(p); });
+        write_run_files(o.out, res.run);
+    } catch (...) {
+        // Nothing half-written: a folder this render created goes with it.
+        std::error_code ec;
+        if (created) fs::remove_all(*created, ec);
+        throw;
+    }
+
+    const Measurements& m = res.run.measured;
+    const long total = res.run_frames + res.hold_frames;
+    const double fps_wall = res.render_wall_s > 0 ? static_cast<double>(total) / res.render_wall_s : 0.0;
+    fmt::print("  frames     {} ({} of the run, {} holding the end): {} ... {}\n", total, res.run_frames,
+               res.hold_frames, render::frame_file_name(1), render::frame_file_name(total));
+    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impacts\n", to_string(m.behaviour),
+               m.end_time_s, m.distance_m, m.impacts.size());
+    fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
+               res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
+    fmt::print("  files      {}/summary.json, trajectory.csv, impacts.csv\n", o.out);
+    std::fflush(stdout);
+
+    int code = m.behaviour == Behaviour::diverged ? kExitDiverged : kExitOk;
+    if (m.behaviour == Behaviour::diverged)
+        fmt::print(stderr, "polyroll: the run diverged {}\n", m.divergence);
+    if (!o.video.empty()) {
+        if (ffmpeg.empty()) {
+            fmt::print(stderr, "polyroll: {}\n", no_ffmpeg_message(o));
+            return code == kExitOk ? kExitFailure : code;
+        }
+        const int status = run_ffmpeg(ffmpeg_args(ffmpeg, o));
+        if (status != 0) {
+            fmt::print(stderr, "polyroll: --video {}: ffmpeg failed (exit status {}); the frames are in {}. The command "
+                               "was:\n  {}\n",
+                       o.video, status, o.out, command_line(ffmpeg_args(ffmpeg, o)));
+            return code == kExitOk ? kExitFailure : code;
+        }
+        fmt::print("  video      {}\n", o.video);
+    }
+    return code;
+}
+
+}  // namespace
+
+Action add_render_command(CLI::App& app) {
+    auto opts = std::make_shared<RenderOptions>();
+    CLI::App* sub = app.add_subcommand("render", "render a scene headless to PNG frames (and a video with ffmpeg)");
+    sub->footer(
+        "Frames are taken whenever simulated time has advanced by 1/(fps x slow), until the run ends, then\n"
+        "the final state is held for --hold seconds. summary.json, trajectory.csv and impacts.csv go beside\n"
+        "the frames, as 'polyroll run' writes them. No display or GPU is needed (OSMesa).\n"
+        "Examples:\n"
+        "  polyroll render --out frames/\n"
+        "  polyroll render --sides 8 --fill 0.375 --material peas --angle 12 --fps 60 --size 1920x1080 \\\n"
+        "      --out frames/oct --video oct.mp4\n"
+        "  polyroll render --scene my-scene.json --follow --slow 4 --out frames/slow\n"
+        "Exit codes: 0 done, 2 bad input, 3 the run diverged (frames and files are written), 1 other failure\n"
+        "(including a --video that could not be made; the frames are still written).");
+    opts->scene.add_to(*sub);
+    sub->add_option("--out", opts->out, "folder for the frames and the run's files")->required()->group("Output");
+    sub->add_option("--size", opts->size, "frame size WIDTHxHEIGHT in pixels (default 1280x720)")->group("Output");
+    sub->add_option("--fps", opts->fps, "frames per second of video, 1 to 240 (default 30)")->group("Output");
+    sub->add_option("--slow", opts->slow, "slow motion: K times as many frames per simulated second (default 1)")
+        ->group("Output");
+    sub->add_option("--hold", opts->hold_s, "seconds of video the final state is held for (default 1)")->group("Output");
+    sub->add_flag("--follow", opts->follow, "the camera follows the polygon instead of showing the whole ramp")
+        ->group("Output");
+    sub->add_option("--color-by,--colour-by", opts->colour_by, "grain colours: material (default) or speed")
+        ->group("Output");
+    sub->add_option("--video", opts->video, "also encode the frames to this video file with ffmpeg (e.g. run.mp4)")
+        ->group("Output");
+    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder (old frames are removed)")
+        ->group("Output");
+    return [opts] { return render(*opts); };
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,258 @@
+// polyroll sweep: a grid of scenes run in parallel into one results table; --plan-only, --from with
+// --shard and --merge spread the same grid over hosts. See docs/sweeps.md.
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <optional>
+#include <csignal>
+#include <filesystem>
+#include <thread>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "sim/atomic_file.h"
+#include "sim/errors.h"
+#include "sim/scene_json.h"
+#include "sweep/grid_values.h"
+#include "sweep/merge.h"
+#include "sweep/progress.h"
+#include "sweep/sweep_plan.h"
+#include "sweep/sweep_runner.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+// 128 + SIGINT, what shells report for a command stopped by Ctrl-C.
+constexpr int kExitInterrupted = 130;
+
+// The swept scene flags, in the plan's axis order (the last varies fastest; the seed comes last).
+struct AxisFlag {
+    const char* name;
+    const char* field;
+    const char* help;
+};
+const std::vector<AxisFlag> kAxisFlags = {
+    {"--model", "run.model", "physics: grains, segments, rigid"},
+    {"--fidelity", "fidelity.preset", "fidelity presets: draft, standard, precise, reference"},
+    {"--polygon", "shell.preset", "polygon presets, e.g. hexagon-small,hexagon-large"},
+    {"--sides", "shell.sides", "numbers of sides n, 3 to 64, e.g. 6,8 or 4:10:2"},
+    {"--material", "fill.material.preset", "fill materials: bb, rice, peas"},
+    {"--fill", "fill.ratio", "fill ratios r, 0 to 1, e.g. 0:1:0.125"},
+    {"--ramp", "ramp.preset", "ramp presets: air-track, wooden"},
+    {"--angle", "ramp.angle_deg", "ramp angles theta in degrees, 0 to 89, e.g. 5:30:1"},
+    {"--release", "release.pose", "release poses: vertex, face"},
+    {"--tilt", "release.tilt_deg", "release tilts past balance, degrees"},
+    {"--time-limit", "run.time_limit_s", "longest simulated times, s"},
+};
+
+struct SweepArgs {
+    std::map<std::string, std::string> axis_text;  // flag -> its text
+    std::vector<std::string> sets;                 // FIELD=VALUES
+    std::string scene_file;
+    std::string seed_list;
+    int seeds = 0;
+    std::string out, from, merge, shard;
+    bool plan_only = false, trajectories = false, retry_failed = false, quiet = false;
+    int jobs = 0;
+    std::vector<CLI::Option*> scene_options;  // every option that defines the grid
+};
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void on_signal(int sig) {
+    if (g_stop.exchange(true)) {  // the second Ctrl-C stops at once; the tables stay consistent
+        std::signal(sig, SIG_DFL);
+        std::raise(sig);
+        return;
+    }
+    const char msg[] = "\npolyroll sweep: stopping after the runs in flight (Ctrl-C again to stop now; "
+                       "the same command resumes)\n";
+    [[maybe_unused]] auto n = ::write(2, msg, sizeof msg - 1);
+}
+
+sweep::SweepPlan plan_from_args(const SweepArgs& a) {
+    json base = json::object();
+    if (!a.scene_file.empty()) base = read_scene_file(a.scene_file).doc;
+    resolve_scene({SceneLayer{base, a.scene_file.empty() ? "defaults" : a.scene_file, {}}});  // a bad base fails now
+    std::vector<sweep::SweepAxis> axes;
+    for (const AxisFlag& f : kAxisFlags) {
+        const auto it = a.axis_text.find(f.name);
+        if (it == a.axis_text.end()) continue;
+        axes.push_back({f.field, f.name, sweep::parse_grid_values(f.name, it->second)});
+    }
+    for (const std::string& s : a.sets) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError(fmt::format("--set '{}' is not FIELD=VALUES (e.g. --set shell.depth_m=0.05,0.062)", s));
+        const std::string field = s.substr(0, eq);
+        const std::string flag = "--set " + field;
+        sweep::check_scene_field(field, flag);
+        if (field == "run.seed")
+            throw InputError("--set run.seed: use --seed LIST or --seeds N for seeds");
+        axes.push_back({field, flag, sweep::parse_grid_values(flag, s.substr(eq + 1))});
+    }
+    if (!a.seed_list.empty() && a.seeds > 0)
+        throw InputError("--seed and --seeds are both given (allowed: one: --seed 1,5,9 or --seeds 3 for 1,2,3)");
+    if (a.seeds > 0) {
+        std::vector<json> seeds;
+        for (int s = 1; s <= a.seeds; ++s) seeds.emplace_back(static_cast<std::uint64_t>(s));
+        axes.push_back({"run.seed", "--seeds", seeds});
+    } else if (!a.seed_list.empty()) {
+        axes.push_back({"run.seed", "--seed", sweep::parse_grid_values("--seed", a.seed_list)});
+    }
+    return sweep::make_grid_plan(base, axes);
+}
+
+void print_report(const sweep::SweepReport& r, int jobs) {
+    const double per_min = r.wall_time_s > 0 ? 60.0 * static_cast<double>(r.ran) / r.wall_time_s : 0.0;
+    fmt::print("polyroll sweep: {} of {} runs done in this session ({} failed), {} found done before; {} with {} "
+               "job{} ({:.1f} runs/min)\n",
+               r.ran, r.planned - r.already, r.failed, r.already,
+               r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s),
+               jobs,
+               jobs == 1 ? "" : "s", per_min);
+    fmt::print("  table  {}\n", r.table.string());
+    if (r.interrupted) fmt::print("  interrupted: run the same command again to resume\n");
+}
+
+int run_merge(const SweepArgs& a) {
+    const sweep::SweepPlan plan = sweep::read_plan(a.merge);
+    const sweep::MergeReport m = sweep::merge_tables(plan, a.merge);
+    fmt::print("polyroll sweep --merge: {} tables, {} of {} runs ({} failed) into {}\n", m.tables, m.rows, m.runs,
+               m.failed, (fs::path(a.merge) / "results.csv").string());
+    if (m.missing.empty()) return kExitOk;
+    std::string first;
+    for (std::size_t i = 0; i < m.missing.size() && i < 10; ++i) first += (i ? ", " : "") + std::to_string(m.missing[i]);
+    fmt::print(stderr, "polyroll sweep --merge: {} runs are in no table yet (plan indices {}{}); run the missing "
+               "shards, or 'polyroll sweep --from {}' to run whatever is left\n",
+               m.missing.size(), first, m.missing.size() > 10 ? ", ..." : "", a.merge);
+    return kExitFailure;
+}
+
+int run(const SweepArgs& a) {
+    const int modes = !a.out.empty() + !a.from.empty() + !a.merge.empty();
+    if (modes != 1)
+        throw InputError("sweep: give exactly one of --out DIR (a new sweep or its resumption), --from DIR (run a "
+                         "written plan) or --merge DIR");
+    const bool grid_flags = std::any_of(a.scene_options.begin(), a.scene_options.end(),
+                                        [](const CLI::Option* o) { return o->count() > 0; });
+    if (a.out.empty() && grid_flags)
+        throw InputError(fmt::format("sweep: scene and grid flags are not allowed with --from or --merge (the plan "
+                                     "in the folder defines the runs)"));
+    if (!a.shard.empty() && a.from.empty())
+        throw InputError("--shard needs --from DIR (write the plan first with --out DIR --plan-only)");
+    if (a.plan_only && a.out.empty()) throw InputError("--plan-only needs --out DIR");
+    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
+    std::optional<std::pair<int, int>> shard;
+    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);  // flags before folders
+    if (!a.merge.empty()) return run_merge(a);
+
+    fs::path dir;
+    sweep::SweepPlan plan;
+    if (!a.out.empty()) {
+        dir = a.out;
+        plan = plan_from_args(a);
+        std::error_code ec;
+        if (fs::exists(sweep::plan_path(dir), ec)) {
+            // Resuming: the folder's plan must be this command's.
+            const sweep::SweepPlan existing = sweep::read_plan(dir);
+            if (sweep::plan_to_json(existing) != sweep::plan_to_json(plan))
+                throw InputError(fmt::format("--out {}: holds a different sweep (its plan.json has {} runs, this "
+                                             "command {}); allowed: a new folder, or the same command to resume",
+                                             a.out, existing.runs.size(), plan.runs.size()));
+        } else {
+            prepare_output_dir(dir, false);
+            sweep::write_plan(dir, plan);
+        }
+        if (a.plan_only) {
+            fmt::print("polyroll sweep: plan of {} runs written to {}\n", plan.runs.size(),
+                       sweep::plan_path(dir).string());
+            fmt::print("  run a slice:  polyroll sweep --from {} --shard K/N\n  then:        polyroll sweep --merge {}\n",
+                       a.out, a.out);
+            return kExitOk;
+        }
+    } else {
+        dir = a.from;
+        plan = sweep::read_plan(dir);
+    }
+
+    sweep::SweepOptions o;
+    o.dir = dir;
+    o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    o.shard = shard;
+    o.trajectories = a.trajectories;
+    o.retry_failed = a.retry_failed;
+    o.quiet = a.quiet;
+
+    g_stop = false;
+    auto old_int = std::signal(SIGINT, on_signal);
+    auto old_term = std::signal(SIGTERM, on_signal);
+    sweep::SweepReport r;
+    try {
+        r = sweep::run_sweep(plan, o, &g_stop);
+    } catch (...) {
+        std::signal(SIGINT, old_int);
+        std::signal(SIGTERM, old_term);
+        throw;
+    }
+    std::signal(SIGINT, old_int);
+    std::signal(SIGTERM, old_term);
+    print_report(r, o.jobs);
+    return r.interrupted ? kExitInterrupted : kExitOk;
+}
+
+}  // namespace
+
+Action add_sweep_command(CLI::App& app) {
+    auto a = std::make_shared<SweepArgs>();
+    CLI::App* sub = app.add_subcommand("sweep", "run a grid of scenes in parallel into one results table");
+    sub->footer(
+        "Lists a,b,c and ranges start:stop:step (stop included) may be mixed: --fill 0,0.05:0.95:0.15,1.\n"
+        "Examples:\n"
+        "  polyroll sweep --sides 6,8 --fill 0:1:0.125 --angle 5:30:1 --material bb,rice,peas --seeds 3 --out sweeps/grid\n"
+        "  polyroll sweep ... --out sweeps/big --plan-only     # write the plan, run nothing\n"
+        "  polyroll sweep --from sweeps/big --shard 3/16      # one slice of it\n"
+        "  polyroll sweep --merge sweeps/big                  # combine the slices into results.csv\n"
+        "The same command resumes an interrupted sweep. Exit codes: 0 done (failed runs are rows of the table),\n"
+        "2 bad input, 130 interrupted (resume with the same command), 1 other failure or --merge with runs missing.");
+    a->scene_options.push_back(
+        sub->add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid")->group("Grid"));
+    for (const AxisFlag& f : kAxisFlags) {
+        CLI::Option* o = sub->add_option_function<std::string>(
+                                f.name, [a, name = std::string(f.name)](const std::string& v) { a->axis_text[name] = v; },
+                                f.help)
+                             ->group("Grid");
+        a->scene_options.push_back(o);
+    }
+    a->scene_options.push_back(sub->add_option("--set,--param", a->sets,
+                                               "any scene field: FIELD=VALUES, e.g. --set shell.depth_m=0.05:0.07:0.01 "
+                                               "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m)")
+                                   ->group("Grid"));
+    a->scene_options.push_back(
+        sub->add_option("--seed", a->seed_list, "seeds for the grain packing, e.g. 1,2,3")->group("Grid"));
+    a->scene_options.push_back(sub->add_option("--seeds", a->seeds, "N seeds per point: 1, 2, ..., N")
+                                   ->check(CLI::Range(1, 100000))
+                                   ->group("Grid"));
+    sub->add_option("--out", a->out, "sweep folder: plan.json, results.csv, runs/<id>/; an existing sweep folder "
+                                     "of the same command is resumed")
+        ->group("Folders");
+    sub->add_flag("--plan-only", a->plan_only, "write the plan into --out and run nothing")->group("Folders");
+    sub->add_option("--from", a->from, "run the plan in this sweep folder (what is left of it)")->group("Folders");
+    sub->add_option("--shard", a->shard, "with --from: run slice K of N (runs whose index is K-1 modulo N)")
+        ->group("Folders");
+    sub->add_option("--merge", a->merge, "combine the folder's tables into its results.csv")->group("Folders");
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    sub->add_flag("--trajectories", a->trajectories, "also write each run's trajectory.csv")->group("Running");
+    sub->add_flag("--retry-failed", a->retry_failed, "run again the runs recorded as failed")->group("Running");
+    sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
+    return [a] { return run(*a); };
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,49 @@
+// Colours of a frame: one palette for the whole picture (chosen for a classroom projector: a light
+// background, dark strokes, saturated fills), grain colours by material, and a speed colour map.
+#pragma once
+
+#include <string>
+
+namespace polyroll::render {
+
+// Straight (not premultiplied) alpha, components 0..1.
+struct Rgba {
+    float r = 0.0f, g = 0.0f, b = 0.0f, a = 1.0f;
+    bool operator==(const Rgba&) const = default;
+};
+
+constexpr Rgba rgb8(int r, int g, int b, float a = 1.0f) {
+    return {static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f, static_cast<float>(b) / 255.0f, a};
+}
+
+// Every colour the frame builder uses, in one place.
+namespace palette {
+inline constexpr Rgba background = rgb8(247, 246, 240);
+inline constexpr Rgba ramp_body = rgb8(120, 124, 130);
+inline constexpr Rgba ramp_surface = rgb8(30, 32, 36);
+inline constexpr Rgba ramp_tick = rgb8(245, 245, 245);
+inline constexpr Rgba scale_text = rgb8(60, 62, 66);
+inline constexpr Rgba shell_wall = rgb8(38, 94, 170);
+inline constexpr Rgba shell_outline = rgb8(12, 30, 70);
+inline constexpr Rgba shell_inside = rgb8(222, 231, 242);
+inline constexpr Rgba lid_dot = rgb8(0, 0, 0);
+inline constexpr Rgba lid_dot_ring = rgb8(255, 255, 255);
+inline constexpr Rgba grain_outline = rgb8(40, 36, 30);
+inline constexpr Rgba panel_fill = rgb8(255, 255, 255, 0.94f);
+inline constexpr Rgba panel_border = rgb8(60, 62, 66);
+inline constexpr Rgba text = rgb8(20, 20, 24);
+inline constexpr Rgba text_dim = rgb8(85, 88, 95);
+inline constexpr Rgba plot_axis = rgb8(60, 62, 66);
+inline constexpr Rgba plot_grid = rgb8(215, 215, 210);
+inline constexpr Rgba plot_curve = rgb8(200, 40, 40);
+inline constexpr Rgba inset_border = rgb8(60, 62, 66);
+inline constexpr Rgba inset_marker = rgb8(200, 40, 40);
+}  // namespace palette
+
+// Grain fill colour for a material preset (bb, peas, rice); a neutral colour for anything else.
+Rgba material_colour(const std::string& preset);
+
+// A perceptually ordered map from dark violet (0) through teal to yellow (1); t is clamped.
+Rgba speed_colour(double t);
+
+}  // namespace polyroll::render

@@ -1,0 +1,346 @@
+// The GL 3.3 core drawing of a draw list: see gl_renderer.h.
+#define GL_GLEXT_PROTOTYPES 1
+#include "render/gl_renderer.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/font.h"
+
+namespace polyroll::render {
+
+namespace {
+
+// Pixel coordinates (top-left origin) to clip space, shared by the three programs.
+constexpr const char* kToClip = R"(
+vec4 to_clip(vec2 p, vec2 viewport) {
+    return vec4(p.x / viewport.x * 2.0 - 1.0, 1.0 - p.y / viewport.y * 2.0, 0.0, 1.0);
+}
+)";
+
+constexpr const char* kTriVertex = R"(
+layout(location = 0) in vec2 pos;
+layout(location = 1) in vec4 colour;
+uniform vec2 viewport;
+out vec4 v_colour;
+void main() {
+    v_colour = colour;
+    gl_Position = to_clip(pos, viewport);
+}
+)";
+constexpr const char* kTriFragment = R"(
+in vec4 v_colour;
+out vec4 frag;
+void main() { frag = v_colour; }
+)";
+
+// One quad per shape, just large enough to hold it and its one-pixel antialiasing fringe.
+constexpr const char* kShapeVertex = R"(
+layout(location = 0) in vec2 corner;
+layout(location = 1) in vec4 ab;
+layout(location = 2) in vec4 params;  // kind, radius, outline width
+layout(location = 3) in vec4 fill;
+layout(location = 4) in vec4 outline;
+uniform vec2 viewport;
+out vec2 p;
+flat out vec4 v_ab;
+flat out vec4 v_params;
+flat out vec4 v_fill;
+flat out vec4 v_outline;
+void main() {
+    if (params.x < 0.5) {
+        // Aligned with the segment, so a long diagonal line shades only the pixels near it.
+        vec2 d = ab.zw - ab.xy;
+        float len = length(d);
+        vec2 along = len > 1e-4 ? d / len : vec2(1.0, 0.0);
+        vec2 across = vec2(-along.y, along.x);
+        float e = params.y + 1.0;
+        p = ab.xy + along * (mix(-e, len + e, corner.x)) + across * mix(-e, e, corner.y);
+    } else {
+        p = mix(ab.xy - ab.zw - vec2(1.0), ab.xy + ab.zw + vec2(1.0), corner);
+    }
+    v_ab = ab;
+    v_params = params;
+    v_fill = fill;
+    v_outline = outline;
+    gl_Position = to_clip(p, viewport);
+}
+)";
+constexpr const char* kShapeFragment = R"(
+in vec2 p;
+flat in vec4 v_ab;
+flat in vec4 v_params;
+flat in vec4 v_fill;
+flat in vec4 v_outline;
+out vec4 frag;
+void main() {
+    float d;
+    float r = v_params.y;
+    if (v_params.x < 0.5) {
+        vec2 pa = p - v_ab.xy, ba = v_ab.zw - v_ab.xy;
+        float len2 = dot(ba, ba);
+        float h = len2 > 0.0 ? clamp(dot(pa, ba) / len2, 0.0, 1.0) : 0.0;
+        d = length(pa - ba * h) - r;
+    } else {
+        vec2 q = abs(p - v_ab.xy) - (v_ab.zw - vec2(r));
+        d = length(max(q, vec2(0.0))) + min(max(q.x, q.y), 0.0) - r;
+    }
+    // Coverage falls from 1 to 0 across the pixel straddling the edge.
+    float cover = clamp(0.5 - d, 0.0, 1.0);
+    vec4 c = v_fill;
+    if (v_params.z > 0.0) c = mix(v_outline, v_fill, clamp(-(d + v_params.z) + 0.5, 0.0, 1.0));
+    frag = vec4(c.rgb, c.a * cover);
+}
+)";
+
+constexpr const char* kGlyphVertex = R"(
+layout(location = 0) in vec2 corner;
+layout(location = 1) in vec4 rect;
+layout(location = 2) in vec4 uv;
+layout(location = 3) in vec4 colour;
+uniform vec2 viewport;
+out vec2 v_uv;
+flat out vec4 v_colour;
+void main() {
+    v_uv = mix(uv.xy, uv.zw, corner);
+    v_colour = colour;
+    gl_Position = to_clip(mix(rect.xy, rect.zw, corner), viewport);
+}
+)";
+constexpr const char* kGlyphFragment = R"(
+in vec2 v_uv;
+flat in vec4 v_colour;
+uniform sampler2D atlas;
+out vec4 frag;
+void main() { frag = vec4(v_colour.rgb, v_colour.a * texture(atlas, v_uv).r); }
+)";
+
+GLuint compile(GLenum type, const std::string& body) {
+    const std::string src = std::string("#version 330 core\n") + kToClip + body;
+    const GLuint s = glCreateShader(type);
+    const char* text = src.c_str();
+    glShaderSource(s, 1, &text, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = {};
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        glDeleteShader(s);
+        throw std::runtime_error(std::string("GL shader does not compile: ") + log);
+    }
+    return s;
+}
+
+GLuint link(const char* vertex, const char* fragment) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
+    const GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = {};
+        glGetProgramInfoLog(p, sizeof log, nullptr, log);
+        glDeleteProgram(p);
+        throw std::runtime_error(std::string("GL program does not link: ") + log);
+    }
+    return p;
+}
+
+// The per-instance layout of a shape: a.xy b.xy | kind radius outline 0 | fill | outline.
+struct ShapeInstance {
+    float ab[4];
+    float params[4];
+    float fill[4];
+    float outline[4];
+};
+struct GlyphInstance {
+    float rect[4];
+    float uv[4];
+    float colour[4];
+};
+struct TriVertex {
+    float x, y;
+    float colour[4];
+};
+
+void float_attrib(GLuint index, int size, GLsizei stride, size_t offset, bool instanced) {
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+    glVertexAttribDivisor(index, instanced ? 1 : 0);
+}
+
+void put(float* dst, const Rgba& c) {
+    dst[0] = c.r;
+    dst[1] = c.g;
+    dst[2] = c.b;
+    dst[3] = c.a;
+}
+
+}  // namespace
+
+GlRenderer::GlRenderer() {
+    tri_program_ = link(kTriVertex, kTriFragment);
+    shape_program_ = link(kShapeVertex, kShapeFragment);
+    glyph_program_ = link(kGlyphVertex, kGlyphFragment);
+    tri_viewport_ = glGetUniformLocation(tri_program_, "viewport");
+    shape_viewport_ = glGetUniformLocation(shape_program_, "viewport");
+    glyph_viewport_ = glGetUniformLocation(glyph_program_, "viewport");
+    glyph_sampler_ = glGetUniformLocation(glyph_program_, "atlas");
+
+    static const float corners[8] = {0, 0, 1, 0, 0, 1, 1, 1};  // a triangle strip
+    glGenBuffers(1, &quad_vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+
+    glGenVertexArrays(1, &tri_vao_);
+    glGenBuffers(1, &tri_vbo_);
+    glBindVertexArray(tri_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, tri_vbo_);
+    float_attrib(0, 2, sizeof(TriVertex), offsetof(TriVertex, x), false);
+    float_attrib(1, 4, sizeof(TriVertex), offsetof(TriVertex, colour), false);
+
+    glGenVertexArrays(1, &shape_vao_);
+    glGenBuffers(1, &shape_vbo_);
+    glBindVertexArray(shape_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+    float_attrib(0, 2, 2 * sizeof(float), 0, false);
+    glBindBuffer(GL_ARRAY_BUFFER, shape_vbo_);
+    float_attrib(1, 4, sizeof(ShapeInstance), offsetof(ShapeInstance, ab), true);
+    float_attrib(2, 4, sizeof(ShapeInstance), offsetof(ShapeInstance, params), true);
+    float_attrib(3, 4, sizeof(ShapeInstance), offsetof(ShapeInstance, fill), true);
+    float_attrib(4, 4, sizeof(ShapeInstance), offsetof(ShapeInstance, outline), true);
+
+    glGenVertexArrays(1, &glyph_vao_);
+    glGenBuffers(1, &glyph_vbo_);
+    glBindVertexArray(glyph_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+    float_attrib(0, 2, 2 * sizeof(float), 0, false);
+    glBindBuffer(GL_ARRAY_BUFFER, glyph_vbo_);
+    float_attrib(1, 4, sizeof(GlyphInstance), offsetof(GlyphInstance, rect), true);
+    float_attrib(2, 4, sizeof(GlyphInstance), offsetof(GlyphInstance, uv), true);
+    float_attrib(3, 4, sizeof(GlyphInstance), offsetof(GlyphInstance, colour), true);
+
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glGenTextures(1, &atlas_texture_);
+}
+
+GlRenderer::~GlRenderer() {
+    glDeleteTextures(1, &atlas_texture_);
+    const GLuint buffers[4] = {tri_vbo_, quad_vbo_, shape_vbo_, glyph_vbo_};
+    glDeleteBuffers(4, buffers);
+    const GLuint arrays[3] = {tri_vao_, shape_vao_, glyph_vao_};
+    glDeleteVertexArrays(3, arrays);
+    glDeleteProgram(tri_program_);
+    glDeleteProgram(shape_program_);
+    glDeleteProgram(glyph_program_);
+}
+
+void GlRenderer::upload_atlas(const FontAtlas& atlas) {
+    glBindTexture(GL_TEXTURE_2D, atlas_texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.width(), atlas.height(), 0, GL_RED, GL_UNSIGNED_BYTE,
+                 atlas.coverage().data());
+    // Glyph quads sit on whole pixels at the atlas's own scale: nearest sampling copies texels exactly.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    uploaded_atlas_ = atlas.id();
+}
+
+void GlRenderer::draw(const DrawList& list) {
+    const int w = list.width_px, h = list.height_px;
+    glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(list.background.r, list.background.g, list.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_BLEND);
+    // Alpha kept at 1 over the opaque background, so the read-back RGB is the picture.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (list.atlas && list.atlas->id() != uploaded_atlas_) upload_atlas(*list.atlas);
+
+    std::vector<TriVertex> tris;
+    std::vector<ShapeInstance> shapes;
+    std::vector<GlyphInstance> glyphs;
+    const float fw = static_cast<float>(w), fh = static_cast<float>(h);
+    for (const Layer& layer : list.layers) {
+        if (layer.clip) {
+            glEnable(GL_SCISSOR_TEST);
+            // GL counts rows from the bottom.
+            glScissor(layer.clip->x, h - layer.clip->y - layer.clip->height, layer.clip->width, layer.clip->height);
+        } else {
+            glDisable(GL_SCISSOR_TEST);
+        }
+        if (!layer.triangles.empty()) {
+            tris.clear();
+            for (const Triangle& t : layer.triangles)
+                for (const Px& p : {t.a, t.b, t.c}) {
+                    TriVertex v{p.x, p.y, {}};
+                    put(v.colour, t.colour);
+                    tris.push_back(v);
+                }
+            glUseProgram(tri_program_);
+            glUniform2f(tri_viewport_, fw, fh);
+            glBindVertexArray(tri_vao_);
+            glBindBuffer(GL_ARRAY_BUFFER, tri_vbo_);
+            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(TriVertex)), tris.data(),
+                         GL_STREAM_DRAW);
+            glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size()));
+        }
+        if (!layer.shapes.empty()) {
+            shapes.clear();
+            for (const Shape& s : layer.shapes) {
+                ShapeInstance in{{s.a.x, s.a.y, s.b.x, s.b.y},
+                                 {s.kind == ShapeKind::box ? 1.0f : 0.0f, s.radius, s.outline_px, 0.0f},
+                                 {},
+                                 {}};
+                put(in.fill, s.fill);
+                put(in.outline, s.outline);
+                shapes.push_back(in);
+            }
+            glUseProgram(shape_program_);
+            glUniform2f(shape_viewport_, fw, fh);
+            glBindVertexArray(shape_vao_);
+            glBindBuffer(GL_ARRAY_BUFFER, shape_vbo_);
+            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(shapes.size() * sizeof(ShapeInstance)),
+                         shapes.data(), GL_STREAM_DRAW);
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(shapes.size()));
+        }
+        if (!layer.glyphs.empty() && list.atlas) {
+            glyphs.clear();
+            for (const GlyphQuad& g : layer.glyphs) {
+                GlyphInstance in{{g.p0.x, g.p0.y, g.p1.x, g.p1.y}, {g.u0, g.v0, g.u1, g.v1}, {}};
+                put(in.colour, g.colour);
+                glyphs.push_back(in);
+            }
+            glUseProgram(glyph_program_);
+            glUniform2f(glyph_viewport_, fw, fh);
+            glUniform1i(glyph_sampler_, 0);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, atlas_texture_);
+            glBindVertexArray(glyph_vao_);
+            glBindBuffer(GL_ARRAY_BUFFER, glyph_vbo_);
+            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(glyphs.size() * sizeof(GlyphInstance)),
+                         glyphs.data(), GL_STREAM_DRAW);
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(glyphs.size()));
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
+}
+
+}  // namespace polyroll::render

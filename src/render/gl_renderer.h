@@ -1,0 +1,35 @@
+// Draws a draw list with plain OpenGL 3.3 core calls into the current context's framebuffer: the
+// same code for the window and the offscreen (OSMesa) context. Triangles as they are; discs,
+// capsules and rounded boxes as instanced quads whose fragment shader antialiases the edge by
+// distance (far cheaper than multisampling under llvmpipe); glyphs as instanced textured quads.
+// Links no GL itself: the executable brings exactly one GL provider (design.md).
+#pragma once
+
+#include <cstdint>
+
+#include "render/draw_list.h"
+
+namespace polyroll::render {
+
+class GlRenderer {
+public:
+    GlRenderer();  // needs a current GL 3.3 core context; throws std::runtime_error on shader errors
+    ~GlRenderer();
+    GlRenderer(const GlRenderer&) = delete;
+    GlRenderer& operator=(const GlRenderer&) = delete;
+
+    // Clears to the list's background and draws it. The viewport is the list's size.
+    void draw(const DrawList& list);
+
+private:
+    void upload_atlas(const FontAtlas& atlas);
+
+    unsigned tri_program_ = 0, shape_program_ = 0, glyph_program_ = 0;
+    unsigned tri_vao_ = 0, shape_vao_ = 0, glyph_vao_ = 0;
+    unsigned tri_vbo_ = 0, quad_vbo_ = 0, shape_vbo_ = 0, glyph_vbo_ = 0;
+    unsigned atlas_texture_ = 0;
+    std::uint64_t uploaded_atlas_ = 0;  // FontAtlas::id() of the texture
+    int tri_viewport_ = -1, shape_viewport_ = -1, glyph_viewport_ = -1, glyph_sampler_ = -1;
+};
+
+}  // namespace polyroll::render

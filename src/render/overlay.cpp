@@ -1,0 +1,161 @@
+// The overlay panel and the speed plot: see overlay.h.
+#include "render/overlay.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "render/world_draw.h"
+
+namespace polyroll::render {
+
+std::string material_label(const std::string& preset) {
+    if (preset == "bb") return "BBs";
+    if (preset.empty()) return "custom grains";
+    return preset;
+}
+
+namespace {
+
+// A number with a real minus sign, which reads better than a hyphen on a projector.
+std::string signed_fixed(double v, int decimals) {
+    std::string s = fmt::format("{:.{}f}", std::fabs(v), decimals);
+    const bool negative = v < 0.0 && std::stod(s) != 0.0;
+    return negative ? "\u2212" + s : s;
+}
+
+}  // namespace
+
+void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
+    const float u = L.unit;
+    PxRect r = L.panel;
+    const size_t box_index = out.shapes.size();
+    out.shapes.emplace_back();  // the box, sized once the content is measured
+    const float pad = 18.0f * u;
+    float y = r.y + pad + font.ascent(L.title);
+    const std::string fill = s.fill_ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill_ratio, material_label(s.material))
+                                                : std::string("empty (r = 0)");
+    const std::string params =
+        fmt::format("n = {}    {}    \u03B8 = {:g}\u00B0", s.sides, fill, s.ramp_angle_deg);
+    float content_w = font.layout(params, L.title, {r.x + pad, y}, palette::text, out.glyphs);
+
+    // Four columns, each as wide as its widest possible value, so nothing jumps between frames.
+    struct Column {
+        const char* label;
+        std::string value;
+        const char* widest;
+    };
+    const Column cols[4] = {{"time", fmt::format("{:.2f} s", s.time_s), "00.00 s"},
+                            {"speed", signed_fixed(s.now.speed_m_s, 2) + " m/s", "\u22120.00 m/s"},
+                            {"distance", signed_fixed(s.now.position_m, 3) + " m", "0.000 m"},
+                            {"face impacts", fmt::format("{}", s.impacts), "000"}};
+    const float label_y = y + 16.0f * u + font.ascent(L.label);
+    const float value_y = label_y + 8.0f * u + font.ascent(L.value);
+    const float gap = 30.0f * u;
+    float x = r.x + pad;
+    for (const Column& c : cols) {
+        font.layout(c.label, L.label, {x, label_y}, palette::text_dim, out.glyphs);
+        font.layout(c.value, L.value, {x, value_y}, palette::text, out.glyphs);
+        x += std::max(font.text_width(c.widest, L.value), font.text_width(c.label, L.label)) + gap;
+    }
+    content_w = std::max(content_w, x - gap - (r.x + pad));
+
+    if (o.grain_colouring == GrainColouring::speed) {
+        // The colour map's legend: a bar from 0 to the top speed.
+        const float bar_y = value_y + 22.0f * u;
+        const std::string left = "grain speed  0";
+        float bx = r.x + pad;
+        const float text_base = bar_y + font.ascent(L.label) * 0.8f;
+        bx += font.layout(left, L.label, {bx, text_base}, palette::text_dim, out.glyphs) + 10.0f * u;
+        const int steps = 24;
+        const float bar_w = 220.0f * u, bar_h = 16.0f * u, step_w = bar_w / steps;
+        for (int i = 0; i < steps; ++i) {
+            const Rgba c = speed_colour((i + 0.5) / steps);
+            out.shapes.push_back(rounded_box({bx + i * step_w, bar_y}, {step_w + 0.5f, bar_h}, 0.0f, c, 0.0f, c,
+                                             Tag::panel));
+        }
+        bx += bar_w + 10.0f * u;
+        bx += font.layout(fmt::format("{:g} m/s", o.colour_speed_max_m_s), L.label, {bx, text_base},
+                          palette::text_dim, out.glyphs);
+        content_w = std::max(content_w, bx - (r.x + pad));
+    }
+    r.width = std::max(r.width, content_w + 2.0f * pad);
+    out.shapes[box_index] = rounded_box({r.x, r.y}, {r.width, r.height}, 10.0f * u, palette::panel_fill,
+                                        std::max(1.0f, 1.5f * u), palette::panel_border, Tag::panel);
+}
+
+PlotAxes plot_axes(const Snapshot& s, const FrameOptions& o) {
+    PlotAxes a;
+    double t_hi = 0.0, v_lo = 0.0, v_hi = 0.0;
+    for (const SpeedPoint& p : s.speed_history) {
+        t_hi = std::max(t_hi, p.time_s);
+        v_lo = std::min(v_lo, p.speed_m_s);
+        v_hi = std::max(v_hi, p.speed_m_s);
+    }
+    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : nice_ceil(std::max(1.0, t_hi));
+    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : nice_ceil(std::max(0.1, v_hi));
+    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : (v_lo < 0.0 ? -nice_ceil(-v_lo) : 0.0);
+    return a;
+}
+
+void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
+    const float u = L.unit;
+    const PxRect& r = L.plot;
+    out.shapes.push_back(rounded_box({r.x, r.y}, {r.width, r.height}, 10.0f * u, palette::panel_fill,
+                                     std::max(1.0f, 1.5f * u), palette::panel_border, Tag::panel));
+    const PlotAxes ax = plot_axes(s, o);
+    const float pad = 14.0f * u;
+    font.layout("speed along the ramp, m/s", L.label, {r.x + pad, r.y + pad + font.ascent(L.label)}, palette::text,
+                out.glyphs);
+    // The data area, leaving room for the tick labels.
+    const float left = r.x + 62.0f * u, right = r.x + r.width - 34.0f * u;
+    const float top = r.y + pad + font.line_height(L.label) + 10.0f * u;
+    const float bottom = r.y + r.height - 32.0f * u;
+    const double v_span = std::max(ax.speed_max_m_s - ax.speed_min_m_s, 1e-9);
+    auto X = [&](double t) { return left + static_cast<float>(t / ax.time_max_s) * (right - left); };
+    auto Y = [&](double v) {
+        const double c = std::clamp(v, ax.speed_min_m_s, ax.speed_max_m_s);
+        return bottom - static_cast<float>((c - ax.speed_min_m_s) / v_span) * (bottom - top);
+    };
+    const float thin = std::max(1.0f, 1.2f * u);
+    // Grid and tick labels: about four intervals on each axis.
+    const double v_step = nice_ceil(v_span / 4.0);
+    for (double v = std::ceil(ax.speed_min_m_s / v_step - 1e-9) * v_step; v <= ax.speed_max_m_s + 1e-9; v += v_step) {
+        const float y = Y(v);
+        out.shapes.push_back(segment({left, y}, {right, y}, thin, palette::plot_grid, Tag::plot));
+        const std::string label = signed_fixed(std::fabs(v) < 1e-12 ? 0.0 : v, v_step < 0.1 ? 2 : 1);
+        const float tw = font.text_width(label, L.small);
+        font.layout(label, L.small, {left - 8.0f * u - tw, y + font.ascent(L.small) * 0.35f}, palette::text_dim,
+                    out.glyphs);
+    }
+    const double t_step = nice_ceil(ax.time_max_s / 5.0);
+    for (double t = 0.0; t <= ax.time_max_s + 1e-9; t += t_step) {
+        const float x = X(t);
+        out.shapes.push_back(segment({x, top}, {x, bottom}, thin, palette::plot_grid, Tag::plot));
+        // The unit rides on the last label, where a separate one would collide with it.
+        const bool last = t + t_step > ax.time_max_s + 1e-9;
+        const std::string label = fmt::format("{:g}{}", std::round(t * 1000.0) / 1000.0, last ? " s" : "");
+        const float tw = font.text_width(last ? label.substr(0, label.size() - 2) : label, L.small);
+        font.layout(label, L.small, {x - tw / 2.0f, bottom + 6.0f * u + font.ascent(L.small)}, palette::text_dim,
+                    out.glyphs);
+    }
+    out.shapes.push_back(segment({left, bottom}, {right, bottom}, L.stroke * 0.7f, palette::plot_axis, Tag::plot));
+    out.shapes.push_back(segment({left, top}, {left, bottom}, L.stroke * 0.7f, palette::plot_axis, Tag::plot));
+    if (ax.speed_min_m_s < 0.0)
+        out.shapes.push_back(segment({left, Y(0.0)}, {right, Y(0.0)}, thin, palette::plot_axis, Tag::plot));
+
+    // The curve so far, as a polyline of round-capped segments; a dot marks the present.
+    const float curve = std::max(1.5f, 3.0f * u);
+    const std::vector<SpeedPoint>& h = s.speed_history;
+    for (size_t i = 1; i < h.size(); ++i) {
+        if (h[i].time_s > ax.time_max_s) break;
+        out.shapes.push_back(segment({X(h[i - 1].time_s), Y(h[i - 1].speed_m_s)}, {X(h[i].time_s), Y(h[i].speed_m_s)},
+                                     curve, palette::plot_curve, Tag::plot));
+    }
+    if (!h.empty() && h.back().time_s <= ax.time_max_s)
+        out.shapes.push_back(disc({X(h.back().time_s), Y(h.back().speed_m_s)}, 2.2f * curve, palette::plot_curve,
+                                  Tag::plot));
+}
+
+}  // namespace polyroll::render

@@ -1,0 +1,124 @@
+// The ramp, the shell and the grains as draw-list items: see world_draw.h.
+#include "render/world_draw.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace polyroll::render {
+
+using geom::Vec2;
+
+double nice_ceil(double x) {
+    if (!(x > 0.0)) return 1.0;
+    const double p = std::pow(10.0, std::floor(std::log10(x)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * p >= x * (1.0 - 1e-9)) return m * p;
+    return 10.0 * p;
+}
+
+std::vector<Vec2> shell_world_polygon(const Snapshot& s, bool outer) {
+    const std::vector<Vec2>& local = outer ? s.outer_local_m : s.inner_local_m;
+    std::vector<Vec2> out;
+    out.reserve(local.size());
+    for (const Vec2& v : local)
+        out.push_back(ramp_to_world(s.shell_centre_m + geom::rotate(v, s.shell_angle_rad), s.ramp_angle_deg));
+    return out;
+}
+
+Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, double speed_max_m_s) {
+    if (how == GrainColouring::speed) return speed_colour(g.speed_m_s / std::max(speed_max_m_s, 1e-9));
+    return material_colour(s.material);
+}
+
+namespace {
+
+bool inside(Px p, const PxRect& r, float pad) {
+    return p.x >= r.x - pad && p.x <= r.x + r.width + pad && p.y >= r.y - pad && p.y <= r.y + r.height + pad;
+}
+
+void draw_ramp(const Snapshot& s, const Camera& cam, const WorldStyle& st, const FontAtlas& font, Layer& out) {
+    const double deg = s.ramp_angle_deg;
+    const double L = s.ramp_length_m;
+    const double band_m = 18.0 * st.unit / cam.px_per_m;  // the body's thickness stays readable at any zoom
+    auto P = [&](double x, double y) { return cam.to_px(ramp_to_world({x, y}, deg)); };
+    const Px a = P(0, 0), b = P(L, 0), c = P(L, -band_m), d = P(0, -band_m);
+    out.triangles.push_back({a, b, c, palette::ramp_body, Tag::ramp_body});
+    out.triangles.push_back({a, c, d, palette::ramp_body, Tag::ramp_body});
+    // Strokes over the body's edges antialias them.
+    const float edge = std::max(1.0f, 1.5f * st.unit);
+    out.shapes.push_back(segment(d, c, edge, palette::ramp_body, Tag::ramp_body));
+    out.shapes.push_back(segment(a, d, edge, palette::ramp_body, Tag::ramp_body));
+    out.shapes.push_back(segment(b, c, edge, palette::ramp_body, Tag::ramp_body));
+
+    // Length scale: minor ticks at least 9 design pixels apart, labelled majors at least 110.
+    const double minor = nice_ceil(9.0 * st.unit / cam.px_per_m);
+    double major = nice_ceil(110.0 * st.unit / cam.px_per_m);
+    major = std::max(major, 2.0 * minor);
+    const long per_major = std::max(1L, std::lround(major / minor));
+    const long count = static_cast<long>(std::floor(L / minor + 1e-9));
+    const float tick_w = std::max(1.0f, 1.5f * st.unit);
+    for (long i = 0; i <= count; ++i) {
+        const double x = static_cast<double>(i) * minor;
+        const Px top = P(x, 0);
+        if (!inside(top, st.visible, 200.0f * st.unit)) continue;
+        const bool is_major = i % per_major == 0;
+        const Px end = P(x, -band_m * (is_major ? 0.95 : 0.5));
+        out.shapes.push_back(segment(P(x, -band_m * 0.05), end, is_major ? 1.5f * tick_w : tick_w,
+                                     palette::ramp_tick, Tag::ramp_tick));
+        if (!is_major) continue;
+        const std::string label = major >= 0.1 ? fmt::format("{:g} m", std::round(x * 100.0) / 100.0)
+                                                : fmt::format("{:g} cm", std::round(x * 1000.0) / 10.0);
+        const float tw = font.text_width(label, st.scale_font);
+        const Px under = P(x, -band_m - 6.0 * st.unit / cam.px_per_m);
+        font.layout(label, st.scale_font, {under.x - tw / 2.0f, under.y + font.ascent(st.scale_font)},
+                    palette::scale_text, out.glyphs);
+    }
+    // The surface the shell rolls on, drawn last so it is crisp.
+    out.shapes.push_back(segment(a, b, std::max(1.5f, 3.0f * st.unit), palette::ramp_surface, Tag::ramp_surface));
+}
+
+void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyle& st, Layer& out) {
+    std::vector<Px> outer, inner;
+    for (const Vec2& v : shell_world_polygon(s, true)) outer.push_back(cam.to_px(v));
+    for (const Vec2& v : shell_world_polygon(s, false)) inner.push_back(cam.to_px(v));
+    const size_t n = outer.size();
+    if (n < 3 || inner.size() != n) return;
+    for (size_t i = 1; i + 1 < n; ++i)
+        out.triangles.push_back({inner[0], inner[i], inner[i + 1], palette::shell_inside, Tag::shell_inside});
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = (i + 1) % n;
+        out.triangles.push_back({inner[i], outer[i], outer[j], palette::shell_wall, Tag::shell_wall});
+        out.triangles.push_back({inner[i], outer[j], inner[j], palette::shell_wall, Tag::shell_wall});
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = (i + 1) % n;
+        out.shapes.push_back(segment(outer[i], outer[j], st.stroke, palette::shell_outline, Tag::shell_outline));
+        out.shapes.push_back(segment(inner[i], inner[j], 0.6f * st.stroke, palette::shell_outline, Tag::shell_outline));
+    }
+    for (const GrainState& g : s.grains) {
+        const Px c = cam.to_px(ramp_to_world(g.position_m, s.ramp_angle_deg));
+        const float r = cam.to_px_length(g.radius_m);
+        // Small grains get a thin outline so neighbours stay apart without turning into dark dots.
+        const float outline = std::min(1.2f * st.unit, 0.2f * r);
+        out.shapes.push_back(disc(c, r, grain_colour(s, g, st.grain_colouring, st.colour_speed_max_m_s), Tag::grain,
+                                  outline, palette::grain_outline));
+    }
+    // The tracked dot at the lid's centre, on top: the lid is in front of the grains.
+    double inner_r_m = 0.0;
+    for (const Vec2& v : s.inner_local_m) inner_r_m = std::max(inner_r_m, geom::length(v));
+    const Px centre = cam.to_px(ramp_to_world(s.shell_centre_m, s.ramp_angle_deg));
+    const float dot_r = std::max(2.5f * st.unit, 0.08f * cam.to_px_length(inner_r_m));
+    out.shapes.push_back(disc(centre, dot_r + std::max(1.0f, 1.5f * st.unit), palette::lid_dot_ring, Tag::lid_dot));
+    out.shapes.push_back(disc(centre, dot_r, palette::lid_dot, Tag::lid_dot));
+}
+
+}  // namespace
+
+void draw_world(const Snapshot& s, const Camera& cam, const WorldStyle& style, const FontAtlas& font, Layer& out) {
+    draw_ramp(s, cam, style, font, out);
+    draw_shell_and_grains(s, cam, style, out);
+}
+
+}  // namespace polyroll::render

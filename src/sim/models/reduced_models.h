@@ -1,0 +1,24 @@
+// The experimenters' reduced models (shared/physics.md) as runs of a scene: the rigid impact model
+// (shell and fill one rigid body, the fill frozen as it lay at release) and the composite segment
+// model (the fill re-levels after every impact). Both return the grain simulation's RunResult, with
+// the same measurements, so every output and downstream tool works on all three models.
+#pragma once
+
+#include "sim/models/rolling_polygon.h"
+#include "sim/scene.h"
+#include "sim/simulation.h"
+
+namespace polyroll::models {
+
+// The scene's shell and fill as a rolling body: the shell's mass and moment of inertia from
+// shell_properties(), its outer polygon as outline, the fill's mass r x inside volume x bulk density
+// spread uniformly over the inside's cross-section.
+RollingBody rolling_body(const Scene& scene);
+
+// The scene's ramp, release pose (release_pose() of world_builder.h) and run rules.
+RollingTrack rolling_track(const Scene& scene);
+
+// Runs a validated scene whose run.model is rigid or segments, and times it.
+RunResult run_reduced_model(const Scene& scene);
+
+}  // namespace polyroll::models

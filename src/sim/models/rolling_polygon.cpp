@@ -1,0 +1,426 @@
+// The event-driven rolling polygon of the reduced models: see rolling_polygon.h.
+//
+// Conventions, shared with world_builder.h and tracker.cpp: the ramp frame has x down the slope and
+// y along its normal; phi is the body's clockwise rotation from "face (0, 1) flat on the ramp"; vertex
+// k (unwrapped, 1 at release) touches the ramp at x = k * side and is the pivot while
+// phi lies in [face(k-1), face(k)], face(j) = 2 pi j / n being the rotation with face (j, j+1) flat.
+#include "sim/models/rolling_polygon.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "sim/errors.h"
+#include "sim/models/pivot_motion.h"
+
+namespace polyroll::models {
+
+using geom::Vec2;
+
+namespace {
+
+constexpr double kPi = geom::kPi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Points per integrator step at which events and the normal force are checked; the series is exact
+// between them, and a turning point between two points is found and checked too.
+constexpr int kCheckPoints = 2;
+// Longest integrator step: keeps the event checks dense on a slow, nearly linear stretch.
+constexpr double kMaxStepS = 0.1;
+// A run needing more steps than this is stuck (for example in ever-faster rocking): ends as diverged.
+constexpr long kMaxSteps = 2'000'000;
+
+class Roller {
+public:
+    Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track);
+    RollingRun run();
+
+private:
+    // The current pivot's constants: the pendulum psi'' = a sin(psi), psi = phi - phi_top.
+    struct Pivot {
+        long k = 0;
+        double d = 0.0;        // pivot to centre of mass
+        double inertia = 0.0;  // about the pivot
+        double a = 0.0;        // M g d / inertia
+        double phi_top = 0.0;  // rotation with the centre of mass straight above the pivot
+        double psi_lo = 0.0;   // face(k-1): landing back on the previous face
+        double psi_hi = 0.0;   // face(k): landing on the next face
+        double psi_end = kInf; // the centre reaching the ramp's end, if within this pivot's range
+    };
+    enum class Event { none, forward, backward, end };
+
+    Vec2 vertex(long k) const { return outer_[static_cast<size_t>(((k % n_) + n_) % n_)]; }
+    double face_angle(long j) const { return 2.0 * kPi * static_cast<double>(j) / n_; }
+    Pivot make_pivot(long k) const;
+    double psi() const { return phi_ - piv_.phi_top; }
+
+    Vec2 centre_from_pivot() const { return geom::rotate(-1.0 * vertex(piv_.k), -phi_); }
+    double centre_x() const { return piv_.k * side_ + centre_from_pivot().x; }
+    double kinetic() const { return 0.5 * piv_.inertia * omega_ * omega_; }
+    double potential_abs() const;
+    TrajectorySample sample(double t) const;
+    // The normal force the pivot must supply at rotation psi, given the step's energy constant
+    // c = psi'^2 / 2 + a cos(psi) (the pendulum's energy integral).
+    double normal_force(double psi, double c) const;
+
+    void rebuild_body();
+    void impact(int direction);
+    void land(long face);
+    double barrier(long pivot, long face, bool forward) const;
+    void rest();
+    void finish(Behaviour b, double end_time);
+    double sample_time(long j) const;
+    void emit_samples_before(double t_end);  // at the current state, for sample times < t_end
+    void emit_series_samples(const PendulumSeries& s, double t_end);
+    void check_normal(const PendulumSeries& s);
+    std::pair<Event, double> find_event(const PendulumSeries& s, double h);
+
+    const RollingBody& b_;
+    const FillMotion fill_motion_;
+    const RollingTrack& tr_;
+    std::vector<Vec2> outer_;
+    int n_ = 0;
+    double side_ = 0.0, radius_ = 0.0;
+    double sin_t_ = 0.0, cos_t_ = 0.0, g_ = 0.0;
+    Vec2 up_world_;
+    bool has_fill_ = false;
+
+    MassProperties body_;
+    FillSegments fill_;
+    Pivot piv_;
+    double phi_ = 0.0, omega_ = 0.0, t_ = 0.0;  // omega = dphi/dt, positive rolling down
+    double phi0_ = 0.0, start_x_ = 0.0, u0_ = 0.0;
+    double dissipated_ = 0.0;
+    long highest_landed_ = 1;
+    long next_sample_ = 0;
+    bool running_ = true;
+    RollingRun out_;
+    // The points of the current step find_event looked at, in time order up to the event: where the
+    // normal force is checked.
+    struct Checkpoint {
+        double tau = 0.0, psi = 0.0;
+    };
+    std::array<Checkpoint, 2 * kCheckPoints + 2> path_{};
+    int path_size_ = 0;
+};
+
+Roller::Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track)
+    : b_(body), fill_motion_(fill), tr_(track), outer_(body.outer_m) {
+    n_ = static_cast<int>(outer_.size());
+    side_ = geom::length(outer_[1] - outer_[0]);
+    radius_ = geom::length(outer_[0]);
+    const double theta = tr_.angle_deg * kPi / 180.0;
+    sin_t_ = std::sin(theta);
+    cos_t_ = std::cos(theta);
+    g_ = tr_.gravity_m_s2;
+    up_world_ = {-sin_t_, cos_t_};
+    has_fill_ = b_.fill_ratio > 0.0 && b_.fill_areal_density_kg_m2 > 0.0;
+    phi0_ = phi_ = tr_.start_rotation_rad;
+    if (phi0_ < 0.0 || phi0_ > face_angle(1) * (1.0 + 1e-12))
+        throw InputError(fmt::format("the release rotation of {:.3f} deg about the downhill vertex is more than one "
+                                     "face ({:.3f} deg): the next vertex would start below the ramp",
+                                     phi0_ * 180.0 / kPi, 360.0 / n_));
+    rebuild_body();
+    out_.fill_mass_kg = has_fill_ ? fill_.mass.mass_kg : 0.0;
+    piv_ = make_pivot(1);
+    start_x_ = centre_x();
+    u0_ = potential_abs();
+    out_.min_normal_force_N = kInf;
+}
+
+Roller::Pivot Roller::make_pivot(long k) const {
+    Pivot p;
+    p.k = k;
+    const Vec2 v = vertex(k);
+    const Vec2 r0 = body_.centre_of_mass_m - v;
+    p.d = geom::length(r0);
+    p.inertia = inertia_about(body_, v);
+    p.a = p.inertia > 0.0 ? body_.mass_kg * g_ * p.d / p.inertia : 0.0;
+    // Turned by phi, the arm r0 points at atan2(r0) - phi in the ramp frame; it is straight up
+    // (along the true vertical, theta + pi/2) at phi_top. Taken within half a turn of this pivot's range.
+    const double mid = face_angle(k - 1) + kPi / n_;
+    const double theta = std::atan2(sin_t_, cos_t_);
+    p.phi_top = std::atan2(r0.y, r0.x) - theta - kPi / 2.0;
+    p.phi_top += 2.0 * kPi * std::round((mid - p.phi_top) / (2.0 * kPi));
+    p.psi_lo = face_angle(k - 1) - p.phi_top;
+    p.psi_hi = face_angle(k) - p.phi_top;
+    // The centre is at x = k side + R sin(phi - mid) while k is the pivot.
+    const double reach = (tr_.end_centre_x_m - k * side_) / radius_;
+    if (reach < std::sin(kPi / n_)) p.psi_end = mid + std::asin(std::max(-1.0, reach)) - p.phi_top;
+    return p;
+}
+
+double Roller::potential_abs() const {
+    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + geom::rotate(body_.centre_of_mass_m - vertex(piv_.k), -phi_);
+    return body_.mass_kg * g_ * geom::dot(cm, up_world_);
+}
+
+TrajectorySample Roller::sample(double t) const {
+    TrajectorySample s;
+    s.time_s = t;
+    const Vec2 c = centre_from_pivot();
+    s.position_m = piv_.k * side_ + c.x - start_x_;
+    s.speed_m_s = omega_ * c.y;  // the centre turns about the pivot: v = omega x (centre - pivot)
+    s.angle_deg = (phi_ - phi0_) * 180.0 / kPi;
+    s.kinetic_J = kinetic();
+    s.potential_J = potential_abs() - u0_;
+    s.dissipated_J = dissipated_;
+    return s;
+}
+
+double Roller::normal_force(double psi, double c) const {
+    // N = M (g cos theta + a_cm . y): the centre of mass turns about the fixed pivot, so
+    // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
+    const double sp = std::sin(psi), cp = std::cos(psi);
+    const double w2 = std::max(0.0, 2.0 * (c - piv_.a * cp));
+    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
+    const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
+    return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
+}
+
+void Roller::rebuild_body() {
+    if (!has_fill_) {
+        body_ = b_.shell;
+        return;
+    }
+    // The body frame sees gravity turned back by the body's rotation.
+    fill_ = fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+    body_ = combine(b_.shell, fill_.mass);
+}
+
+std::pair<Roller::Event, double> Roller::find_event(const PendulumSeries& s, double h) {
+    const double hi = std::min(piv_.psi_hi, piv_.psi_end), lo = piv_.psi_lo;
+    auto crossed = [&](double p) { return p >= hi || p <= lo; };
+    double ta = 0.0, pa = 0.0, ra = 0.0;
+    s.psi_and_rate(0.0, pa, ra);
+    path_size_ = 0;
+    path_[static_cast<size_t>(path_size_++)] = {0.0, pa};
+    for (int i = 1; i <= kCheckPoints; ++i) {
+        double tb = h * i / kCheckPoints, pb = 0.0, rb = 0.0;
+        s.psi_and_rate(tb, pb, rb);
+        if (!crossed(pb) && ra * rb < 0.0) {
+            // A turning point inside: the extreme value may lie beyond a boundary though both ends do
+            // not, and the normal force is checked there too.
+            const double te = s.solve_turn(ta, tb);
+            const double pe = s.psi(te);
+            if (crossed(pe)) {
+                tb = te;
+                pb = pe;
+            } else {
+                path_[static_cast<size_t>(path_size_++)] = {te, pe};
+            }
+        }
+        if (crossed(pb)) {
+            const bool upper = pb >= hi;
+            const double target = upper ? hi : lo;
+            const double tau = s.solve_psi(target, ta, tb);
+            path_[static_cast<size_t>(path_size_++)] = {tau, target};
+            const Event e = !upper ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
+            return {e, tau};
+        }
+        path_[static_cast<size_t>(path_size_++)] = {tb, pb};
+        ta = tb;
+        ra = rb;
+    }
+    return {Event::none, h};
+}
+
+void Roller::check_normal(const PendulumSeries& s) {
+    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(path_[0].psi);
+    for (int i = 0; i < path_size_; ++i) {
+        const Checkpoint& p = path_[static_cast<size_t>(i)];
+        const double nf = normal_force(p.psi, c);
+        out_.min_normal_force_N = std::min(out_.min_normal_force_N, nf);
+        if (nf < 0.0 && out_.model_valid) {
+            // Bisection for when it turned negative; psi is monotonic between checkpoints.
+            double x = i > 0 ? path_[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
+            for (int it = 0; it < 100 && i > 0; ++it) {
+                const double m = 0.5 * (x + y);
+                if (m <= x || m >= y) break;
+                (normal_force(s.psi(m), c) >= 0.0 ? x : y) = m;
+            }
+            out_.model_valid = false;
+            out_.model_invalid_time_s = t_ + y;
+        }
+    }
+}
+
+void Roller::emit_series_samples(const PendulumSeries& s, double t_end) {
+    const double phi_saved = phi_, omega_saved = omega_;
+    for (;;) {
+        const double ts = sample_time(next_sample_);
+        if (ts >= t_end) break;
+        const double tau = std::max(0.0, ts - t_);
+        phi_ = s.psi(tau) + piv_.phi_top;
+        omega_ = s.rate(tau);
+        out_.measured.trajectory.push_back(sample(ts));
+        ++next_sample_;
+    }
+    phi_ = phi_saved;
+    omega_ = omega_saved;
+}
+
+double Roller::sample_time(long j) const {
+    if (tr_.sample_grid_hz <= 0.0) return static_cast<double>(j) / tr_.sample_hz;
+    // The tracker's rule (tracker.cpp): the first grid step at or after j / sample_hz.
+    return std::ceil(static_cast<double>(j) * tr_.sample_grid_hz / tr_.sample_hz - 1e-9) / tr_.sample_grid_hz;
+}
+
+void Roller::emit_samples_before(double t_end) {
+    for (;;) {
+        const double ts = sample_time(next_sample_);
+        if (ts >= t_end) break;
+        out_.measured.trajectory.push_back(sample(ts));
+        ++next_sample_;
+    }
+}
+
+void Roller::impact(int direction) {
+    // Face `face` lands; the vertex beyond the pivot becomes the new pivot.
+    const long face = direction > 0 ? piv_.k : piv_.k - 1;
+    const long new_k = direction > 0 ? piv_.k + 1 : piv_.k - 1;
+    phi_ = face_angle(face);
+    const double kinetic_before = kinetic();
+    const Vec2 r_a = body_.centre_of_mass_m - vertex(piv_.k), r_b = body_.centre_of_mass_m - vertex(new_k);
+    const double inertia_b = inertia_about(body_, vertex(new_k));
+    // Angular momentum about the new pivot: (I0 + M r_A . r_B) omega_A = (I0 + M |r_B|^2) omega_B.
+    double w = omega_ * (body_.inertia_cm_kg_m2 + body_.mass_kg * geom::dot(r_a, r_b)) / inertia_b;
+    // Turning back about the new pivot would push the old one into the ramp: the face stays down.
+    if (w * omega_ <= 0.0) w = 0.0;
+    const double kinetic_after = 0.5 * inertia_b * w * w;
+    dissipated_ += kinetic_before - kinetic_after;
+
+    // A full polygon's fill is the whole inside whatever the orientation: nothing to re-level.
+    if (has_fill_ && fill_motion_ == FillMotion::relevel && b_.fill_ratio < 1.0) {
+        // The surface re-levels; the drop of the fill's centre of mass turns into no kinetic energy.
+        const Vec2 old_cm = fill_.mass.centre_of_mass_m;
+        rebuild_body();
+        const double drop_J = fill_.mass.mass_kg * g_ * geom::dot(old_cm - fill_.mass.centre_of_mass_m, fill_.up);
+        dissipated_ += drop_J;
+        out_.relevel_dissipated_J += drop_J;
+        const double inertia_new = inertia_about(body_, vertex(new_k));
+        w = (w > 0.0 ? 1.0 : w < 0.0 ? -1.0 : 0.0) * std::sqrt(2.0 * kinetic_after / inertia_new);
+    }
+    piv_ = make_pivot(new_k);
+    omega_ = w;
+    if (direction > 0 && new_k > highest_landed_) {
+        highest_landed_ = new_k;
+        FaceImpact f;
+        f.index = static_cast<int>(out_.measured.impacts.size()) + 1;
+        f.time_s = t_;
+        f.position_m = centre_x() - start_x_;
+        f.kinetic_before_J = kinetic_before;
+        f.kinetic_after_J = kinetic_after;
+        out_.measured.impacts.push_back(f);
+    }
+    land(face);
+}
+
+double Roller::barrier(long pivot, long face, bool forward) const {
+    // The rise of the centre of mass needed to leave face `face` about `pivot`: over the top if the
+    // top lies within the pivot's range, else to the far face.
+    const Pivot p = make_pivot(pivot);
+    const double psi_now = face_angle(face) - p.phi_top;
+    const double lo = forward ? psi_now : p.psi_lo, hi = forward ? p.psi_hi : psi_now;
+    const double highest = (lo <= 0.0 && hi >= 0.0) ? 1.0 : std::max(std::cos(lo), std::cos(hi));
+    return body_.mass_kg * g_ * p.d * (highest - std::cos(psi_now));
+}
+
+void Roller::land(long face) {
+    if (omega_ == 0.0) {
+        // At rest on the face: it tips about whichever end vertex gravity turns it over, if any.
+        const Pivot front = make_pivot(face + 1), back = make_pivot(face);
+        if (face_angle(face) - front.phi_top > 0.0) piv_ = front;
+        else if (face_angle(face) - back.phi_top < 0.0) piv_ = back;
+    }
+    // Confined: too little energy to leave the face either way, so it rocks on it and loses energy at
+    // every landing. It has stopped (as the tracker sees it) once its speeds are below the rest speed.
+    const double ke = kinetic();
+    const bool confined = ke < barrier(face + 1, face, true) && ke < barrier(face, face, false);
+    const double centre_speed = std::fabs(sample(t_).speed_m_s), rim_speed = std::fabs(omega_) * radius_;
+    if (confined && centre_speed < tr_.rest_speed_m_s && rim_speed < tr_.rest_speed_m_s) rest();
+}
+
+void Roller::rest() {
+    const double stop = t_;
+    out_.measured.stop_time_s = stop;
+    dissipated_ += kinetic();  // what is left of the rocking
+    omega_ = 0.0;
+    const bool in_time = stop + tr_.rest_time_s <= tr_.time_limit_s;
+    const double end = in_time ? stop + tr_.rest_time_s : tr_.time_limit_s;
+    emit_samples_before(end);
+    t_ = end;
+    if (!in_time) finish(Behaviour::time_limit, end);
+    else finish(out_.measured.impacts.size() <= 1 ? Behaviour::stopped_at_first_impact : Behaviour::stopped, end);
+}
+
+void Roller::finish(Behaviour b, double end_time) {
+    running_ = false;
+    Measurements& m = out_.measured;
+    m.behaviour = b;
+    m.end_time_s = end_time;
+    const TrajectorySample last = sample(end_time);
+    m.distance_m = last.position_m;
+    if (m.trajectory.empty() || m.trajectory.back().time_s < end_time) m.trajectory.push_back(last);
+    if (b == Behaviour::rolled_to_end) set_terminal_velocity(m, n_);
+}
+
+RollingRun Roller::run() {
+    emit_samples_before(std::nextafter(0.0, 1.0));  // the release state is the first row
+    for (long j = 0; j <= 1; ++j)
+        if (phi_ == face_angle(j)) land(j);  // released flat on a face: rests or tips
+    while (running_) {
+        if (++out_.steps > kMaxSteps || !std::isfinite(omega_) || !std::isfinite(phi_)) {
+            out_.measured.behaviour = Behaviour::diverged;
+            out_.measured.divergence =
+                fmt::format("at t = {:.4f} s: the reduced model took more than {} steps", t_, kMaxSteps);
+            out_.measured.end_time_s = t_;
+            if (!out_.measured.trajectory.empty())
+                out_.measured.distance_m = out_.measured.trajectory.back().position_m;
+            running_ = false;
+            break;
+        }
+        const double left = tr_.time_limit_s - t_;
+        if (left <= 1e-12 * std::max(1.0, tr_.time_limit_s)) {
+            finish(Behaviour::time_limit, t_);
+            break;
+        }
+        const PendulumSeries s(psi(), omega_, piv_.a);
+        const double h = std::min({s.accurate_step_s(), kMaxStepS, left});
+        const auto [event, tau] = find_event(s, h);
+        check_normal(s);
+        emit_series_samples(s, t_ + tau);
+        const double rate = s.rate(tau);
+        const double psi_new = event == Event::none     ? s.psi(tau)
+                               : event == Event::backward ? piv_.psi_lo
+                               : event == Event::forward  ? piv_.psi_hi
+                                                          : piv_.psi_end;
+        t_ = event == Event::none && tau == left ? tr_.time_limit_s : t_ + tau;
+        phi_ = psi_new + piv_.phi_top;
+        omega_ = rate;
+        switch (event) {
+            case Event::end: finish(Behaviour::rolled_to_end, t_); break;
+            case Event::forward: impact(+1); break;
+            case Event::backward: impact(-1); break;
+            case Event::none: break;
+        }
+    }
+    out_.measured.max_energy_gain_J = 0.0;
+    for (const TrajectorySample& s : out_.measured.trajectory)
+        out_.measured.max_energy_gain_J = std::max(out_.measured.max_energy_gain_J,
+                                                   s.kinetic_J + s.potential_J + s.dissipated_J);
+    if (!std::isfinite(out_.min_normal_force_N)) out_.min_normal_force_N = 0.0;
+    return out_;
+}
+
+}  // namespace
+
+RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track) {
+    if (body.outer_m.size() < 3) throw InputError("a rolling polygon needs at least 3 sides");
+    Roller r(body, fill, track);
+    return r.run();
+}
+
+}  // namespace polyroll::models

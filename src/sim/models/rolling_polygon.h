@@ -1,0 +1,65 @@
+// The event-driven core of both reduced models (shared/physics.md): a rigid body with a regular
+// polygonal outline rolls without slipping down the ramp, turning about one vertex between face
+// impacts (pivot_motion.h); at each impact the angular momentum about the new pivot is conserved.
+// The fill either stays frozen as it was at release (the rigid impact model) or re-levels after every
+// impact (the composite segment model), the drop of its centre of mass booked as dissipated.
+// It measures what the grain tracker measures, in the same ramp frame and conventions.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "sim/geometry.h"
+#include "sim/measurements.h"
+#include "sim/models/composite_body.h"
+
+namespace polyroll::models {
+
+// What rolls, in the polygon's frame (its centre, the tracked lid centre, at the origin).
+struct RollingBody {
+    // The outline touching the ramp: a regular polygon laid out like shell_outer_polygon_m (face
+    // (0, 1) down at angle 0, vertex 1 downhill of vertex 0).
+    std::vector<geom::Vec2> outer_m;
+    MassProperties shell;            // everything but the fill
+    std::vector<geom::Vec2> inner_m; // the inside the fill occupies (convex, counter-clockwise)
+    double fill_ratio = 0.0;         // r: share of the inside area the fill occupies
+    double fill_areal_density_kg_m2 = 0.0;  // fill mass per unit area of cross-section
+};
+
+enum class FillMotion {
+    frozen,   // the fill keeps its shape at release: one rigid body throughout
+    relevel,  // after each impact the fill's surface re-levels to horizontal
+};
+
+// The ramp and the run's rules, in SI units and the ramp frame of world_builder.h.
+struct RollingTrack {
+    double angle_deg = 0.0;
+    double gravity_m_s2 = 0.0;
+    double start_rotation_rad = 0.0;  // clockwise rotation from face (0, 1) flat: -release angle
+    double end_centre_x_m = 0.0;      // the run ends when the centre passes this
+    double time_limit_s = 0.0;
+    double sample_hz = 0.0;
+    // Sample times are rounded up to multiples of 1 / this (0: exact multiples of 1 / sample_hz). Set
+    // to the grain model's step rate, the rows fall at the times the grain tracker samples.
+    double sample_grid_hz = 0.0;
+    double rest_speed_m_s = 0.0;
+    double rest_time_s = 0.0;
+};
+
+struct RollingRun {
+    Measurements measured;
+    // The model assumes the polygon stays on the ramp: false once the normal force it needs turns
+    // negative (the real polygon would hop), with the first time that happened.
+    bool model_valid = true;
+    std::optional<double> model_invalid_time_s;
+    double min_normal_force_N = 0.0;  // over the whole run
+    double fill_mass_kg = 0.0;
+    long steps = 0;                   // integrator steps
+    double relevel_dissipated_J = 0.0;  // the part of the dissipated energy from re-levelling
+};
+
+// Runs to rest, the ramp's end or the time limit. Throws InputError if the release rotation puts the
+// next vertex below the ramp (more than one face past the starting one).
+RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track);
+
+}  // namespace polyroll::models

@@ -1,0 +1,228 @@
+// The GL-free half of the renderer: a hand-made snapshot's draw list holds the ramp, the shell and
+// every grain where the camera puts them; the frame schedule counts frames; the plot and panel fit.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/frame_builder.h"
+#include "render/frame_schedule.h"
+#include "render/overlay.h"
+#include "render/snapshot.h"
+#include "render/world_draw.h"
+#include "sim/geometry.h"
+#include "sim/simulation.h"
+#include "test_helpers.h"
+
+using namespace polyroll;
+using namespace polyroll::render;
+
+namespace {
+
+// A square shell (outer radius 4 cm, inner 3.5 cm) on a 1 m ramp at 30 degrees, with three grains.
+Snapshot known_snapshot() {
+    Snapshot s;
+    s.sides = 4;
+    s.fill_ratio = 0.25;
+    s.ramp_angle_deg = 30.0;
+    s.ramp_length_m = 1.0;
+    s.material = "bb";
+    s.outer_local_m = geom::regular_polygon(4, 0.04, -geom::kPi / 4);
+    s.inner_local_m = geom::regular_polygon(4, 0.035, -geom::kPi / 4);
+    s.time_s = 0.5;
+    s.shell_centre_m = {0.4, 0.04 * std::cos(geom::kPi / 4)};
+    s.shell_angle_rad = 0.1;
+    s.grains = {{{0.39, 0.012}, 0.003, 0.1}, {{0.41, 0.012}, 0.003, 0.2}, {{0.40, 0.018}, 0.004, 0.3}};
+    s.now.time_s = 0.5;
+    s.now.position_m = 0.3;
+    s.now.speed_m_s = 0.42;
+    s.impacts = 3;
+    s.speed_history = {{0.0, 0.0}, {0.25, 0.3}, {0.5, 0.42}};
+    return s;
+}
+
+const FontAtlas& atlas_for(const FrameOptions& o) {
+    static std::vector<std::unique_ptr<FontAtlas>> keep;
+    keep.push_back(std::make_unique<FontAtlas>(find_font_dir(), frame_fonts(o)));
+    return *keep.back();
+}
+
+std::vector<Shape> shapes_tagged(const Layer& layer, Tag tag) {
+    std::vector<Shape> out;
+    for (const Shape& s : layer.shapes)
+        if (s.tag == tag) out.push_back(s);
+    return out;
+}
+
+// Pixel position of a ramp-frame point, worked out from the drawn ramp surface alone: its start is
+// the ramp's origin, its direction the slope, its length the scale.
+struct RampMap {
+    Px origin;
+    double scale;  // px per m
+    double angle_rad;
+    Px at(geom::Vec2 p) const {
+        const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+        // Down the slope goes right and down (y grows downwards in pixels); the normal goes up-right.
+        return {static_cast<float>(origin.x + scale * (p.x * c + p.y * s)),
+                static_cast<float>(origin.y + scale * (p.x * s - p.y * c))};
+    }
+};
+
+bool near(Px a, Px b, float tol) { return std::fabs(a.x - b.x) <= tol && std::fabs(a.y - b.y) <= tol; }
+
+}  // namespace
+
+TEST_CASE("the draw list holds the ramp at its angle, the shell and every grain where they are", "[render]") {
+    const Snapshot s = known_snapshot();
+    FrameOptions o;
+    o.width_px = 1280;
+    o.height_px = 720;
+    const FontAtlas& font = atlas_for(o);
+    const DrawList dl = build_frame(s, o, font);
+    REQUIRE(dl.width_px == 1280);
+    REQUIRE(dl.height_px == 720);
+    REQUIRE(!dl.layers.empty());
+    const Layer& world = dl.layers.front();  // the main view
+
+    const auto surface = shapes_tagged(world, Tag::ramp_surface);
+    REQUIRE(surface.size() == 1);
+    const Px a = surface[0].a, b = surface[0].b;
+    // The ramp goes down to the right at 30 degrees (pixel y grows downwards).
+    CHECK(std::atan2(b.y - a.y, b.x - a.x) == Approx(geom::kPi / 6).margin(1e-4));
+    const double scale = std::hypot(b.x - a.x, b.y - a.y) / s.ramp_length_m;
+    // The whole ramp fits in the frame, below the overlay panels.
+    const FrameLayout L = frame_layout(o);
+    for (const Px& p : {a, b}) {
+        CHECK(p.x >= 0);
+        CHECK(p.x <= 1280);
+        CHECK(p.y >= L.panel.y + L.panel.height);
+        CHECK(p.y <= 720);
+    }
+    CHECK(scale > 300.0);  // fills most of the frame's width: 1 m at 30 degrees is 0.87 m wide
+    const RampMap map{a, scale, geom::kPi / 6};
+
+    // Every grain, at its place and size.
+    const auto grains = shapes_tagged(world, Tag::grain);
+    REQUIRE(grains.size() == s.grains.size());
+    for (size_t i = 0; i < s.grains.size(); ++i) {
+        CHECK(near(grains[i].a, map.at(s.grains[i].position_m), 0.01f));
+        CHECK(grains[i].radius == Approx(s.grains[i].radius_m * scale).epsilon(1e-4));
+        CHECK(grains[i].fill == material_colour("bb"));
+    }
+
+    // The shell's outer edges run between its vertices, turned by its angle about its centre.
+    const auto outline = shapes_tagged(world, Tag::shell_outline);
+    REQUIRE(outline.size() == 8);  // outer and inner edges
+    for (size_t i = 0; i < 4; ++i) {
+        const geom::Vec2 v = s.shell_centre_m + geom::rotate(s.outer_local_m[i], s.shell_angle_rad);
+        const bool found = std::any_of(outline.begin(), outline.end(),
+                                       [&](const Shape& e) { return near(e.a, map.at(v), 0.01f); });
+        CHECK(found);
+    }
+    // The walls fill the band between the polygons; the lid dot sits on the centre.
+    const auto walls = std::count_if(world.triangles.begin(), world.triangles.end(),
+                                     [](const Triangle& t) { return t.tag == Tag::shell_wall; });
+    CHECK(walls == 8);
+    const auto dot = shapes_tagged(world, Tag::lid_dot);
+    REQUIRE(!dot.empty());
+    CHECK(near(dot.back().a, map.at(s.shell_centre_m), 0.01f));
+    CHECK(dot.back().fill == palette::lid_dot);
+
+    // A length scale: ticks along the ramp, and the overlay's text is there.
+    CHECK(shapes_tagged(world, Tag::ramp_tick).size() >= 10);
+    CHECK(!world.glyphs.empty());
+    CHECK(!dl.layers.back().glyphs.empty());
+}
+
+TEST_CASE("the follow camera keeps the shell in the middle of the view, large", "[render]") {
+    Snapshot s = known_snapshot();
+    FrameOptions o;
+    o.width_px = 640;
+    o.height_px = 360;
+    o.follow = true;
+    const FontAtlas& font = atlas_for(o);
+    const FrameLayout L = frame_layout(o);
+    CHECK(!L.inset);
+    for (double x : {0.1, 0.5, 0.9}) {
+        s.shell_centre_m.x = x;
+        const DrawList dl = build_frame(s, o, font);
+        const auto dot = shapes_tagged(dl.layers.front(), Tag::lid_dot);
+        REQUIRE(!dot.empty());
+        CHECK(dot.back().a.x == Approx(L.world.x + L.world.width / 2));
+        CHECK(dot.back().a.y == Approx(L.world.y + L.world.height / 2));
+        // Grains are several pixels across, so a projector shows them.
+        for (const Shape& g : shapes_tagged(dl.layers.front(), Tag::grain)) CHECK(g.radius > 3.0f);
+    }
+}
+
+TEST_CASE("grains coloured by speed follow the colour map", "[render]") {
+    const Snapshot s = known_snapshot();
+    FrameOptions o;
+    o.width_px = 640;
+    o.height_px = 360;
+    o.grain_colouring = GrainColouring::speed;
+    o.colour_speed_max_m_s = 0.4;
+    const DrawList dl = build_frame(s, o, atlas_for(o));
+    const auto grains = shapes_tagged(dl.layers.front(), Tag::grain);
+    REQUIRE(grains.size() == 3);
+    CHECK(grains[0].fill == speed_colour(0.25));
+    CHECK(grains[2].fill == speed_colour(0.75));
+    CHECK(!(grains[0].fill == grains[2].fill));
+}
+
+TEST_CASE("the speed plot's axes cover the data and grow with it", "[render]") {
+    Snapshot s = known_snapshot();
+    FrameOptions o;
+    PlotAxes ax = plot_axes(s, o);
+    CHECK(ax.time_max_s >= 0.5);
+    CHECK(ax.speed_max_m_s >= 0.42);
+    CHECK(ax.speed_min_m_s == 0.0);
+    s.speed_history.push_back({3.2, -0.15});
+    ax = plot_axes(s, o);
+    CHECK(ax.time_max_s >= 3.2);
+    CHECK(ax.speed_min_m_s <= -0.15);
+    o.plot_time_max_s = 10.0;
+    CHECK(plot_axes(s, o).time_max_s == 10.0);
+}
+
+TEST_CASE("the frame schedule takes a frame whenever simulated time advances by 1/(fps x slow)", "[render]") {
+    const FrameSchedule f{30.0, 1, 1000.0, 1.0};
+    CHECK(f.step_for_frame(0) == 0);
+    CHECK(f.step_for_frame(1) == 34);  // 33.3 steps: the first step at or after 1/30 s
+    CHECK(f.step_for_frame(3) == 100);
+    CHECK(f.run_frames(1000) == 31);   // 0, 1/30, ..., 1 s
+    CHECK(f.run_frames(999) == 30);
+    CHECK(f.hold_frames() == 30);
+    CHECK(f.total_frames(1000) == 61);
+    const FrameSchedule slow{60.0, 4, 1000.0, 0.5};
+    CHECK(slow.run_frames(1000) == 241);
+    CHECK(slow.hold_frames() == 30);
+    // The count and the steps agree at every length: the last frame is inside the run, the next is not.
+    for (const FrameSchedule& g : {f, slow, FrameSchedule{24.0, 3, 240.0, 0.0}, FrameSchedule{29.97, 1, 1000.0, 0.0}})
+        for (long end = 0; end < 3000; end += 7) {
+            const long n = g.run_frames(end);
+            CHECK(g.step_for_frame(n - 1) <= end);
+            CHECK(g.step_for_frame(n) > end);
+        }
+}
+
+TEST_CASE("a snapshot copies the simulation's state in metres", "[render]") {
+    const Scene scene = test::scene_with({{"run", {{"time_limit_s", 0.05}}}});
+    Simulation sim(scene);
+    while (sim.step()) {
+    }
+    const Snapshot s = take_snapshot(sim);
+    const SimWorld& w = sim.world();
+    CHECK(s.sides == scene.shell.sides);
+    CHECK(s.grains.size() == w.grains.size());
+    CHECK(s.shell_centre_m.x == Approx(w.units.to_m(w.shell->GetPosition().x)));
+    // The shell rests on the ramp: its centre is about an apothem above the surface, in metres.
+    CHECK(s.shell_centre_m.y > 0.02);
+    CHECK(s.shell_centre_m.y < 0.06);
+    for (const GrainState& g : s.grains) {
+        CHECK(geom::length(g.position_m - s.shell_centre_m) < 0.04);
+        CHECK(g.radius_m == Approx(scene.fill.material.diameter_m / 2).epsilon(0.05));
+    }
+    CHECK(s.time_s == Approx(0.05));
+    CHECK(s.speed_history.back().time_s == Approx(s.time_s));
+}

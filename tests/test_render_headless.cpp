@@ -1,0 +1,248 @@
+// Headless rendering end to end (OSMesa, no display): the expected frames, each a valid PNG of the
+// requested size; the background at the corners and the shell where it is; byte-identical frames
+// from two renders; the run's files as `polyroll run` writes them; bad flags refused with exit 2.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include "render/font.h"
+#include "render/frame_builder.h"
+#include "render/frame_encoder.h"
+#include "render/png_writer.h"
+#include "render/render_sequence.h"
+#include "render/snapshot.h"
+#include "test_helpers.h"
+
+using namespace polyroll;
+using namespace polyroll::render;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("polyroll-render-test-" + name);
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+struct Rgb {
+    int r, g, b;
+};
+Rgb pixel(const DecodedPng& im, int x, int y) {
+    const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(im.width) + static_cast<size_t>(x)) * 3;
+    return {im.rgb[i], im.rgb[i + 1], im.rgb[i + 2]};
+}
+int distance(Rgb a, Rgba b) {
+    return std::abs(a.r - static_cast<int>(std::lround(b.r * 255))) +
+           std::abs(a.g - static_cast<int>(std::lround(b.g * 255))) +
+           std::abs(a.b - static_cast<int>(std::lround(b.b * 255)));
+}
+
+// A short run of the default scene: 0.3 s simulated.
+Scene short_scene() { return test::scene_with({{"run", {{"time_limit_s", 0.3}}}}); }
+
+SequenceSettings small_settings(int w, int h) {
+    SequenceSettings st;
+    st.frame.width_px = w;
+    st.frame.height_px = h;
+    st.fps = 30.0;
+    st.hold_s = 0.1;
+    st.encoder_threads = 2;
+    return st;
+}
+
+struct Cli {
+    int exit_code = -1;
+    std::string out;
+};
+Cli run_cli(const std::string& args, const std::string& env = "") {
+    const std::string cmd = env + (env.empty() ? "" : " ") + std::string(POLYROLL_EXE) + " " + args + " 2>&1";
+    Cli r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("a headless render writes the expected PNG frames with the shell where it is", "[render]") {
+    const fs::path dir = scratch("pixels");
+    const Scene scene = short_scene();
+    const SequenceSettings st = small_settings(640, 360);
+    const SequenceResult res = render_sequence(scene, st, dir);
+
+    // 0.3 s at 30 frames/s: frames at 0, 1/30, ..., 0.3 s, then 0.1 s of hold.
+    REQUIRE(res.run.measured.end_time_s == Approx(0.3));
+    const long expected = static_cast<long>(std::floor(0.3 * 30 + 1e-6)) + 1 + 3;
+    CHECK(res.run_frames + res.hold_frames == expected);
+    for (long i = 1; i <= expected; ++i) {
+        const fs::path f = dir / frame_file_name(i);
+        REQUIRE(fs::exists(f));
+        const DecodedPng im = read_png(f);  // throws if not a valid PNG
+        CHECK(im.width == 640);
+        CHECK(im.height == 360);
+    }
+    CHECK(!fs::exists(dir / frame_file_name(expected + 1)));
+    // No temporary files left behind.
+    for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().front() != '.');
+
+    // The last frame shows the final state: rebuild its draw list to know where things are.
+    const DecodedPng last = read_png(dir / frame_file_name(expected));
+    for (auto [x, y] : {std::pair{0, 0}, {639, 0}, {0, 359}, {639, 359}}) {
+        INFO("corner " << x << "," << y);
+        CHECK(distance(pixel(last, x, y), palette::background) == 0);
+    }
+    Simulation sim(scene);
+    while (sim.step()) {
+    }
+    const Snapshot snap = take_snapshot(sim);
+    const FrameOptions options = options_for_run(st.frame, res.run);
+    const FontAtlas font(find_font_dir(), frame_fonts(options));
+    const DrawList dl = build_frame(snap, options, font);
+    // The close-up's outer edges (its widest outline strokes) are drawn in the outline colour.
+    int edges = 0, hits = 0;
+    for (const Layer& layer : dl.layers) {
+        if (!layer.clip) continue;
+        float widest = 0;
+        for (const Shape& s : layer.shapes)
+            if (s.tag == Tag::shell_outline) widest = std::max(widest, s.radius);
+        for (const Shape& s : layer.shapes) {
+            if (s.tag != Tag::shell_outline || s.radius < widest) continue;
+            ++edges;
+            const int cx = static_cast<int>((s.a.x + s.b.x) / 2), cy = static_cast<int>((s.a.y + s.b.y) / 2);
+            int best = 1 << 20;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) best = std::min(best, distance(pixel(last, cx + dx, cy + dy),
+                                                                                 palette::shell_outline));
+            hits += best < 60;
+        }
+    }
+    CHECK(edges == snap.sides);
+    CHECK(hits == edges);
+    // The lid dot at the close-up's centre is black; the light inside of the shell is around it.
+    const FrameLayout L = frame_layout(options);
+    REQUIRE(L.inset);
+    const int ix = static_cast<int>(L.inset->x + L.inset->width / 2), iy = static_cast<int>(L.inset->y + L.inset->height / 2);
+    CHECK(distance(pixel(last, ix, iy), palette::lid_dot) < 40);
+    // In the main view the shell sits near the top of the ramp, not in the empty middle of the frame.
+    CHECK(distance(pixel(last, 320, 120), palette::background) == 0);
+}
+
+TEST_CASE("two renders of the same scene give byte-identical frames", "[render]") {
+    const fs::path a = scratch("det-a"), b = scratch("det-b");
+    const Scene scene = test::scene_with({{"run", {{"time_limit_s", 0.2}}}});
+    SequenceSettings st = small_settings(320, 180);
+    st.frame.grain_colouring = GrainColouring::speed;
+    const SequenceResult ra = render_sequence(scene, st, a);
+    st.encoder_threads = 1;  // a different pool size must not change a byte
+    const SequenceResult rb = render_sequence(scene, st, b);
+    const long n = ra.run_frames + ra.hold_frames;
+    REQUIRE(n == rb.run_frames + rb.hold_frames);
+    REQUIRE(n > 5);
+    for (long i = 1; i <= n; ++i) {
+        INFO(frame_file_name(i));
+        CHECK(slurp(a / frame_file_name(i)) == slurp(b / frame_file_name(i)));
+    }
+    // And the frames do change as the polygon moves.
+    CHECK(slurp(a / frame_file_name(1)) != slurp(a / frame_file_name(n)));
+}
+
+TEST_CASE("polyroll render writes the run's files as polyroll run does", "[render][cli]") {
+    const fs::path base = scratch("cli");
+    const std::string scene = "--time-limit 0.2 --sides 8 --fill 0.375 --material peas --angle 12";
+    const Cli run = run_cli("run " + scene + " --out " + (base / "run").string());
+    REQUIRE(run.exit_code == 0);
+    const Cli render = run_cli("render " + scene + " --size 160x90 --fps 20 --hold 0.5 --out " + (base / "frames").string());
+    INFO(render.out);
+    REQUIRE(render.exit_code == 0);
+    CHECK(render.out.find("frame 15/15") != std::string::npos);  // progress: 0.2 s x 20 + 1, and 10 held
+    CHECK(fs::exists(base / "frames" / frame_file_name(15)));
+    CHECK(!fs::exists(base / "frames" / frame_file_name(16)));
+    for (const char* f : {"trajectory.csv", "impacts.csv"}) CHECK(slurp(base / "run" / f) == slurp(base / "frames" / f));
+    auto summary = [](const fs::path& p) {
+        nlohmann::json j = nlohmann::json::parse(slurp(p));
+        j["results"].erase("wall_time_s");  // the only field that depends on the clock
+        return j;
+    };
+    CHECK(summary(base / "run" / "summary.json") == summary(base / "frames" / "summary.json"));
+}
+
+TEST_CASE("polyroll render refuses bad flags with one line, exit 2 and nothing written", "[render][cli][bad-input]") {
+    const fs::path base = scratch("bad");
+    const fs::path out = base / "new";
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"--size 0x0", {"--size 0x0", "16"}},
+        {"--size 1280", {"--size 1280", "WIDTHxHEIGHT"}},
+        {"--size 99999x720", {"--size 99999x720", "7680"}},
+        {"--fps 0", {"--fps 0", "1 to 240"}},
+        {"--fps 1000", {"--fps 1000", "1 to 240"}},
+        {"--slow 0", {"--slow 0", "1 to 100"}},
+        {"--color-by mood", {"--color-by mood", "material, speed"}},
+        {"--video /nonexistent-folder/x.mp4", {"/nonexistent-folder", "does not exist"}},
+        {"--fill 2", {"fill.ratio = 2", "0 to 1"}},
+    };
+    for (const Case& c : cases) {
+        const Cli r = run_cli("render --time-limit 0.1 " + c.args + " --out " + out.string());
+        INFO(c.args << " -> " << r.out);
+        CHECK(r.exit_code == 2);
+        size_t lines = 0;
+        for (char ch : r.out) lines += ch == '\n';
+        CHECK(lines == 1);
+        for (const std::string& w : c.words) CHECK(r.out.find(w) != std::string::npos);
+        CHECK(!fs::exists(out));
+    }
+    // An unwritable folder, and a non-empty one without --force.
+    const fs::path file = base / "a-file";
+    std::ofstream(file) << "x";
+    Cli r = run_cli("render --time-limit 0.1 --out " + (file / "frames").string());
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find((file / "frames").string()) != std::string::npos);
+    const fs::path full = base / "full";
+    fs::create_directories(full);
+    std::ofstream(full / "keep.txt") << "x";
+    r = run_cli("render --time-limit 0.1 --out " + full.string());
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find("--force") != std::string::npos);
+    CHECK(!fs::exists(full / frame_file_name(1)));
+    CHECK(fs::exists(full / "keep.txt"));
+}
+
+TEST_CASE("render with --video but no ffmpeg says how to get it and still writes the frames", "[render][cli]") {
+    const fs::path base = scratch("video");
+    // An empty PATH hides any installed ffmpeg.
+    const Cli r = run_cli("render --time-limit 0.1 --size 64x36 --hold 0 --out " + (base / "f").string() +
+                               " --video " + (base / "v.mp4").string(),
+                           "env PATH=/nonexistent");
+    INFO(r.out);
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("ffmpeg is not installed") != std::string::npos);
+    CHECK(r.out.find("apt-get install ffmpeg") != std::string::npos);
+    CHECK(fs::exists(base / "f" / frame_file_name(1)));
+    CHECK(fs::exists(base / "f" / "summary.json"));
+    CHECK(!fs::exists(base / "v.mp4"));
+}

@@ -1,0 +1,278 @@
+// The sweep engine: value lists and ranges, deterministic plans with stable ids, shards that cover a
+// plan exactly once, results tables that survive a crash, resumption without duplicates, failed runs
+// recorded with their reason, and merged shards equal to the one-process table.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "sim/errors.h"
+#include "sweep/grid_values.h"
+#include "sweep/merge.h"
+#include "sweep/results_table.h"
+#include "sweep/sweep_plan.h"
+#include "sweep/sweep_runner.h"
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+using namespace polyroll;
+using namespace polyroll::sweep;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("polyroll-sweep-test-" + name);
+    fs::remove_all(p);
+    return p;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The table without its last column (wall_time_s, the one cell that differs between hosts and runs).
+std::string without_wall_time(const std::string& table) {
+    std::istringstream in(table);
+    std::string line, out;
+    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
+    return out;
+}
+
+// A cheap grid: empty shells and a few grains, draft fidelity, short runs; one point out of range.
+SweepPlan tiny_plan() {
+    json base = {{"fidelity", "draft"}, {"run", {{"time_limit_s", 0.6}}}, {"ramp", {{"preset", "wooden"}}}};
+    std::vector<SweepAxis> axes = {
+        {"shell.sides", "--sides", {6, 8}},
+        {"fill.ratio", "--fill", {0.0, 0.1, 1.5}},
+        {"ramp.angle_deg", "--angle", {8.0, 30.0}},
+        {"run.seed", "--seeds", {1u, 2u}},
+    };
+    return make_grid_plan(base, axes);
+}
+
+}  // namespace
+
+TEST_CASE("grid values: lists, inclusive ranges without accumulated error, types kept", "[sweep]") {
+    auto v = parse_grid_values("--fill", "0:1:0.1");
+    REQUIRE(v.size() == 11);
+    CHECK(v.back().get<double>() == 1.0);
+    CHECK(value_text(v[3]) == "0.3");
+    CHECK(value_text(v[7]) == "0.7");
+    auto eighths = parse_grid_values("--fill", "0:1:0.125");
+    CHECK(eighths.size() == 9);
+    auto sides = parse_grid_values("--sides", "6,8,10:18:4");
+    REQUIRE(sides.size() == 5);
+    CHECK(sides[0].is_number_unsigned());
+    CHECK(sides[4] == 18);
+    auto angles = parse_grid_values("--angle", "5:30:1");
+    CHECK(angles.size() == 26);
+    auto mixed = parse_grid_values("--material", "bb, rice,peas");
+    REQUIRE(mixed.size() == 3);
+    CHECK(mixed[1] == "rice");
+    CHECK(parse_grid_values("--angle", "2.5")[0].get<double>() == 2.5);
+    // A range whose stop is not on the grid stops below it.
+    auto partial = parse_grid_values("--angle", "0:1:0.3");
+    REQUIRE(partial.size() == 4);
+    CHECK(partial.back().get<double>() == Approx(0.9));
+    // 1e-9 of a step short of the stop still reaches it; a third of a step does not.
+    CHECK(inclusive_range("x", 0.0, 0.3, 0.1).size() == 4);
+
+    auto message = [](const std::string& name, const std::string& text) {
+        try {
+            parse_grid_values(name, text);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK_THAT(message("--fill", "0:1:0"), Catch::Contains("--fill") && Catch::Contains("step 0"));
+    CHECK_THAT(message("--angle", "30:5:1"), Catch::Contains("backwards"));
+    CHECK_THAT(message("--angle", "5:30"), Catch::Contains("'5:30' is not a range"));
+    CHECK_THAT(message("--sides", "6,,8"), Catch::Contains("empty item"));
+    CHECK_THAT(message("--angle", "0:1e9:1e-3"), Catch::Contains("at most"));
+}
+
+TEST_CASE("plans: deterministic order and ids, last axis fastest, duplicates refused", "[sweep]") {
+    const SweepPlan a = tiny_plan(), b = tiny_plan();
+    REQUIRE(a.runs.size() == 2 * 3 * 2 * 2);
+    CHECK(plan_to_json(a) == plan_to_json(b));
+    std::set<std::string> ids;
+    for (const auto& r : a.runs) ids.insert(r.id);
+    CHECK(ids.size() == a.runs.size());
+    CHECK(a.runs[0].point == json({{"shell.sides", 6}, {"fill.ratio", 0.0}, {"ramp.angle_deg", 8.0}, {"run.seed", 1u}}));
+    CHECK(a.runs[1].point["run.seed"] == 2u);
+    CHECK(a.runs[2].point["ramp.angle_deg"] == 30.0);
+    CHECK(a.runs.back().point["shell.sides"] == 8);
+    // The id depends on the point and the base, not on the point's place in the plan.
+    const SweepPlan one = make_grid_plan(a.base, {{"shell.sides", "--sides", {8}},
+                                                  {"fill.ratio", "--fill", {1.5}},
+                                                  {"ramp.angle_deg", "--angle", {30.0}},
+                                                  {"run.seed", "--seeds", {2u}}});
+    CHECK(one.runs[0].id == a.runs.back().id);
+    json other_base = a.base;
+    other_base["ramp"]["preset"] = "air-track";
+    CHECK(run_id(other_base, a.runs[0].point) != a.runs[0].id);
+
+    CHECK_THROWS_WITH(make_grid_plan(json::object(), {{"shell.sides", "--sides", {6, 6}}}),
+                      Catch::Contains("--sides") && Catch::Contains("given twice"));
+    CHECK_THROWS_AS(check_scene_field("shell.depth", "--set shell.depth"), InputError);
+    CHECK_NOTHROW(check_scene_field("shell.depth_m", "--set shell.depth_m"));
+    CHECK_NOTHROW(check_scene_field("fill.material.diameter_m", "--set"));
+
+    // Read back, it is the same plan; a hand-edited point is caught.
+    CHECK(plan_to_json(plan_from_json(plan_to_json(a), "t")) == plan_to_json(a));
+    json edited = plan_to_json(a);
+    edited["runs"][3]["point"]["ramp.angle_deg"] = 31.0;
+    CHECK_THROWS_WITH(plan_from_json(edited, "plan.json"), Catch::Contains("run 3"));
+}
+
+TEST_CASE("shards: disjoint slices that together cover the plan once", "[sweep]") {
+    for (std::size_t runs : {0u, 1u, 7u, 100u}) {
+        for (int n : {1, 3, 16}) {
+            std::vector<int> seen(runs, 0);
+            for (int k = 1; k <= n; ++k)
+                for (std::size_t i : shard_indices(runs, k, n)) ++seen.at(i);
+            for (int s : seen) CHECK(s == 1);
+        }
+    }
+    CHECK(parse_shard("3/16") == std::make_pair(3, 16));
+    for (const char* bad : {"0/4", "5/4", "3", "a/b", "3/16x", "-1/2"})
+        CHECK_THROWS_WITH(parse_shard(bad), Catch::Contains(bad) && Catch::Contains("K/N"));
+}
+
+TEST_CASE("results tables: CSV cells round-trip; a line cut short is dropped", "[sweep]") {
+    const std::vector<std::string> cells = {"3", "a,b", "say \"hi\"", "", " padded ", "line\nbreak"};
+    std::string line = csv_line(cells);
+    line.pop_back();
+    auto back = parse_csv_line(line);
+    REQUIRE(back.size() == cells.size());
+    CHECK(back[1] == "a,b");
+    CHECK(back[2] == "say \"hi\"");
+    CHECK(back[4] == " padded ");
+    CHECK(back[5] == "line break");
+
+    const fs::path dir = scratch("partial");
+    fs::create_directories(dir);
+    std::ofstream(dir / "t.csv") << "index,x\n0,a\n1,b\n2,c";  // the last row lost its newline
+    TableFile t = read_table(dir / "t.csv");
+    CHECK(t.rows.size() == 2);
+    CHECK(t.had_partial_line);
+    std::ofstream(dir / "bad.csv") << "index,x\n0,a,b\n";
+    CHECK_THROWS_AS(read_table(dir / "bad.csv"), InputError);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a sweep records failed points, survives a crash and resumes without duplicates", "[sweep]") {
+    const SweepPlan plan = tiny_plan();
+    const ResultsTable columns(plan);
+    const fs::path dir = scratch("resume");
+    SweepOptions o;
+    o.dir = dir;
+    o.jobs = 2;
+    o.quiet = true;
+    const SweepReport first = run_sweep(plan, o, nullptr);
+    CHECK(first.ran == plan.runs.size());
+    CHECK_FALSE(first.interrupted);
+    const std::string full = slurp(dir / "results.csv");
+    const TableFile t = read_table(dir / "results.csv");
+    REQUIRE(t.rows.size() == plan.runs.size());
+    const std::size_t status = columns.column("status"), reason = columns.column("reason"),
+                      fill = columns.column("fill_ratio"), behaviour = columns.column("behaviour");
+    std::size_t failed = 0;
+    for (std::size_t i = 0; i < t.rows.size(); ++i) {
+        const auto& row = t.rows[i];
+        CHECK(row[0] == std::to_string(i));  // sorted by plan index
+        if (row[fill] == "1.5") {
+            ++failed;
+            CHECK(row[status] == "failed");
+            CHECK_THAT(row[reason], Catch::Contains("fill.ratio = 1.5") && Catch::Contains("--fill"));
+            CHECK_FALSE(fs::exists(dir / "runs" / row[1]));
+        } else {
+            CHECK(row[status] == "ok");
+            CHECK(row[behaviour] != "diverged");
+            CHECK(fs::exists(dir / "runs" / row[1] / "summary.json"));
+        }
+    }
+    CHECK(failed == first.failed);
+    CHECK(failed == 8);
+
+    // A crash: two rows written in completion order, then half a row.
+    {
+        std::istringstream in(full);
+        std::string header, r0, r1, r2;
+        std::getline(in, header);
+        std::getline(in, r0);
+        std::getline(in, r1);
+        std::getline(in, r2);
+        std::ofstream(dir / "results.csv", std::ios::trunc) << header << "\n" << r1 << "\n" << r0 << "\n"
+                                                            << r2.substr(0, r2.size() / 2);
+    }
+    const SweepReport resumed = run_sweep(plan, o, nullptr);
+    CHECK(resumed.already == 2);
+    CHECK(resumed.ran == plan.runs.size() - 2);
+    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+
+    // Nothing left: the same sweep again runs nothing and leaves the table as it was.
+    const SweepReport again = run_sweep(plan, o, nullptr);
+    CHECK(again.ran == 0);
+    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+
+    // Stopped before it starts (Ctrl-C): nothing run, reported as interrupted; --retry-failed reruns
+    // exactly the failed rows.
+    std::atomic<bool> stop{true};
+    SweepOptions retry = o;
+    retry.retry_failed = true;
+    const SweepReport stopped = run_sweep(plan, retry, &stop);
+    CHECK(stopped.interrupted);
+    CHECK(stopped.ran == 0);
+    const SweepReport retried = run_sweep(plan, retry, nullptr);
+    CHECK(retried.ran == failed);
+    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("shards merged give the one-process table; tables of another plan are refused", "[sweep]") {
+    const SweepPlan plan = tiny_plan();
+    const fs::path one = scratch("one"), sharded = scratch("sharded");
+    SweepOptions o;
+    o.dir = one;
+    o.jobs = 1;
+    o.quiet = true;
+    run_sweep(plan, o, nullptr);
+
+    o.dir = sharded;
+    o.jobs = 2;
+    for (int k = 1; k <= 3; ++k) {
+        o.shard = std::make_pair(k, 3);
+        const SweepReport r = run_sweep(plan, o, nullptr);
+        CHECK(r.planned == shard_indices(plan.runs.size(), k, 3).size());
+        CHECK(fs::exists(sharded / "shards" / ("shard-" + std::to_string(k) + "-of-3.csv")));
+    }
+    CHECK_FALSE(fs::exists(sharded / "results.csv"));
+    const MergeReport m = merge_tables(plan, sharded);
+    CHECK(m.missing.empty());
+    CHECK(m.rows == plan.runs.size());
+    CHECK(m.tables == 4);
+    CHECK(without_wall_time(slurp(sharded / "results.csv")) == without_wall_time(slurp(one / "results.csv")));
+    // Merging again changes nothing (no duplicates from results.csv plus the shards).
+    merge_tables(plan, sharded);
+    CHECK(without_wall_time(slurp(sharded / "results.csv")) == without_wall_time(slurp(one / "results.csv")));
+
+    // A missing slice is reported, not invented.
+    fs::remove(sharded / "shards" / "shard-2-of-3.csv");
+    fs::remove(sharded / "results.csv");
+    CHECK(merge_tables(plan, sharded).missing == shard_indices(plan.runs.size(), 2, 3));
+
+    // Another plan's table in the folder is refused.
+    json base = plan.base;
+    base["run"]["time_limit_s"] = 0.7;
+    const SweepPlan other = make_grid_plan(base, {{"shell.sides", "--sides", {6, 8}}});
+    CHECK_THROWS_AS(merge_tables(other, sharded), InputError);
+    fs::remove_all(one);
+    fs::remove_all(sharded);
+}

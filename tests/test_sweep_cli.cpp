@@ -1,0 +1,138 @@
+// polyroll sweep as users run it: a plan split into slices under GNU parallel (two local jobs) and
+// merged gives the one-process table; bad grid flags and folders fail with one line and exit 2.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int exit_code = -1;
+    std::string out;  // stdout and stderr together
+};
+
+Result shell(const std::string& cmd) {
+    Result r;
+    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+const std::string exe = POLYROLL_EXE;
+
+fs::path scratch(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("polyroll-sweep-cli-" + name);
+    fs::remove_all(p);
+    return p;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// wall_time_s is the table's last column and the only one that differs from run to run.
+std::string without_wall_time(const std::string& table) {
+    std::istringstream in(table);
+    std::string line, out;
+    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
+    return out;
+}
+
+// A small grid: empty and lightly filled shells, two materials, one invalid angle, two seeds.
+const std::string kGrid =
+    "--sides 6,8 --fill 0,0.125 --material bb,rice --angle 10,25,95 --seeds 2 --fidelity draft --ramp wooden "
+    "--time-limit 0.8 -q";
+
+}  // namespace
+
+TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-process table", "[sweep][cli]") {
+    REQUIRE(shell("parallel --version").exit_code == 0);  // GNU parallel: third_party/debian-packages.txt
+    const fs::path one = scratch("one"), big = scratch("big");
+    const Result single = shell(exe + " sweep " + kGrid + " --jobs 1 --out " + one.string());
+    INFO(single.out);
+    REQUIRE(single.exit_code == 0);
+
+    const Result plan = shell(exe + " sweep " + kGrid + " --out " + big.string() + " --plan-only");
+    INFO(plan.out);
+    REQUIRE(plan.exit_code == 0);
+    CHECK(fs::exists(big / "plan.json"));
+    CHECK_FALSE(fs::exists(big / "results.csv"));
+    CHECK(slurp(big / "plan.json") == slurp(one / "plan.json"));
+
+    const Result slices = shell("parallel --halt now,fail=1 -j2 " + exe + " sweep --from " + big.string() +
+                                " --shard {}/4 --jobs 1 -q ::: 1 2 3 4");
+    INFO(slices.out);
+    REQUIRE(slices.exit_code == 0);
+    const Result merged = shell(exe + " sweep --merge " + big.string());
+    INFO(merged.out);
+    REQUIRE(merged.exit_code == 0);
+    CHECK_THAT(merged.out, Catch::Contains("5 tables") && Catch::Contains("48 of 48 runs"));
+    const std::string a = slurp(one / "results.csv"), b = slurp(big / "results.csv");
+    CHECK(std::count(a.begin(), a.end(), '\n') == 49);
+    CHECK(a.find(",failed,") != std::string::npos);  // the 95-degree points, recorded not fatal
+    CHECK(without_wall_time(a) == without_wall_time(b));
+    // Each run's summary is there too, under its id.
+    CHECK(std::distance(fs::directory_iterator(big / "runs"), fs::directory_iterator{}) ==
+          std::distance(fs::directory_iterator(one / "runs"), fs::directory_iterator{}));
+
+    // The same command again resumes: nothing left to run, the table unchanged.
+    const Result again = shell(exe + " sweep " + kGrid + " --jobs 2 --out " + one.string());
+    INFO(again.out);
+    CHECK(again.exit_code == 0);
+    CHECK_THAT(again.out, Catch::Contains("48 found done before"));
+    CHECK(without_wall_time(slurp(one / "results.csv")) == without_wall_time(a));
+    fs::remove_all(one);
+    fs::remove_all(big);
+}
+
+TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing written", "[sweep][cli][bad-input]") {
+    const fs::path out = scratch("bad");
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"--fill 0:1:0 --out " + out.string(), {"--fill", "step 0"}},
+        {"--angle 30:5:1 --out " + out.string(), {"--angle", "backwards"}},
+        {"--sides 6,6 --out " + out.string(), {"--sides", "twice"}},
+        {"--set shell.depth=0.1 --out " + out.string(), {"shell.depth", "not a scene field"}},
+        {"--set shell.depth_m --out " + out.string(), {"FIELD=VALUES"}},
+        {"--seed 1,2 --seeds 3 --out " + out.string(), {"--seed", "--seeds"}},
+        {"--from " + out.string() + " --shard 5/4", {"--shard 5/4", "K/N"}},
+        {"--from " + out.string(), {out.string(), "no sweep plan"}},
+        {"--fill 0.5 --from " + out.string(), {"not allowed with --from"}},
+        {"--fill 0.5", {"exactly one of --out"}},
+    };
+    for (const Case& c : cases) {
+        const Result r = shell(exe + " sweep " + c.args);
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        for (const auto& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
+        CHECK_FALSE(fs::exists(out));
+    }
+    // A folder holding another sweep is not overwritten.
+    REQUIRE(shell(exe + " sweep --sides 6 --fill 0 --out " + out.string() + " --plan-only").exit_code == 0);
+    const std::string before = slurp(out / "plan.json");
+    const Result other = shell(exe + " sweep --sides 8 --fill 0 --out " + out.string());
+    INFO(other.out);
+    CHECK(other.exit_code == 2);
+    CHECK_THAT(other.out, Catch::Contains("holds a different sweep"));
+    CHECK(slurp(out / "plan.json") == before);
+    fs::remove_all(out);
+}
