@@ -22,11 +22,15 @@ struct RunOptions {
 };
 
 std::string describe_scene(const Scene& s) {
-    return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {} fidelity",
+    // Fidelity means the engine's step and iterations: only the grain model has them.
+    const std::string physics = s.run.model == Model::grains
+                                    ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
+                                    : to_string(s.run.model) + " model";
+    return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {}",
                        s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
                        s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
                        s.fill.ratio, s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
-                       to_string(s.release.pose), s.fidelity.preset.empty() ? "custom" : s.fidelity.preset);
+                       to_string(s.release.pose), physics);
 }
 
 void print_summary(const RunResult& r, const std::string& out) {
@@ -50,11 +54,15 @@ void print_summary(const RunResult& r, const std::string& out) {
         fmt::print("  face impacts       {} (mean kinetic energy ratio {:.3f})\n", m.impacts.size(),
                    mean_impact_ratio(m));
     const double rtf = r.wall_time_s > 0 ? m.end_time_s / r.wall_time_s : 0.0;
-    fmt::print("  time               {:.3f} s simulated in {:.3f} s ({:.0f}x real time)\n", m.end_time_s,
+    fmt::print("  time               {:.3f} s simulated in {:.3g} s ({:.0f}x real time)\n", m.end_time_s,
                r.wall_time_s, rtf);
     if (r.grains > 0)
         fmt::print("  grains             {} ({} inside at the end), fill mass {:.4f} kg\n", r.grains, m.grains_inside,
                    r.fill_mass_kg);
+    else if (r.fill_mass_kg > 0.0)
+        fmt::print("  fill               {:.4f} kg as {} (no grains in the {} model)\n", r.fill_mass_kg,
+                   r.scene.run.model == Model::segments ? "segments re-levelled at each impact" : "a frozen rigid body",
+                   to_string(r.scene.run.model));
     else
         fmt::print("  grains             none (empty shell)\n");
     if (!out.empty()) fmt::print("  files              {}/summary.json, trajectory.csv, impacts.csv\n", out);
