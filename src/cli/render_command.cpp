@@ -221,8 +221,9 @@ int render(const RenderOptions& o) {
     const Measurements& m = res.run.measured;
     const long total = res.run_frames + res.hold_frames;
     const double fps_wall = res.render_wall_s > 0 ? static_cast<double>(total) / res.render_wall_s : 0.0;
-    fmt::print("  frames     {} ({} of the run, {} holding the end): {} ... {}\n", total, res.run_frames,
-               res.hold_frames, render::frame_file_name(1), render::frame_file_name(total));
+    const std::string folder = (fs::path(o.out) / "").string();
+    fmt::print("  frames     {} ({} of the run, {} holding the end): {}{} ... {}\n", total, res.run_frames,
+               res.hold_frames, folder, render::frame_file_name(1), render::frame_file_name(total));
     fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impacts\n", to_string(m.behaviour),
                m.end_time_s, m.distance_m, m.impacts.size());
     fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
