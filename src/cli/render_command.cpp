@@ -224,8 +224,8 @@ int render(const RenderOptions& o) {
     const std::string folder = (fs::path(o.out) / "").string();
     fmt::print("  frames     {} ({} of the run, {} holding the end): {}{} ... {}\n", total, res.run_frames,
                res.hold_frames, folder, render::frame_file_name(1), render::frame_file_name(total));
-    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impacts\n", to_string(m.behaviour),
-               m.end_time_s, m.distance_m, m.impacts.size());
+    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impact{}\n", to_string(m.behaviour),
+               m.end_time_s, m.distance_m, m.impacts.size(), m.impacts.size() == 1 ? "" : "s");
     fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
                res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
     fmt::print("  files      {}/summary.json, trajectory.csv, impacts.csv\n", o.out);
