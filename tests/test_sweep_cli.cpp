@@ -74,7 +74,7 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
     CHECK_FALSE(fs::exists(big / "results.csv"));
     CHECK(slurp(big / "plan.json") == slurp(one / "plan.json"));
 
-    const Result slices = shell("parallel --halt now,fail=1 -j2 " + exe + " sweep --from " + big.string() +
+    const Result slices = shell("parallel --will-cite --halt now,fail=1 -j2 " + exe + " sweep --from " + big.string() +
                                 " --shard {}/4 --jobs 1 -q ::: 1 2 3 4");
     INFO(slices.out);
     REQUIRE(slices.exit_code == 0);

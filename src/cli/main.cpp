@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     add(add_compare_command);
     add(add_sweep_command);
     add(add_figures_command);
+    add(add_tradeoff_command);
     add(add_bench_command);
     try {
         app.parse(argc, argv);

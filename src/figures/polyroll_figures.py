@@ -84,7 +84,8 @@ def facets(rows, exclude):
 def panel_grid(n, width=4.2, height=3.3, max_cols=4):
     cols = min(max_cols, max(1, n))
     rows = max(1, math.ceil(n / cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(width * cols, height * rows + 0.6), squeeze=False)
+    fig, axes = plt.subplots(rows, cols, figsize=(width * cols, height * rows + 0.8), squeeze=False,
+                             layout="constrained")
     for ax in axes.flat[n:]:
         ax.set_visible(False)
     return fig, list(axes.flat[:n])
@@ -144,15 +145,24 @@ def distance_vs_angle(rows, out):
                 xs = np.linspace(x.min(), x.max(), 50)
                 ax.plot(xs, slope * xs + intercept, "--", color=colour, lw=1)
                 label += f": slope {slope:.3g} m/deg"
-            ax.errorbar(angles, mean, yerr=sd, fmt="o", ms=4, capsize=2, color=colour, label=label)
+            ax.errorbar(angles, mean, yerr=sd, fmt="none", capsize=2, color=colour)
+            # Filled: the polygon rolled, then stopped (the third behaviour); hollow: it stopped at its
+            # first impact.
+            filled = [a in rolled for a in angles]
+            for want, face in ((True, colour), (False, "white")):
+                xs = [a for a, f in zip(angles, filled) if f == want]
+                if xs:
+                    ys = [m for m, f in zip(mean, filled) if f == want]
+                    first = want or not any(filled)
+                    ax.plot(xs, ys, "o", ms=5, color=colour, mfc=face, label=label if first else None)
         ax.set_title(panel_title(keys, values), fontsize=9)
         ax.set_xlabel("ramp angle theta (deg)")
         ax.set_ylabel("distance before stopping D (m)")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
     fig.suptitle("Distance before stopping against ramp angle, per material (dashed: linear fit)\n"
-                 f"runs that stopped only; {seeds_note(rows)}", fontsize=10)
-    fig.tight_layout()
+                 f"filled: rolled, then stopped; hollow: stopped at the first impact; runs that rolled to the end are not "
+                 f"shown; {seeds_note(rows)}", fontsize=10)
     path = os.path.join(out, "distance_vs_angle.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -190,8 +200,6 @@ def terminal_velocity_vs_fill(rows, out):
     if len(all_angles) > 8:
         sm = matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap)
         fig.colorbar(sm, ax=axes, label="ramp angle theta (deg)", shrink=0.8)
-    else:
-        fig.tight_layout()
     fig.suptitle("Terminal velocity against fill ratio (runs that rolled to the end)\n" + seeds_note(rows), fontsize=10)
     path = os.path.join(out, "terminal_velocity_vs_fill.png")
     fig.savefig(path, dpi=110)
@@ -251,9 +259,10 @@ def behaviour_map(rows, out):
                if b in present]
     handles.append(matplotlib.patches.Patch(facecolor="white", edgecolor="grey", hatch="////",
                                             label="seeds disagree (majority shown)"))
-    fig.legend(handles=handles, loc="lower center", ncol=min(4, len(handles)), fontsize=8)
+    visible = [ax for ax in axes if ax.get_visible()]
+    if visible:
+        visible[-1].legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8)
     fig.suptitle("Which behaviour occurs where, over fill ratio and ramp angle", fontsize=10)
-    fig.tight_layout(rect=(0, 0.08, 1, 0.95))
     path = os.path.join(out, "behaviour_map.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -324,32 +333,42 @@ def tradeoff_figure(args):
     metrics = [("distance_error", "mean relative error in distance D"),
                ("velocity_error", "mean relative error in terminal velocity Vt"),
                ("behaviour_error", "share of scenes with the wrong behaviour")]
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 5.2), layout="constrained")
     markers = {"grains": "o", "segments": "s", "rigid": "^"}
+    # The yardsticks are lines, not choices: the second seed (the spread a different packing gives)
+    # and the reference with its step halved (the reference's own error).
+    yardsticks = {"seed 2": ("seed-to-seed spread (standard)", ":"), "halved": ("reference vs its step halved", "--")}
     for ax, (col, label) in zip(axes, metrics):
         pts, keep = [], []
         for r in rows:
             c, e = num(r["wall_time_s"]), num(r[col])
-            if math.isfinite(c) and math.isfinite(e):
-                pts.append((c, e))
-                keep.append(r)
+            if not (math.isfinite(c) and math.isfinite(e)) or r["variant"] == "reference":
+                continue
+            if r["variant"] in yardsticks:
+                text, style = yardsticks[r["variant"]]
+                ax.axhline(e, ls=style, color="grey", lw=1, label=f"{text}: {e:.3g}")
+                continue
+            pts.append((max(c, 1e-5), e))
+            keep.append(r)
         for (c, e), r in zip(pts, keep):
             ax.plot(c, e, markers.get(r["model"], "o"), ms=7, color="#4477aa" if r["model"] == "grains" else "#ee6677",
                     mfc="white" if r["variant"] == "coarse" else None)
-            ax.annotate(r["label"], (c, e), fontsize=7, xytext=(4, 3), textcoords="offset points")
+            short = r["label"].replace("standard, coarse ", "coarse ")
+            ax.annotate(short, (c, e), fontsize=7, xytext=(5, 4), textcoords="offset points")
         front = pareto(pts)
         if front:
-            ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "-", color="grey", lw=1, zorder=0,
+            ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "-", color="grey", lw=1, zorder=0)
+            ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "o", ms=14, mfc="none", color="grey",
                     label="Pareto front")
-            ax.plot([pts[i][0] for i in front], [pts[i][1] for i in front], "o", ms=13, mfc="none", color="grey")
         ax.set_xscale("log")
         ax.set_xlabel("mean wall time per run (s, one core)")
         ax.set_ylabel(label)
+        ax.set_ylim(bottom=0)
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=7)
-    fig.suptitle("Error against cost, one point per model and preset, against the converged reference "
-                 "(grains, reference preset); circled: the Pareto front", fontsize=10)
-    fig.tight_layout()
+        ax.legend(fontsize=7, loc="best")
+    fig.suptitle("Error against cost, one point per model and preset, against the reference (grains, reference "
+                 "preset, seed 1). Circles: grains (hollow: coarser grains, same fill mass); square: segments; "
+                 "triangle: rigid", fontsize=10)
     fig.savefig(args.out, dpi=110)
     plt.close(fig)
     print(args.out)

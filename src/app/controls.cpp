@@ -1,0 +1,133 @@
+// The panel's controls and their mapping to scene parameters: see controls.h.
+#include "app/controls.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "app/sandbox_settings.h"
+#include "sim/assets.h"
+#include "sim/errors.h"
+#include "sim/scene_json.h"
+
+namespace polyroll::app {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+
+double clamp_finite(double v, double lo, double hi) {
+    if (std::isnan(v)) return lo;  // a NaN from a typed field: the lowest valid value, never NaN
+    return std::clamp(v, lo, hi);
+}
+
+// The preset's values; throws InputError naming the choices for an unknown name.
+const json& values_of(assets::Kind kind, const std::string& name) { return assets::preset_values(kind, name); }
+
+}  // namespace
+
+void set_polygon(LaneControls& c, const std::string& preset) {
+    const json& v = values_of(assets::Kind::polygon, preset);
+    c.polygon = preset;
+    c.sides = std::clamp(v.at("sides").get<int>(), kSidesMin, kSidesMax);
+}
+void set_sides(LaneControls& c, int sides) { c.sides = std::clamp(sides, kSidesMin, kSidesMax); }
+void set_fill_ratio(LaneControls& c, double ratio) { c.fill_ratio = clamp_finite(ratio, kFillMin, kFillMax); }
+void set_material(LaneControls& c, const std::string& preset) {
+    const json& v = values_of(assets::Kind::material, preset);
+    c.material = preset;
+    c.grain_friction = clamp_finite(v.at("friction").get<double>(), kFrictionMin, kFrictionMax);
+    c.grain_restitution = clamp_finite(v.at("restitution").get<double>(), kRestitutionMin, kRestitutionMax);
+}
+void set_grain_friction(LaneControls& c, double f) { c.grain_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }
+void set_grain_restitution(LaneControls& c, double e) {
+    c.grain_restitution = clamp_finite(e, kRestitutionMin, kRestitutionMax);
+}
+
+void set_ramp(SharedControls& c, const std::string& preset) {
+    const json& v = values_of(assets::Kind::ramp, preset);
+    c.ramp = preset;
+    c.ramp_friction = clamp_finite(v.at("friction").get<double>(), kFrictionMin, kFrictionMax);
+    c.ramp_restitution = clamp_finite(v.at("restitution").get<double>(), kRestitutionMin, kRestitutionMax);
+}
+void set_angle_deg(SharedControls& c, double a) { c.angle_deg = clamp_finite(a, kAngleMinDeg, kAngleMaxDeg); }
+void set_ramp_friction(SharedControls& c, double f) { c.ramp_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }
+void set_ramp_restitution(SharedControls& c, double e) {
+    c.ramp_restitution = clamp_finite(e, kRestitutionMin, kRestitutionMax);
+}
+void set_release_pose(SharedControls& c, ReleasePose pose) { c.pose = pose; }
+void set_model(SharedControls& c, Model model) { c.model = model; }
+void set_fidelity(SharedControls& c, const std::string& preset) {
+    values_of(assets::Kind::fidelity, preset);  // checks the name
+    c.fidelity = preset;
+}
+
+LaneControls lane_controls_from(const Scene& s) {
+    LaneControls c;
+    c.polygon = s.shell.preset;
+    c.sides = s.shell.sides;
+    c.fill_ratio = s.fill.ratio;
+    c.material = s.fill.material.preset;
+    c.grain_friction = s.fill.material.friction;
+    c.grain_restitution = s.fill.material.restitution;
+    return c;
+}
+
+SharedControls shared_controls_from(const Scene& s) {
+    SharedControls c;
+    c.ramp = s.ramp.preset;
+    c.angle_deg = s.ramp.angle_deg;
+    c.ramp_friction = s.ramp.friction;
+    c.ramp_restitution = s.ramp.restitution;
+    c.pose = s.release.pose;
+    c.model = s.run.model;
+    c.fidelity = s.fidelity.preset;
+    return c;
+}
+
+json controls_layer(const LaneControls& lane, const SharedControls& shared) {
+    // A preset name only when there is one: a scene file with a custom section has none, and its
+    // values then stay as the base document gave them.
+    auto with_preset = [](const std::string& preset) {
+        json j = json::object();
+        if (!preset.empty()) j["preset"] = preset;
+        return j;
+    };
+    json doc = json::object();
+    json shell = with_preset(lane.polygon);
+    shell["sides"] = lane.sides;
+    doc["shell"] = shell;
+    json material = with_preset(lane.material);
+    material["friction"] = lane.grain_friction;
+    material["restitution"] = lane.grain_restitution;
+    doc["fill"] = json{{"ratio", lane.fill_ratio}, {"material", material}};
+    json ramp = with_preset(shared.ramp);
+    ramp["angle_deg"] = shared.angle_deg;
+    ramp["friction"] = shared.ramp_friction;
+    ramp["restitution"] = shared.ramp_restitution;
+    doc["ramp"] = ramp;
+    doc["release"] = json{{"pose", to_string(shared.pose)}};
+    if (!shared.fidelity.empty()) doc["fidelity"] = json{{"preset", shared.fidelity}};
+    doc["run"] = json{{"model", to_string(shared.model)}};
+    return doc;
+}
+
+Scene lane_scene(const json& base, const LaneControls& lane, const SharedControls& shared) {
+    return resolve_scene({SceneLayer{base, "sandbox preset", {}}, SceneLayer{controls_layer(lane, shared), "panel", {}}});
+}
+
+ReleasePose release_pose_from(const std::string& name) {
+    if (name == "vertex") return ReleasePose::vertex;
+    if (name == "face") return ReleasePose::face;
+    throw InputError(fmt::format("release pose '{}' is unknown (allowed: vertex, face)", name));
+}
+
+Model model_from(const std::string& name) {
+    if (name == "grains") return Model::grains;
+    if (name == "segments") return Model::segments;
+    if (name == "rigid") return Model::rigid;
+    throw InputError(fmt::format("model '{}' is unknown (allowed: grains, segments, rigid)", name));
+}
+
+}  // namespace polyroll::app

@@ -1,0 +1,104 @@
+// The live plots' data: see plot_data.h.
+#include "app/plot_data.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace polyroll::app {
+
+namespace {
+
+double value_of(const TrajectorySample& t, Series which) {
+    switch (which) {
+        case Series::speed: return t.speed_m_s;
+        case Series::kinetic: return t.kinetic_J;
+        case Series::potential: return t.potential_J;
+        case Series::dissipated: return t.dissipated_J;
+    }
+    return 0.0;
+}
+
+double last_time(const Measurements& m) { return m.trajectory.empty() ? 0.0 : m.trajectory.back().time_s; }
+
+}  // namespace
+
+double readable_ceil(double x, double floor) {
+    x = std::max(x, floor);
+    if (!(x > 0.0) || !std::isfinite(x)) return floor;
+    const double p = std::pow(10.0, std::floor(std::log10(x)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * p >= x * (1.0 - 1e-9)) return m * p;
+    return 10.0 * p;
+}
+
+// The time axis grows in steps of about an eighth of its length (11.4 s -> 12 s, not 20 s).
+double time_axis(double t) {
+    const double step = readable_ceil(std::max(t, 1.0) / 8.0, 0.125);
+    return std::max(1.0, std::ceil(t / step - 1e-9) * step);
+}
+
+PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
+    double t = 0.0, lo = 0.0, hi = 0.0;
+    for (const Measurements* m : lanes) {
+        t = std::max(t, last_time(*m));
+        for (const TrajectorySample& s : m->trajectory) {
+            if (!std::isfinite(s.speed_m_s)) continue;
+            lo = std::min(lo, s.speed_m_s);
+            hi = std::max(hi, s.speed_m_s);
+        }
+    }
+    PlotRange r;
+    r.t_max_s = time_axis(t);
+    r.y_max = readable_ceil(hi, 0.1);
+    r.y_min = lo < 0.0 ? -readable_ceil(-lo, 0.01) : 0.0;
+    return r;
+}
+
+PlotRange energy_range(const Measurements& m) {
+    double lo = 0.0, hi = 0.0;
+    for (const TrajectorySample& s : m.trajectory)
+        for (double v : {s.kinetic_J, s.potential_J, s.dissipated_J}) {
+            if (!std::isfinite(v)) continue;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    PlotRange r;
+    r.t_max_s = time_axis(last_time(m));
+    r.y_max = readable_ceil(hi, 0.001);
+    r.y_min = lo < 0.0 ? -readable_ceil(-lo, 0.001) : 0.0;
+    return r;
+}
+
+std::vector<PlotPoint> series(const Measurements& m, Series which, size_t max_points) {
+    std::vector<PlotPoint> out;
+    const size_t n = m.trajectory.size();
+    if (n == 0 || max_points == 0) return out;
+    const size_t stride = std::max<size_t>(1, (n + max_points - 1) / max_points);
+    for (size_t i = 0; i < n; i += stride) out.push_back({m.trajectory[i].time_s, value_of(m.trajectory[i], which)});
+    if ((n - 1) % stride != 0) out.push_back({m.trajectory.back().time_s, value_of(m.trajectory.back(), which)});
+    return out;
+}
+
+std::vector<PlotPoint> impact_markers(const Measurements& m) {
+    std::vector<PlotPoint> out;
+    const auto& tr = m.trajectory;
+    for (const FaceImpact& f : m.impacts) {
+        auto it = std::lower_bound(tr.begin(), tr.end(), f.time_s,
+                                   [](const TrajectorySample& a, double t) { return a.time_s < t; });
+        double v = 0.0;
+        if (it == tr.end()) {
+            if (tr.empty()) continue;
+            v = tr.back().speed_m_s;
+        } else if (it == tr.begin() || it->time_s == f.time_s) {
+            v = it->speed_m_s;
+        } else {
+            const TrajectorySample& a = *(it - 1);
+            const double w = (f.time_s - a.time_s) / (it->time_s - a.time_s);
+            v = a.speed_m_s + w * (it->speed_m_s - a.speed_m_s);
+        }
+        out.push_back({f.time_s, v});
+    }
+    return out;
+}
+
+}  // namespace polyroll::app

@@ -1,0 +1,46 @@
+// Lane readouts as text: see readouts.h.
+#include "app/readouts.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "render/overlay.h"
+
+namespace polyroll::app {
+
+std::string behaviour_label(Behaviour b) {
+    switch (b) {
+        case Behaviour::running: return "rolling";
+        case Behaviour::stopped_at_first_impact: return "stopped at 1st impact";
+        case Behaviour::stopped: return "stopped";
+        case Behaviour::rolled_to_end: return "rolled to the end";
+        case Behaviour::time_limit: return "time limit reached";
+        case Behaviour::diverged: return "diverged";
+    }
+    return "unknown";
+}
+
+LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s) {
+    LaneReadout r;
+    const std::string fill = scene.fill.ratio > 0.0
+                                 ? fmt::format("r = {:g} {}", scene.fill.ratio, render::material_label(scene.fill.material.preset))
+                                 : std::string("empty");
+    r.title = fmt::format("n = {}, {}", scene.shell.sides, fill);
+    r.polygon = fmt::format("n = {}", scene.shell.sides);
+    r.fill = scene.fill.ratio > 0.0 ? fmt::format("{:g} {}", scene.fill.ratio, render::material_label(scene.fill.material.preset))
+                                    : std::string("empty");
+    const TrajectorySample now = m.trajectory.empty() ? TrajectorySample{} : m.trajectory.back();
+    r.time = fmt::format("{:.2f} s", time_s);
+    r.position = fmt::format("{:.3f} m", now.position_m);
+    // A speed that rounds to zero shows as 0.00, not -0.00.
+    r.speed = fmt::format("{:.2f} m/s", std::fabs(now.speed_m_s) < 0.005 ? 0.0 : now.speed_m_s);
+    r.impacts = fmt::format("{}", m.impacts.size());
+    r.behaviour = behaviour_label(m.behaviour);
+    const bool ended = m.behaviour != Behaviour::running;
+    r.distance = ended ? fmt::format("{:.3f} m", m.distance_m) : std::string("-");
+    r.terminal = m.terminal_velocity_m_s ? fmt::format("{:.3f} m/s", *m.terminal_velocity_m_s) : std::string("-");
+    return r;
+}
+
+}  // namespace polyroll::app

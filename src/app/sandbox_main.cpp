@@ -1,0 +1,473 @@
+// polyroll-sandbox: the interactive window. Parses the flags, opens the window (or, with no display,
+// hands over to the headless render), and runs the loop: physics in fixed steps at its real rate
+// within a per-frame budget, the scene drawn by the project's renderer, the panels by Dear ImGui.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <regex>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "app/divergence.h"
+#include "app/export_files.h"
+#include "app/headless_fallback.h"
+#include "app/lane_set.h"
+#include "app/readouts.h"
+#include "app/sandbox_presets.h"
+#include "app/sandbox_settings.h"
+#include "app/sandbox_state.h"
+#include "app/sandbox_ui.h"
+#include "app/sandbox_window.h"
+#include "app/scene_view.h"
+#include "app/sim_clock.h"
+#include "render/font.h"
+#include "render/gl_renderer.h"
+#include "render/png_writer.h"
+#include "sim/errors.h"
+
+namespace polyroll::app {
+namespace {
+
+namespace fs = std::filesystem;
+using SteadyClock = std::chrono::steady_clock;
+
+constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
+constexpr long kMaxFrames = 10'000'000;
+constexpr long kDefaultBenchFrames = 600;  // 10 s at 60 frames/s: long enough for a stable mean
+constexpr const char* kBenchPreset = "hexagon-large-rice";  // the issue: the largest of the experiment's scenes
+
+double now_s() {
+    static const SteadyClock::time_point start = SteadyClock::now();
+    return std::chrono::duration<double>(SteadyClock::now() - start).count();
+}
+
+struct Options {
+    std::string preset;
+    std::string screenshot;
+    long frames = 0;
+    bool bench = false;
+    std::string out = kDefaultOutDir;
+    std::string size = fmt::format("{}x{}", kDefaultWidthPx, kDefaultHeightPx);
+    float ui_scale = kDefaultUiScale;
+    bool follow = false;
+    std::string colour_by = "material";
+    bool paused = false;
+    // Parsed.
+    int width_px = kDefaultWidthPx, height_px = kDefaultHeightPx;
+    bool capture() const { return frames > 0 && !bench; }
+};
+
+void check(Options& o) {
+    static const std::regex pattern(R"(\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*)");
+    std::smatch m;
+    const std::string allowed = "allowed: WIDTHxHEIGHT, 640..7680 by 480..4320, e.g. 1280x800";
+    if (!std::regex_match(o.size, m, pattern)) throw InputError(fmt::format("--size {}: not a size ({})", o.size, allowed));
+    o.width_px = std::stoi(m[1]);
+    o.height_px = std::stoi(m[2]);
+    if (o.width_px < 640 || o.width_px > 7680 || o.height_px < 480 || o.height_px > 4320)
+        throw InputError(fmt::format("--size {}: out of range ({})", o.size, allowed));
+    if (o.frames < 0 || o.frames > kMaxFrames)
+        throw InputError(fmt::format("--frames {}: out of range (allowed: 1 to {})", o.frames, kMaxFrames));
+    if (!o.screenshot.empty() && o.frames == 0)
+        throw InputError(fmt::format("--screenshot {}: needs --frames N (the frame after which it is taken)", o.screenshot));
+    if (!(o.ui_scale >= kUiScaleMin && o.ui_scale <= kUiScaleMax))
+        throw InputError(fmt::format("--ui-scale {:g}: out of range (allowed: {:g} to {:g})", o.ui_scale, kUiScaleMin,
+                                     kUiScaleMax));
+    if (o.colour_by != "material" && o.colour_by != "speed")
+        throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
+    if (!o.screenshot.empty()) {
+        const fs::path parent = fs::absolute(o.screenshot).parent_path();
+        std::error_code ec;
+        if (!fs::is_directory(parent, ec))
+            throw InputError(fmt::format("--screenshot {}: the folder {} does not exist", o.screenshot, parent.string()));
+    }
+    if (o.preset.empty()) o.preset = o.bench ? kBenchPreset : kDefaultSandboxPreset;
+}
+
+void write_screenshot(Window& win, const fs::path& path) {
+    int w = 0, h = 0;
+    const std::vector<std::uint8_t> pixels = win.read_back_buffer(w, h);
+    render::write_file_whole(path, render::encode_png({pixels.data(), w, h, 4, true}));
+}
+
+// Frame-time statistics for --bench.
+struct BenchStats {
+    std::vector<double> frame_s, physics_s;
+    double sim_start_s = 0.0, wall_start_s = 0.0;
+    double running_wall_s = 0.0;  // wall time of the frames that began with a lane still running
+    long steps = 0;
+    void print(const LaneSet& lanes, double sim_end_s, double wall_end_s, const std::string& preset,
+               const std::string& gl, double build_s) const {
+        if (frame_s.empty()) return;
+        std::vector<double> sorted = frame_s;
+        std::sort(sorted.begin(), sorted.end());
+        auto pct = [&](double p) { return sorted[std::min(sorted.size() - 1, static_cast<size_t>(p * sorted.size()))]; };
+        double total = 0, phys = 0;
+        for (double f : frame_s) total += f;
+        for (double p : physics_s) phys += p;
+        const double n = static_cast<double>(frame_s.size());
+        int grains = 0;
+        for (size_t i = 0; i < lanes.size(); ++i) grains += lanes.lane(i).grains();
+        const double sim = sim_end_s - sim_start_s, wall = wall_end_s - wall_start_s;
+        // The real-time ratio counts only the frames in which something was still running.
+        const double rt_wall = running_wall_s > 0 ? running_wall_s : wall;
+        fmt::print("polyroll-sandbox --bench: preset {}, {} lane(s), {} grains, fidelity {}, GL {}\n", preset,
+                   lanes.size(), grains, lanes.lane(0).scene().fidelity.preset, gl);
+        fmt::print("  build        {:.2f} s (pouring and settling, on a worker thread)\n", build_s);
+        fmt::print("  frames       {} in {:.2f} s: {:.1f} frames/s\n", frame_s.size(), wall, n / wall);
+        fmt::print("  frame time   mean {:.2f} ms, median {:.2f} ms, 95th percentile {:.2f} ms, max {:.2f} ms\n",
+                   1e3 * total / n, 1e3 * pct(0.5), 1e3 * pct(0.95), 1e3 * sorted.back());
+        fmt::print("  physics      {:.2f} ms per frame (budget {:.0f} ms), {} tracker steps\n", 1e3 * phys / n,
+                   1e3 * kPhysicsBudgetPerFrameS, steps);
+        fmt::print("  drawing      {:.2f} ms per frame (scene draw list, GL, ImGui, swap)\n", 1e3 * (total - phys) / n);
+        fmt::print("  simulated    {:.3f} s in {:.2f} s of wall time while running: {:.2f}x real time (physics alone "
+                   "{:.2f}x){}\n",
+                   sim, rt_wall, sim / rt_wall, phys > 0 ? sim / phys : 0.0,
+                   lanes.all_finished() ? ", then the run ended" : "");
+        const bool met = n / wall >= 59.0 && sim / rt_wall >= kKeepingUpShare;
+        fmt::print("  target       60 frames/s at real time: {}\n", met ? "met" : "not met");
+    }
+};
+
+class Sandbox {
+public:
+    Sandbox(Window& win, SandboxState state, const Options& o) : win_(win), s_(std::move(state)), o_(o) {
+        ctx_.lanes = &lanes_;
+        ctx_.clock = &clock_;
+    }
+
+    int run() {
+        apply_controls();
+        double build_s = 0.0;
+        if (o_.capture() || o_.bench) {
+            // A capture or a benchmark starts from the built scene, whatever the machine's speed.
+            const double t0 = now_s();
+            lanes_.wait_until_built();
+            build_s = now_s() - t0;
+            clock_.restart(0.0);
+            if (!lanes_.build_error().empty()) {
+                fmt::print(stderr, "polyroll-sandbox: the scene could not be built: {}\n", lanes_.build_error());
+                return kExitFailure;
+            }
+        }
+        const long frames = o_.bench && o_.frames == 0 ? kDefaultBenchFrames : o_.frames;
+        BenchStats bench;
+        bench.wall_start_s = now_s();
+        double last = now_s();
+        long frame = 0;
+        while (!win_.should_close()) {
+            const double t0 = now_s();
+            const double wall_dt = frame == 0 ? 0.0 : t0 - last;
+            last = t0;
+            const bool final_frame = frames > 0 && frame + 1 >= frames;
+            const bool was_running = lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble();
+            const double physics_s = frame_once(wall_dt, final_frame && !o_.screenshot.empty());
+            ++frame;
+            if (o_.bench) {
+                bench.frame_s.push_back(now_s() - t0);
+                if (was_running) bench.running_wall_s += now_s() - t0;
+                bench.physics_s.push_back(physics_s);
+            }
+            if (final_frame) break;
+            if (!o_.capture() && !o_.bench) {
+                // Without vsync (Xvfb, some drivers) do not spin a core drawing frames nobody sees.
+                const double left = 1.0 / kFrameRateCapHz - (now_s() - t0);
+                if (left > 0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
+            }
+        }
+        if (o_.bench) {
+            bench.steps = steps_;
+            bench.print(lanes_, lanes_.time_s(), now_s(), s_.preset, win_.gl_renderer(), build_s);
+        }
+        if (o_.capture()) {
+            fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
+                       lanes_.time_s(), lanes_.trouble() ? ", stopped by numerical trouble" : "",
+                       o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
+            if (lanes_.trouble()) fmt::print("  {}\n", *lanes_.trouble());
+        }
+        return kExitOk;
+    }
+
+private:
+    // One window frame; returns the wall time spent on physics.
+    double frame_once(double wall_dt, bool screenshot_after) {
+        win_.set_ui_scale(s_.ui_scale);
+        win_.set_high_contrast(s_.high_contrast);
+        win_.begin_frame();
+        if (lanes_.poll()) clock_.restart(0.0);
+        clock_.set_slow_divisor(kSlowMotionDivisors[static_cast<size_t>(s_.slow_index)]);
+
+        const double p0 = now_s();
+        step_physics(wall_dt);
+        const double physics_s = now_s() - p0;
+
+        const ImGuiIO& io = ImGui::GetIO();
+        const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, s_.ui_scale);
+        UiRequests req;
+        read_shortcuts(s_, req);
+        ctx_.running_to_end = running_to_end_;
+        ctx_.large_font = win_.large_font();
+        draw_control_panel(s_, ctx_, L, req);
+        draw_readouts_and_plots(s_, ctx_, L);
+        draw_status(s_, ctx_, L);
+
+        int fb_w = 0, fb_h = 0;
+        win_.framebuffer_size(fb_w, fb_h);
+        const float ratio = win_.pixel_ratio();
+        // The scene fills the rest, below the status line (which would cover the top of the ramp).
+        const float top = kBaseFontPx * s_.ui_scale * kStatusLines;
+        const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
+                                  std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
+        handle_mouse(area, ratio);
+        draw_scene(fb_w, fb_h, area, ratio);
+        const bool any_active = ImGui::IsAnyItemActive();
+        win_.render_ui();
+        if (screenshot_after) write_screenshot(win_, o_.screenshot);
+        if (req.screenshot) save_screenshot();
+        win_.swap();
+        carry_out(req, any_active);
+        return physics_s;
+    }
+
+    void step_physics(double wall_dt) {
+        if (!lanes_.ready() || lanes_.trouble()) return;
+        if (running_to_end_) {
+            if (!lanes_.all_finished()) {
+                const AdvanceResult r =
+                    lanes_.advance_to(std::numeric_limits<double>::infinity(), kRunToEndBudgetPerFrameS, now_s);
+                steps_ += r.steps;
+            }
+            if (lanes_.all_finished() || lanes_.trouble()) {
+                running_to_end_ = false;
+                s_.playing = false;
+            }
+            clock_.restart(lanes_.time_s());
+            return;
+        }
+        if (!s_.playing || lanes_.all_finished()) return;
+        // A capture advances a fixed 1/60 s per frame with no budget, so it shows the same moment on any
+        // machine; the window and the benchmark keep real time within the budget.
+        const double dt = o_.capture() ? kCaptureFrameDtS : wall_dt;
+        const double budget = o_.capture() ? std::numeric_limits<double>::infinity() : kPhysicsBudgetPerFrameS;
+        clock_.advance(dt);
+        const AdvanceResult r = lanes_.advance_to(clock_.target_s(), budget, now_s);
+        steps_ += r.steps;
+        clock_.frame_done(dt, r.reached_s, r.budget_hit);
+    }
+
+    void handle_mouse(const render::PxRect& area, float ratio) {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (io.WantCaptureMouse) return;
+        const render::Px at{io.MousePos.x * ratio, io.MousePos.y * ratio};
+        const bool inside = at.x >= area.x && at.x < area.x + area.width && at.y >= area.y && at.y < area.y + area.height;
+        if (!inside) return;
+        if (io.MouseWheel != 0.0f) view_.zoom_at(at, std::pow(1.15, static_cast<double>(io.MouseWheel)), area);
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f))
+            view_.pan_by(io.MouseDelta.x * ratio, io.MouseDelta.y * ratio);
+    }
+
+    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio) {
+        const float unit = s_.ui_scale * ratio;
+        if (!atlas_ || atlas_unit_ != unit) {
+            atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
+            atlas_unit_ = unit;
+        }
+        // The last finite snapshots are kept: a lane whose state turns to NaN stops the run, and the
+        // picture stays the last sound one rather than garbage.
+        std::vector<std::string> labels;
+        if (lanes_.ready() && !running_to_end_) {
+            shown_.resize(lanes_.size());
+            for (size_t i = 0; i < lanes_.size(); ++i) {
+                render::Snapshot snap = lanes_.lane(i).snapshot();
+                if (snapshot_finite(snap)) shown_[i] = std::move(snap);
+                else lanes_.report_non_finite(i);
+                labels.push_back(lane_readout(lanes_.lane(i).scene(), lanes_.lane(i).measured(), 0).title);
+            }
+        } else if (!lanes_.ready()) {
+            shown_.clear();
+        }
+        SceneViewOptions vo;
+        vo.width_px = fb_w;
+        vo.height_px = fb_h;
+        vo.area = area;
+        vo.unit = unit;
+        vo.follow = s_.follow;
+        vo.colouring = s_.colouring;
+        vo.colour_speed_max_m_s = kDefaultColourSpeedMax_m_s;
+        vo.view = view_;
+        vo.close_up_lane = s_.selected_lane;
+        const std::vector<render::Snapshot> none;
+        gl_.draw(build_scene_view(running_to_end_ ? none : shown_, labels, vo, *atlas_));
+        (void)ratio;
+    }
+
+    void apply_controls() {
+        try {
+            lanes_.rebuild(scenes_for(s_));
+            ctx_.control_error.clear();
+            running_to_end_ = false;
+            clock_.restart(0.0);
+        } catch (const std::exception& e) {
+            ctx_.control_error = fmt::format("Not applied: {}", e.what());
+        }
+        s_.changes_pending = false;
+    }
+
+    void save_screenshot() {
+        try {
+            fs::create_directories(o_.out);
+            const fs::path p = next_numbered(o_.out, "screenshot", ".png");
+            write_screenshot(win_, p);
+            ctx_.last_saved = p.string();
+        } catch (const std::exception& e) {
+            ctx_.last_saved = fmt::format("screenshot failed: {}", e.what());
+        }
+    }
+
+    void export_run() {
+        if (!lanes_.ready()) return;
+        try {
+            fs::create_directories(o_.out);
+            std::vector<RunResult> runs;
+            for (size_t i = 0; i < lanes_.size(); ++i) runs.push_back(lanes_.lane(i).result());
+            const fs::path folder = next_numbered(o_.out, "run", "");
+            export_runs(folder, runs);
+            ctx_.last_saved = folder.string();
+        } catch (const std::exception& e) {
+            ctx_.last_saved = fmt::format("export failed: {}", e.what());
+        }
+    }
+
+    void carry_out(const UiRequests& req, bool any_item_active) {
+        if (req.load_preset) {
+            try {
+                load_preset(s_, *req.load_preset);
+                view_.reset();
+                apply_controls();
+            } catch (const std::exception& e) {
+                ctx_.control_error = e.what();
+            }
+        }
+        if (req.controls_changed) s_.changes_pending = true;
+        // A slider applies when it is let go, not at every pixel of the drag.
+        if (s_.changes_pending && s_.restart_on_change && !any_item_active) apply_controls();
+        if (req.reset) apply_controls();
+        if (req.toggle_play) {
+            if (lanes_.all_finished() || lanes_.trouble()) {
+                apply_controls();
+                s_.playing = true;
+            } else {
+                s_.playing = !s_.playing;
+                clock_.restart(lanes_.time_s());
+            }
+        }
+        if (req.step && lanes_.ready() && !lanes_.trouble()) {
+            s_.playing = false;
+            lanes_.advance_to(lanes_.time_s() + kSingleStepS, std::numeric_limits<double>::infinity(), now_s);
+            clock_.restart(lanes_.time_s());
+        }
+        if (req.run_to_end && lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble()) running_to_end_ = true;
+        if (req.export_run) export_run();
+        if (req.reset_view) view_.reset();
+    }
+
+    Window& win_;
+    SandboxState s_;
+    Options o_;
+    LaneSet lanes_;
+    SimClock clock_;
+    UiContext ctx_;
+    ViewTransform view_;
+    render::GlRenderer gl_;
+    std::unique_ptr<render::FontAtlas> atlas_;
+    float atlas_unit_ = 0.0f;
+    std::vector<render::Snapshot> shown_;
+    bool running_to_end_ = false;
+    long steps_ = 0;
+};
+
+int sandbox_main(int argc, char** argv) {
+    Options o;
+    CLI::App cli{"polyroll-sandbox: the interactive sandbox. Pick a polygon, drag the fill slider, and watch it stop "
+                 "or roll to the end, with the speed and energy plotted live; race up to four polygons side by side."};
+    cli.footer(
+        "Keys: Space play/pause, Right step, R reset, G run to the end, F follow, C grain colours, S screenshot,\n"
+        "E export the run's files, [ and ] slow motion, Home reset the view; drag to pan, scroll to zoom.\n"
+        "Without a display it renders the default scene headless instead (polyroll render).\n"
+        "Examples:\n"
+        "  polyroll-sandbox\n"
+        "  polyroll-sandbox --preset octagon-rice\n"
+        "  polyroll-sandbox --screenshot shot.png --frames 240   # run 240 frames, save the window, exit\n"
+        "  xvfb-run -a -s \"-screen 0 1280x800x24\" polyroll-sandbox --bench\n"
+        "Exit codes: 0 done, 2 bad input, 1 anything else (including no display for --screenshot or --bench).");
+    std::string presets_list;
+    for (const std::string& n : sandbox_preset_names()) presets_list += (presets_list.empty() ? "" : ", ") + n;
+    cli.add_option("--preset", o.preset, "sandbox preset (assets/sandbox-presets.json): " + presets_list);
+    cli.add_option("--screenshot", o.screenshot, "save the window as a PNG after --frames frames, then exit");
+    cli.add_option("--frames", o.frames,
+                   "run this many frames, then exit; each advances 1/60 s of simulated time (a capture shows the "
+                   "same moment on any machine)");
+    cli.add_flag("--bench", o.bench,
+                 "time the window's frames at real time (default preset hexagon-large-rice, 600 frames) and print "
+                 "the frame times");
+    cli.add_option("--out", o.out, fmt::format("folder for screenshots (S) and exported runs (E) (default {})", kDefaultOutDir));
+    cli.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x800)");
+    cli.add_option("--ui-scale", o.ui_scale, "size of text and controls, 0.75 to 2.5 (default 1)");
+    cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
+    cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
+    cli.add_flag("--paused", o.paused, "start paused");
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        return kExitBadInput;
+    }
+    SandboxState state;
+    try {
+        check(o);
+        state = state_for_preset(o.preset);
+    } catch (const InputError& e) {
+        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        return kExitBadInput;
+    }
+    state.follow = o.follow;
+    state.colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
+    state.ui_scale = o.ui_scale;
+    state.playing = !o.paused;
+
+    std::string why;
+    std::unique_ptr<Window> win = Window::open(o.width_px, o.height_px, !(o.capture() || o.bench), why);
+    if (!win) {
+        if (o.capture() || o.bench) {
+            fmt::print(stderr, "polyroll-sandbox: no display ({}); --screenshot, --frames and --bench need one: run under "
+                               "xvfb-run -a -s \"-screen 0 1280x800x24\"\n",
+                       why);
+            return kExitFailure;
+        }
+        return run_headless_instead(why);
+    }
+    Sandbox app(*win, std::move(state), o);
+    return app.run();
+}
+
+}  // namespace
+}  // namespace polyroll::app
+
+int main(int argc, char** argv) {
+    try {
+        return polyroll::app::sandbox_main(argc, argv);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,66 @@
+// Every default and limit of the sandbox window's own settings, in one place: the ranges its
+// controls clamp to, the transport's speeds, the real-time cap, the window and the theme. Scene
+// values (polygons, materials, ramps) stay in assets/; these are the window's choices, each with
+// its reason.
+#pragma once
+
+#include <array>
+
+namespace polyroll::app {
+
+// --- Control ranges. Clamping keeps every scene the panel makes valid (scene_validate.cpp has the
+// same limits), so a slider can never produce a scene the core refuses.
+inline constexpr int kSidesMin = 3, kSidesMax = 64;          // validate_scene: shell.sides
+inline constexpr double kFillMin = 0.0, kFillMax = 1.0;      // r is a share of the inside volume
+inline constexpr double kAngleMinDeg = 0.0, kAngleMaxDeg = 89.0;  // validate_scene: ramp.angle_deg
+// The slider spans the angles a class will use (the experiment ran 5-25 degrees; above about 15 the
+// polygons hop); Ctrl+click types any value up to kAngleMaxDeg.
+inline constexpr double kAngleSliderMaxDeg = 45.0;
+inline constexpr double kFrictionMin = 0.0, kFrictionMax = 2.0;        // validate_scene: *.friction
+inline constexpr double kRestitutionMin = 0.0, kRestitutionMax = 1.0;  // validate_scene: *.restitution
+inline constexpr int kMaxLanes = 4;  // the issue: up to four polygons racing
+
+// --- Transport. Slow motion halves the rate down to 1/16 (the issue's range).
+inline constexpr std::array<int, 5> kSlowMotionDivisors = {1, 2, 4, 8, 16};
+
+// The Step button advances this much simulated time: one frame of real-time playback (a single 1 ms
+// tracker step would not show).
+inline constexpr double kSingleStepS = 1.0 / 60.0;
+// Without vsync (e.g. under Xvfb) the window sleeps to this rate rather than spin a core.
+inline constexpr double kFrameRateCapHz = 60.0;
+
+// --- Real time. The physics runs in fixed tracker steps; each window frame takes as many as the
+// simulated time owes, but spends at most this much wall time on them, so a slow machine slows the
+// simulation down (and the window says so) instead of freezing the UI. 10 ms leaves about 6 ms of a
+// 60 frames/s frame for drawing.
+inline constexpr double kPhysicsBudgetPerFrameS = 0.010;
+// "Run to the end" draws no scene, so it may spend most of a frame on physics (the UI still answers).
+inline constexpr double kRunToEndBudgetPerFrameS = 0.200;
+// A stalled frame (window dragged, machine busy) owes at most this much simulated time.
+inline constexpr double kMaxFrameDtS = 0.1;
+// The simulated time a --frames capture advances per frame: a fixed 1/60 s, so a capture shows the
+// same moment on any machine.
+inline constexpr double kCaptureFrameDtS = 1.0 / 60.0;
+// The shown real-time ratio averages over about this long.
+inline constexpr double kRateWindowS = 1.0;
+// The window counts as keeping up while the simulated rate is at least this share of the chosen one.
+inline constexpr double kKeepingUpShare = 0.95;
+
+// --- Window and theme.
+inline constexpr int kDefaultWidthPx = 1280, kDefaultHeightPx = 800;  // a projector's 1280x800
+inline constexpr float kBaseFontPx = 18.0f;    // DejaVu Sans at UI scale 1: readable from the back row
+inline constexpr float kUiScaleMin = 0.75f, kUiScaleMax = 2.5f, kDefaultUiScale = 1.0f;
+inline constexpr float kPanelWidthPx = 400.0f;     // the control panel, at UI scale 1
+inline constexpr float kPlotsHeightShare = 0.36f;  // the readouts and plots strip, share of the height
+inline constexpr float kStatusLines = 2.6f;       // the status line over the scene, in base font heights
+inline constexpr double kDefaultColourSpeedMax_m_s = 1.0;  // grain speed at the top of the colour map
+
+// The projector theme's panel background (opaque, a pale blue-grey distinct from the scene's
+// off-white) and text: the smoke test looks for this colour where the panel is.
+inline constexpr std::array<int, 3> kPanelBackgroundRgb = {226, 232, 242};
+inline constexpr std::array<int, 3> kPanelTextRgb = {10, 10, 14};
+
+// Where screenshots and exported runs go unless --out says otherwise.
+inline constexpr const char* kDefaultOutDir = "runs/sandbox";
+
+}  // namespace polyroll::app

@@ -1,0 +1,49 @@
+// The sandbox's choices and the scenes they make: see sandbox_state.h.
+#include "app/sandbox_state.h"
+
+#include <algorithm>
+
+#include "app/sandbox_presets.h"
+
+namespace polyroll::app {
+
+void load_preset(SandboxState& s, const std::string& name) {
+    const SandboxPreset p = sandbox_preset(name);
+    const std::vector<Scene> scenes = resolve_preset(p);
+    s.preset = name;
+    s.lanes.clear();
+    for (size_t i = 0; i < scenes.size(); ++i) s.lanes.push_back({p.lanes[i], lane_controls_from(scenes[i])});
+    // The ramp, release and physics are shared: the first lane's.
+    s.shared = shared_controls_from(scenes.front());
+    s.selected_lane = 0;
+    s.changes_pending = false;
+}
+
+SandboxState state_for_preset(const std::string& name) {
+    SandboxState s;
+    load_preset(s, name);
+    return s;
+}
+
+std::vector<Scene> scenes_for(const SandboxState& s) {
+    std::vector<Scene> scenes;
+    for (const LaneChoice& lane : s.lanes) scenes.push_back(lane_scene(lane.base, lane.controls, s.shared));
+    return scenes;
+}
+
+bool add_lane(SandboxState& s) {
+    if (static_cast<int>(s.lanes.size()) >= kMaxLanes || s.lanes.empty()) return false;
+    const int from = std::clamp(s.selected_lane, 0, static_cast<int>(s.lanes.size()) - 1);
+    s.lanes.push_back(s.lanes[from]);
+    s.selected_lane = static_cast<int>(s.lanes.size()) - 1;
+    return true;
+}
+
+bool remove_lane(SandboxState& s, int index) {
+    if (s.lanes.size() <= 1 || index < 0 || index >= static_cast<int>(s.lanes.size())) return false;
+    s.lanes.erase(s.lanes.begin() + index);
+    s.selected_lane = std::clamp(s.selected_lane, 0, static_cast<int>(s.lanes.size()) - 1);
+    return true;
+}
+
+}  // namespace polyroll::app

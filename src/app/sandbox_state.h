@@ -1,0 +1,53 @@
+// What the sandbox's user has chosen, as plain data: the lanes (each a preset document plus its
+// controls), the shared controls, the transport and the view. The panel edits it; the loop turns
+// it into scenes (scenes_for) when a change is applied. No GLFW or ImGui here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/controls.h"
+#include "app/sandbox_settings.h"
+#include "render/frame_layout.h"
+#include "sim/scene.h"
+
+namespace polyroll::app {
+
+struct LaneChoice {
+    nlohmann::ordered_json base;  // the sandbox preset's scene document for this lane
+    LaneControls controls;
+};
+
+struct SandboxState {
+    std::string preset;                // the sandbox preset last loaded
+    std::vector<LaneChoice> lanes;     // 1 to kMaxLanes
+    SharedControls shared;
+    int selected_lane = 0;             // the lane the main controls edit
+
+    // Changes rebuild the scene and restart at once, or wait for Reset.
+    bool restart_on_change = true;
+    bool changes_pending = false;      // controls changed since the lanes were built
+
+    bool playing = true;
+    int slow_index = 0;                // into kSlowMotionDivisors
+    bool follow = false;
+    render::GrainColouring colouring = render::GrainColouring::material;
+    float ui_scale = kDefaultUiScale;
+    bool high_contrast = true;         // the projector theme
+};
+
+// A state showing the named sandbox preset (throws InputError for an unknown name).
+SandboxState state_for_preset(const std::string& name);
+// Loads another preset into an existing state, keeping the transport and view choices.
+void load_preset(SandboxState& s, const std::string& name);
+
+// Every lane's scene from the state; throws InputError for a combination out of range.
+std::vector<Scene> scenes_for(const SandboxState& s);
+
+// Lane management: a new lane copies the selected one; the last lane cannot be removed.
+bool add_lane(SandboxState& s);
+bool remove_lane(SandboxState& s, int index);
+
+}  // namespace polyroll::app

@@ -1,0 +1,629 @@
+// The sandbox's ImGui panels: see sandbox_ui.h.
+#include "app/sandbox_ui.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "app/plot_data.h"
+#include "app/readouts.h"
+#include "app/sandbox_presets.h"
+#include "app/scene_view.h"
+#include "render/world_draw.h"
+#include "sim/assets.h"
+#include "sim/errors.h"
+#include "sim/scene_json.h"
+
+namespace polyroll::app {
+
+namespace {
+
+ImU32 im_colour(render::Rgba c) { return ImGui::ColorConvertFloat4ToU32({c.r, c.g, c.b, c.a}); }
+ImVec4 im_vec(render::Rgba c) { return {c.r, c.g, c.b, c.a}; }
+
+const ImVec4 kErrorColour{0.75f, 0.05f, 0.05f, 1.0f};
+const ImVec4 kWarnColour{0.70f, 0.35f, 0.0f, 1.0f};
+
+// A tooltip for the last item: what the control is and its unit.
+void tip(const std::string& text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+std::string preset_description(assets::Kind kind, const std::string& name) {
+    try {
+        return assets::preset_entry(kind, name).value("description", name);
+    } catch (const std::exception&) {
+        return name;
+    }
+}
+
+// A combo over a preset kind; true when the choice changed.
+bool preset_combo(const char* label, assets::Kind kind, std::string& value) {
+    bool changed = false;
+    const std::string shown = value.empty() ? std::string("(custom)") : value;
+    if (ImGui::BeginCombo(label, shown.c_str())) {
+        for (const std::string& name : assets::preset_names(kind)) {
+            if (ImGui::Selectable(name.c_str(), name == value) && name != value) {
+                value = name;
+                changed = true;
+            }
+            tip(preset_description(kind, name));
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool slider_double(const char* label, double& v, double lo, double hi, const char* format) {
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format);
+}
+
+void heading(const char* text) {
+    ImGui::Spacing();
+    ImGui::TextDisabled("%s", text);
+    ImGui::Separator();
+}
+
+// The presets as a grid: one row per polygon, one button per material; the rest as plain buttons.
+void preset_buttons(SandboxState& s, UiRequests& req) {
+    static const std::vector<std::pair<std::string, std::string>> materials = {{"bb", "BBs"}, {"rice", "rice"},
+                                                                               {"peas", "peas"}};
+    std::vector<std::string> rows, others;
+    std::map<std::string, std::vector<std::string>> by_row;
+    for (const std::string& name : sandbox_preset_names()) {
+        bool matched = false;
+        for (const auto& [m, label] : materials) {
+            const std::string suffix = "-" + m;
+            if (name.size() > suffix.size() && name.ends_with(suffix)) {
+                const std::string row = name.substr(0, name.size() - suffix.size());
+                if (!by_row.count(row)) rows.push_back(row);
+                by_row[row].push_back(name);
+                matched = true;
+            }
+        }
+        if (!matched) others.push_back(name);
+    }
+    const float label_w = ImGui::GetFontSize() * 7.5f;
+    for (const std::string& row : rows) {
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(row.c_str());
+        bool first_in_row = true;
+        for (const auto& [m, label] : materials) {
+            const std::string name = row + "-" + m;
+            if (std::find(by_row[row].begin(), by_row[row].end(), name) == by_row[row].end()) continue;
+            // The first material button lines up in a column after the polygon names.
+            if (first_in_row) ImGui::SameLine(label_w);
+            else ImGui::SameLine();
+            first_in_row = false;
+            ImGui::PushID(name.c_str());
+            const bool current = s.preset == name;
+            if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            if (ImGui::Button(label.c_str())) req.load_preset = name;
+            if (current) ImGui::PopStyleColor();
+            tip(fmt::format("Preset '{}': {}", name, sandbox_preset(name).description));
+            ImGui::PopID();
+        }
+    }
+    bool first = true;
+    for (const std::string& name : others) {
+        if (!first) ImGui::SameLine();
+        first = false;
+        const bool current = s.preset == name;
+        if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        if (ImGui::Button(name.c_str())) req.load_preset = name;
+        if (current) ImGui::PopStyleColor();
+        tip(fmt::format("Preset '{}': {}", name, sandbox_preset(name).description));
+    }
+}
+
+void lane_controls(SandboxState& s, UiRequests& req) {
+    LaneControls& c = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
+    bool changed = false;
+    std::string polygon = c.polygon;
+    if (preset_combo("polygon", assets::Kind::polygon, polygon)) {
+        set_polygon(c, polygon);
+        changed = true;
+    }
+    tip("The experiment's polygon this lane's shell is built from (size, wall, mass); n below can change its "
+        "number of sides.");
+    int n = c.sides;
+    if (ImGui::SliderInt("n (sides)", &n, kSidesMin, 24)) {
+        set_sides(c, n);
+        changed = true;
+    }
+    tip(fmt::format("n: the number of sides of the hollow polygon, {} to {} (Ctrl+click to type more than 24).",
+                    kSidesMin, kSidesMax));
+    double r = c.fill_ratio;
+    if (slider_double("r (fill)", r, kFillMin, kFillMax, "%.2f")) {
+        set_fill_ratio(c, r);
+        changed = true;
+    }
+    tip("r: the share of the polygon's inside volume filled with grains, 0 (empty) to 1 (full). No unit.");
+    std::string material = c.material;
+    if (preset_combo("material", assets::Kind::material, material)) {
+        set_material(c, material);
+        changed = true;
+    }
+    tip("The grains filling the polygon (their size, density, friction and restitution come from the preset; "
+        "friction and restitution can be changed under Advanced).");
+    if (changed) req.controls_changed = true;
+}
+
+void shared_controls(SandboxState& s, UiRequests& req) {
+    SharedControls& c = s.shared;
+    bool changed = false;
+    double a = c.angle_deg;
+    if (slider_double("\u03B8 (angle)", a, kAngleMinDeg, kAngleSliderMaxDeg, "%.1f\u00B0")) {
+        set_angle_deg(c, a);
+        changed = true;
+    }
+    tip(fmt::format("\u03B8: the ramp's angle from horizontal, in degrees (all lanes). Ctrl+click to type up to "
+                    "{:g} degrees.",
+                    kAngleMaxDeg));
+    if (changed) req.controls_changed = true;
+}
+
+void physics_controls(SandboxState& s, UiRequests& req) {
+    SharedControls& c = s.shared;
+    bool changed = false;
+    std::string ramp = c.ramp;
+    if (preset_combo("ramp", assets::Kind::ramp, ramp)) {
+        set_ramp(c, ramp);
+        changed = true;
+    }
+    tip("The ramp all lanes roll on: its length, friction and restitution (wooden ramp 1.21 m, air track 2.54 m).");
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("release");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("on a vertex", c.pose == ReleasePose::vertex)) {
+        set_release_pose(c, ReleasePose::vertex);
+        changed = true;
+    }
+    tip("Held on a vertex with the centre straight above it, then let go (as in the experiment).");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("on a face", c.pose == ReleasePose::face)) {
+        set_release_pose(c, ReleasePose::face);
+        changed = true;
+    }
+    tip("Set down flat on a face, then let go.");
+    static const char* models[] = {"grains", "segments", "rigid"};
+    int m = static_cast<int>(c.model);
+    if (ImGui::Combo("model", &m, models, 3)) {
+        set_model(c, model_from(models[m]));
+        changed = true;
+    }
+    tip("How the physics is computed: grains (Box2D simulates the shell and every grain), segments (the fill as "
+        "rigid segments that re-level after each impact) or rigid (the fill frozen as at release). The reduced "
+        "models compute a whole run in under a millisecond and draw the shell only.");
+    std::string fidelity = c.fidelity;
+    if (preset_combo("fidelity", assets::Kind::fidelity, fidelity)) {
+        set_fidelity(c, fidelity);
+        changed = true;
+    }
+    tip("Time step and solver iterations: draft is fastest, reference the most accurate (and slowest).");
+    if (changed) req.controls_changed = true;
+}
+
+void advanced_controls(SandboxState& s, UiRequests& req) {
+    LaneControls& l = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
+    SharedControls& c = s.shared;
+    bool changed = false;
+    double v = l.grain_friction;
+    if (slider_double("grain friction", v, kFrictionMin, kFrictionMax, "%.2f")) {
+        set_grain_friction(l, v);
+        changed = true;
+    }
+    tip("Friction coefficient between grains (this lane), 0 to 2, no unit. Choosing a material resets it.");
+    v = l.grain_restitution;
+    if (slider_double("grain restitution", v, kRestitutionMin, kRestitutionMax, "%.2f")) {
+        set_grain_restitution(l, v);
+        changed = true;
+    }
+    tip("Restitution of grain impacts (on grains and walls; this lane), 0 (no bounce) to 1 (elastic), no unit.");
+    v = c.ramp_friction;
+    if (slider_double("ramp friction", v, kFrictionMin, kFrictionMax, "%.2f")) {
+        set_ramp_friction(c, v);
+        changed = true;
+    }
+    tip("Friction coefficient between the shell and the ramp (all lanes), 0 to 2, no unit. Choosing a ramp resets "
+        "it.");
+    v = c.ramp_restitution;
+    if (slider_double("ramp restitution", v, kRestitutionMin, kRestitutionMax, "%.2f")) {
+        set_ramp_restitution(c, v);
+        changed = true;
+    }
+    tip("Restitution of the shell's impacts on the ramp (all lanes), 0 to 1, no unit.");
+    if (changed) req.controls_changed = true;
+}
+
+void view_controls(SandboxState& s, UiRequests& req) {
+    ImGui::Checkbox("follow the polygon (F)", &s.follow);
+    tip("On: the camera follows the leading polygon, zoomed in. Off: the whole ramp. Drag to pan, scroll to zoom.");
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("grains by");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("material", s.colouring == render::GrainColouring::material))
+        s.colouring = render::GrainColouring::material;
+    tip("Grains coloured by their material (C toggles).");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("speed", s.colouring == render::GrainColouring::speed))
+        s.colouring = render::GrainColouring::speed;
+    tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles).",
+                    kDefaultColourSpeedMax_m_s));
+    float scale = s.ui_scale;
+    if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
+    tip("Size of the panel's text and the scene's labels, for a projector at the back of the room.");
+    ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
+    tip("Dark text on pale panels with strong borders; off: ImGui's dark theme.");
+    if (ImGui::Button("reset view (Home)")) req.reset_view = true;
+    tip("Undo panning and zooming.");
+}
+
+// A plot drawn with ImGui's draw list: axes with readable ticks, traces, markers, a legend.
+struct Trace {
+    std::vector<PlotPoint> points;
+    ImU32 colour;
+    std::string legend;
+};
+struct Markers {
+    std::vector<PlotPoint> points;
+    ImU32 colour;
+};
+
+void draw_plot(const char* title, const char* unit, const PlotRange& r, const std::vector<Trace>& traces,
+               const std::vector<Markers>& markers, ImVec2 size) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    ImGui::Dummy(size);
+    const float fs = ImGui::GetFontSize();
+    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+    const ImU32 grid = IM_COL32(205, 208, 215, 255);
+    const ImU32 axis = IM_COL32(60, 62, 66, 255);
+    // Plot area inside the labels.
+    const ImVec2 a0{p0.x + fs * 3.6f, p0.y + fs * 1.5f};
+    const ImVec2 a1{p0.x + size.x - fs * 0.6f, p0.y + size.y - fs * 1.5f};
+    if (a1.x <= a0.x + 10 || a1.y <= a0.y + 10) return;
+    dl->AddRectFilled(p0, {p0.x + size.x, p0.y + size.y}, IM_COL32(255, 255, 255, 255), 3.0f);
+    dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, fmt::format("{}: {} against time (s)", title, unit).c_str());
+    auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
+    auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
+    // Ticks: about five per axis, at 1, 2 or 5 times a power of ten.
+    const double t_step = render::nice_ceil(r.t_max_s / 5.0);
+    for (double t = 0.0; t <= r.t_max_s + 1e-9; t += t_step) {
+        dl->AddLine({X(t), a0.y}, {X(t), a1.y}, grid);
+        const std::string l = fmt::format("{:g}", std::round(t * 1000.0) / 1000.0);
+        dl->AddText({X(t) - ImGui::CalcTextSize(l.c_str()).x / 2, a1.y + fs * 0.15f}, text, l.c_str());
+    }
+    const double y_step = render::nice_ceil((r.y_max - r.y_min) / 4.0);
+    for (double v = std::ceil(r.y_min / y_step - 1e-9) * y_step; v <= r.y_max + 1e-9; v += y_step) {
+        dl->AddLine({a0.x, Y(v)}, {a1.x, Y(v)}, std::fabs(v) < 1e-12 ? axis : grid);
+        const double shown = std::fabs(v) < 1e-12 ? 0.0 : std::round(v * 1e4) / 1e4;  // never "-0"
+        const std::string l = fmt::format("{:g}", shown);
+        dl->AddText({a0.x - ImGui::CalcTextSize(l.c_str()).x - fs * 0.3f, Y(v) - fs / 2}, text, l.c_str());
+    }
+    dl->AddRect(a0, a1, axis, 0.0f, 0, 1.5f);
+    dl->PushClipRect(a0, a1, true);
+    const float thick = std::max(2.0f, fs * 0.14f);
+    for (const Trace& tr : traces) {
+        std::vector<ImVec2> pts;
+        pts.reserve(tr.points.size());
+        for (const PlotPoint& p : tr.points) pts.push_back({X(p.t_s), Y(p.y)});
+        if (pts.size() >= 2) dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), tr.colour, 0, thick);
+    }
+    for (const Markers& m : markers)
+        for (const PlotPoint& p : m.points) {
+            dl->AddCircleFilled({X(p.t_s), Y(p.y)}, fs * 0.28f, m.colour);
+            dl->AddCircle({X(p.t_s), Y(p.y)}, fs * 0.28f, axis, 0, 1.0f);
+        }
+    dl->PopClipRect();
+    // Legend, top right inside the plot.
+    float ly = a0.y + fs * 0.2f;
+    for (const Trace& tr : traces) {
+        if (tr.legend.empty()) continue;
+        const float w = ImGui::CalcTextSize(tr.legend.c_str()).x;
+        const ImVec2 at{a1.x - w - fs * 0.5f, ly};
+        dl->AddRectFilled({at.x - fs * 1.4f, ly}, {a1.x - fs * 0.2f, ly + fs * 1.1f}, IM_COL32(255, 255, 255, 220));
+        dl->AddLine({at.x - fs * 1.2f, ly + fs * 0.55f}, {at.x - fs * 0.3f, ly + fs * 0.55f}, tr.colour, thick);
+        dl->AddText(at, text, tr.legend.c_str());
+        ly += fs * 1.15f;
+    }
+}
+
+}  // namespace
+
+UiLayout ui_layout(float width, float height, float ui_scale) {
+    UiLayout L;
+    L.width = width;
+    L.height = height;
+    L.panel_w = std::min(kPanelWidthPx * ui_scale, 0.5f * width);
+    L.plots_h = std::round(kPlotsHeightShare * height);
+    return L;
+}
+
+void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req) {
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({L.panel_w, L.height});
+    ImGui::Begin("controls", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+    ImGui::TextUnformatted("polyroll sandbox");
+    if (ctx.large_font) ImGui::PopFont();
+
+    // Transport.
+    if (ImGui::Button(s.playing ? "\u275A\u275A Pause" : "\u25B6 Play")) req.toggle_play = true;
+    tip("Play or pause the simulation (Space).");
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) req.step = true;
+    tip(fmt::format("Advance {:.3f} s of simulated time while paused (Right arrow).", kSingleStepS));
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) req.reset = true;
+    tip("Rebuild the scene from the controls and start again from release (R).");
+    ImGui::SameLine();
+    if (ImGui::Button("Run to end")) req.run_to_end = true;
+    tip("Compute the rest of the run as fast as possible without drawing it, then show the end (G).");
+    std::vector<std::string> slow_labels;
+    for (int d : kSlowMotionDivisors) slow_labels.push_back(d == 1 ? "1\u00D7 (real time)" : fmt::format("1/{}\u00D7", d));
+    if (ImGui::BeginCombo("slow motion", slow_labels[static_cast<size_t>(s.slow_index)].c_str())) {
+        for (size_t i = 0; i < slow_labels.size(); ++i)
+            if (ImGui::Selectable(slow_labels[i].c_str(), static_cast<int>(i) == s.slow_index))
+                s.slow_index = static_cast<int>(i);
+        ImGui::EndCombo();
+    }
+    tip("Simulated time runs at this share of real time: 1\u00D7 is real time, 1/16\u00D7 sixteen times slower "
+        "([ and ] change it).");
+
+    if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) preset_buttons(s, req);
+
+    heading("Lanes (up to 4 race side by side)");
+    if (ImGui::BeginTabBar("lanes")) {
+        for (size_t i = 0; i < s.lanes.size(); ++i) {
+            const std::string name = fmt::format("Lane {}", i + 1);
+            ImGui::PushStyleColor(ImGuiCol_Text, im_vec(lane_colour(i)));
+            const bool open = ImGui::BeginTabItem(name.c_str());
+            ImGui::PopStyleColor();
+            if (open) {
+                s.selected_lane = static_cast<int>(i);
+                ImGui::EndTabItem();
+            }
+        }
+        if (static_cast<int>(s.lanes.size()) < kMaxLanes) {
+            if (ImGui::TabItemButton("+", ImGuiTabItemFlags_Trailing)) {
+                if (add_lane(s)) req.controls_changed = true;
+            }
+            tip("Add a lane: a copy of this one, on its own parallel ramp, started together with the others.");
+        }
+        ImGui::EndTabBar();
+    }
+    lane_controls(s, req);
+    if (s.lanes.size() > 1) {
+        if (ImGui::Button("remove this lane")) {
+            if (remove_lane(s, s.selected_lane)) req.controls_changed = true;
+        }
+        tip("Take this lane out of the race.");
+    }
+    heading("Ramp and physics (all lanes)");
+    shared_controls(s, req);
+    physics_controls(s, req);
+
+    if (ImGui::CollapsingHeader("Advanced: friction and restitution")) advanced_controls(s, req);
+    if (ImGui::CollapsingHeader("View")) view_controls(s, req);
+    if (ImGui::CollapsingHeader("Save")) {
+        if (ImGui::Button("Screenshot (S)")) req.screenshot = true;
+        tip("Save the window as a PNG.");
+        ImGui::SameLine();
+        if (ImGui::Button("Export run (E)")) req.export_run = true;
+        tip("Write the current run's summary.json, trajectory.csv and impacts.csv (the files polyroll run writes), "
+            "one folder per lane.");
+        if (!ctx.last_saved.empty()) ImGui::TextWrapped("saved: %s", ctx.last_saved.c_str());
+    }
+    ImGui::Spacing();
+    ImGui::Checkbox("restart when a control changes", &s.restart_on_change);
+    tip("On: every change rebuilds the scene and starts again. Off: changes wait for Reset.");
+    if (s.changes_pending && !s.restart_on_change) {
+        ImGui::TextColored(kWarnColour, "controls changed: Reset applies them");
+    }
+    if (!ctx.control_error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::TextWrapped("%s", ctx.control_error.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::End();
+}
+
+void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L) {
+    ImGui::SetNextWindowPos({L.panel_w, L.height - L.plots_h});
+    ImGui::SetNextWindowSize({L.width - L.panel_w, L.plots_h});
+    ImGui::Begin("readouts", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar);
+    const LaneSet& lanes = *ctx.lanes;
+    if (!lanes.ready()) {
+        ImGui::TextUnformatted(lanes.building() ? "building the scene..." : "no scene");
+        ImGui::End();
+        return;
+    }
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float gap = ImGui::GetStyle().ItemSpacing.x;
+    const float fs = ImGui::GetFontSize();
+    const float table_w = std::min(avail.x * 0.55f, fs * (6.5f + 6.6f * static_cast<float>(lanes.size())));
+    // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
+    // so the readout columns and the plot both stay wide enough to read.
+    const bool racing = lanes.size() > 1;
+    const float plot_w = racing ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
+
+    // Readouts: one column per lane (the time is the status line's: the lanes started together).
+    ImGui::BeginChild("table", {table_w, avail.y});
+    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
+        std::vector<LaneReadout> r;
+        for (size_t i = 0; i < lanes.size(); ++i)
+            r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
+        if (racing) {
+            ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted("lane");
+            for (size_t i = 0; i < lanes.size(); ++i) {
+                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+                ImGui::TextColored(im_vec(lane_colour(i)), "%zu", i + 1);
+                if (ctx.large_font) ImGui::PopFont();
+            }
+        }
+        auto row = [&](const char* label, std::string LaneReadout::*field, const char* what) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(label);
+            tip(what);
+            for (size_t i = 0; i < lanes.size(); ++i) {
+                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                ImGui::TextUnformatted((r[i].*field).c_str());
+            }
+        };
+        row("polygon", &LaneReadout::polygon, "The number of sides n.");
+        row("fill", &LaneReadout::fill, "The fill ratio r and the grains.");
+        row("position", &LaneReadout::position, "The lid centre's distance down the ramp from release, m.");
+        row("speed", &LaneReadout::speed, "The lid centre's speed along the ramp, m/s (negative rocking back).");
+        row("face impacts", &LaneReadout::impacts, "Faces landed so far.");
+        row("behaviour", &LaneReadout::behaviour, "What the run did, once known: stopped at its first impact, stopped "
+                                                  "(after rolling), or rolled to the end.");
+        row("distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended).");
+        row("terminal v", &LaneReadout::terminal,
+            "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
+        ImGui::EndTable();
+    }
+    ImGui::EndChild();
+
+    std::vector<const Measurements*> all;
+    for (size_t i = 0; i < lanes.size(); ++i) all.push_back(&lanes.lane(i).measured());
+    const size_t max_points = static_cast<size_t>(std::max(50.0f, plot_w));
+    auto speed_plot = [&](float height) {
+        std::vector<Trace> traces;
+        std::vector<Markers> markers;
+        for (size_t i = 0; i < lanes.size(); ++i) {
+            traces.push_back({series(*all[i], Series::speed, max_points), im_colour(lane_colour(i)),
+                              racing ? fmt::format("lane {}", i + 1) : std::string()});
+            markers.push_back({impact_markers(*all[i]), im_colour(lane_colour(i))});
+        }
+        draw_plot("Speed", "m/s", speed_range(all), traces, markers, {plot_w, height});
+        tip("The lid centre's speed along the ramp against time; dots mark face impacts.");
+    };
+    const size_t sel = std::min(static_cast<size_t>(std::max(0, s.selected_lane)), lanes.size() - 1);
+    auto energy_plot = [&](float height) {
+        const Measurements& m = *all[sel];
+        const std::vector<Trace> energy = {
+            {series(m, Series::kinetic, max_points), IM_COL32(200, 40, 40, 255), "kinetic"},
+            {series(m, Series::potential, max_points), IM_COL32(30, 100, 200, 255), "potential"},
+            {series(m, Series::dissipated, max_points), IM_COL32(70, 70, 70, 255), "dissipated"}};
+        const std::string title = racing ? fmt::format("Energy, lane {}", sel + 1) : std::string("Energy");
+        draw_plot(title.c_str(), "J", energy_range(m), energy, {}, {plot_w, height});
+        tip("Kinetic energy of shell and grains, potential energy relative to release, and the energy dissipated so "
+            "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
+    };
+    ImGui::SameLine();
+    if (!racing) {
+        speed_plot(avail.y);
+        ImGui::SameLine();
+        energy_plot(avail.y);
+    } else {
+        ImGui::BeginGroup();
+        const float tab_h = ImGui::GetFrameHeightWithSpacing();
+        if (ImGui::BeginTabBar("plots")) {
+            if (ImGui::BeginTabItem("speed, all lanes")) {
+                speed_plot(avail.y - tab_h);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem(fmt::format("energy, lane {}###energy", sel + 1).c_str())) {
+                energy_plot(avail.y - tab_h);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        ImGui::EndGroup();
+    }
+    ImGui::End();
+}
+
+void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L) {
+    const float pad = ImGui::GetFontSize() * 0.6f;
+    ImGui::SetNextWindowPos({L.panel_w + pad, pad});
+    ImGui::SetNextWindowSizeConstraints({0, 0}, {L.width - L.panel_w - 2 * pad, L.height});
+    ImGui::SetNextWindowBgAlpha(0.88f);
+    ImGui::Begin("status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+    const LaneSet& lanes = *ctx.lanes;
+    const int divisor = kSlowMotionDivisors[static_cast<size_t>(s.slow_index)];
+    if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+    if (lanes.building()) {
+        ImGui::TextUnformatted("Building the scene: pouring and settling the grains...");
+    } else if (!lanes.ready()) {
+        ImGui::TextUnformatted("No scene");
+    } else {
+        std::string state;
+        if (lanes.trouble()) state = "stopped";
+        else if (ctx.running_to_end) state = "running to the end (not drawn)";
+        else if (lanes.all_finished())
+            state = lanes.size() == 1 ? "run ended: " + behaviour_label(lanes.lane(0).measured().behaviour)
+                                      : std::string("run ended");
+        else state = s.playing ? "\u25B6 playing" : "\u275A\u275A paused";
+        const std::string speed = divisor == 1 ? std::string("real time") : fmt::format("1/{}\u00D7 slow motion", divisor);
+        ImGui::Text("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
+    }
+    if (ctx.large_font) ImGui::PopFont();
+    const bool stepping = lanes.ready() && s.playing && !lanes.all_finished() && !lanes.trouble();
+    if (stepping && !ctx.running_to_end && !ctx.clock->keeping_up())
+        ImGui::TextColored(kWarnColour,
+                           "This computer simulates only %.2f\u00D7 real time for this scene: the simulation is "
+                           "slowed down to keep the window responsive.",
+                           ctx.clock->realtime_ratio());
+    if (!lanes.build_error().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
+        ImGui::TextWrapped("The scene could not be built: %s", lanes.build_error().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
+    if (lanes.trouble()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
+        ImGui::TextWrapped("%s", lanes.trouble()->c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
+    if (s.changes_pending && !s.restart_on_change)
+        ImGui::TextColored(kWarnColour, "Controls changed: press Reset (R) to apply them.");
+    ImGui::End();
+}
+
+void read_shortcuts(SandboxState& s, UiRequests& req) {
+    if (ImGui::GetIO().WantTextInput) return;
+    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) req.toggle_play = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) || ImGui::IsKeyPressed(GLFW_KEY_PERIOD)) req.step = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) req.reset = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_G, false) || ImGui::IsKeyPressed(GLFW_KEY_END, false)) req.run_to_end = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) s.follow = !s.follow;
+    if (ImGui::IsKeyPressed(GLFW_KEY_C, false))
+        s.colouring = s.colouring == render::GrainColouring::material ? render::GrainColouring::speed
+                                                                      : render::GrainColouring::material;
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) req.screenshot = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) req.export_run = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) req.reset_view = true;
+    const int last = static_cast<int>(kSlowMotionDivisors.size()) - 1;
+    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET, false)) s.slow_index = std::min(last, s.slow_index + 1);
+    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET, false)) s.slow_index = std::max(0, s.slow_index - 1);
+}
+
+}  // namespace polyroll::app

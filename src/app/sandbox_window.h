@@ -1,0 +1,55 @@
+// The sandbox's window: GLFW with an OpenGL 3.3 core context, Dear ImGui on it (its GLFW and
+// OpenGL3 backends from Debian's libimgui), DejaVu fonts at the chosen UI scale, the projector theme,
+// and reading the back buffer for screenshots. Links the system GL, never OSMesa.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+struct ImFont;
+
+namespace polyroll::app {
+
+class Window {
+public:
+    // nullptr when no window can be opened (no display); `why` says what failed.
+    static std::unique_ptr<Window> open(int width_px, int height_px, bool vsync, std::string& why);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    bool should_close() const;
+    // Polls events, rebuilds the fonts if the scale changed, starts an ImGui frame.
+    void begin_frame();
+    // Renders ImGui's draw data over whatever was drawn (the scene).
+    void render_ui();
+    void swap();
+
+    void framebuffer_size(int& width_px, int& height_px) const;
+    // Framebuffer pixels per window coordinate (1 except on high-density displays).
+    float pixel_ratio() const;
+
+    void set_ui_scale(float scale);  // takes effect at the next begin_frame
+    void set_high_contrast(bool on);
+    ImFont* large_font() const { return large_; }
+
+    // The back buffer as RGBA rows, bottom row first (call before swap()).
+    std::vector<std::uint8_t> read_back_buffer(int& width_px, int& height_px) const;
+    std::string gl_renderer() const;
+
+private:
+    Window() = default;
+    void build_fonts();
+    void apply_style();
+
+    GLFWwindow* window_ = nullptr;
+    float scale_ = 1.0f, built_scale_ = 0.0f;
+    bool high_contrast_ = true, style_dirty_ = true;
+    ImFont* large_ = nullptr;
+    std::string font_dir_;
+};
+
+}  // namespace polyroll::app

@@ -1,0 +1,38 @@
+// The sandbox's scene view as a draw list (GL-free): each lane's ramp, shell and grains through its
+// camera (view_control.h), clipped to the view, with the lane's label in the lane's colour. The
+// window draws it with render::GlRenderer, the same renderer as polyroll render's frames.
+#pragma once
+
+#include <vector>
+
+#include "app/view_control.h"
+#include "render/draw_list.h"
+#include "render/font.h"
+#include "render/frame_layout.h"
+#include "render/snapshot.h"
+
+namespace polyroll::app {
+
+struct SceneViewOptions {
+    int width_px = 0, height_px = 0;  // the whole framebuffer
+    render::PxRect area;              // the part the scene fills (the rest is under the panels)
+    float unit = 1.0f;                // design pixel: the UI scale
+    bool follow = false;
+    render::GrainColouring colouring = render::GrainColouring::material;
+    double colour_speed_max_m_s = 1.0;
+    ViewTransform view;
+    // Whole-ramp view: a close-up of this lane's polygon in the free corner under the ramp
+    // (-1 for none). The polygon is small on a 2.5 m ramp; the close-up shows its grains.
+    int close_up_lane = 0;
+};
+
+// The font sizes the view uses at a UI scale (the atlas must hold them).
+std::vector<render::FontSpec> scene_view_fonts(float unit);
+
+// Each lane's colour: its label, its plot trace and its readout column share it.
+render::Rgba lane_colour(size_t lane);
+
+render::DrawList build_scene_view(const std::vector<render::Snapshot>& lanes, const std::vector<std::string>& labels,
+                                  const SceneViewOptions& o, const render::FontAtlas& font);
+
+}  // namespace polyroll::app

@@ -1,0 +1,111 @@
+// Pan, zoom and the lanes' framing: see view_control.h.
+#include "app/view_control.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace polyroll::app {
+
+using render::Camera;
+using render::Px;
+using render::PxRect;
+
+namespace {
+
+Px centre_of(const PxRect& a) { return {a.x + a.width / 2.0f, a.y + a.height / 2.0f}; }
+
+double outer_radius_m(const render::Snapshot& s) {
+    double r = 0.0;
+    for (const geom::Vec2& v : s.outer_local_m) r = std::max(r, geom::length(v));
+    return r;
+}
+
+// Height of the ramp's drawn body and its scale labels below the surface, in design pixels
+// (world_draw.cpp draws an 18-pixel body and labels under it).
+constexpr float kRampBandDesignPx = 48.0f;
+// Room left of the ramps for the lane badges (scene_view.cpp), in design pixels.
+constexpr float kBadgeMarginDesignPx = 44.0f;
+// Room above the surface for a lane's polygon, in outer radii (it may rock onto a vertex).
+constexpr double kClearanceRadii = 2.4;
+// Share of a lane's strip height the polygon's radius spans when following.
+constexpr double kFollowRadiusShare = 0.28;
+
+}  // namespace
+
+void ViewTransform::pan_by(double dx, double dy) {
+    pan_x_px += dx;
+    pan_y_px += dy;
+}
+
+void ViewTransform::zoom_at(Px at, double factor, const PxRect& area) {
+    const double z = std::clamp(zoom * factor, kMinZoom, kMaxZoom);
+    const double f = z / zoom;
+    const Px c = centre_of(area);
+    // The point under `at` stays put: at = c + zoom * (b - c) + pan before and after.
+    pan_x_px = (at.x - c.x) - f * (at.x - c.x - pan_x_px);
+    pan_y_px = (at.y - c.y) - f * (at.y - c.y - pan_y_px);
+    zoom = z;
+}
+
+Camera ViewTransform::apply(const Camera& framed, const PxRect& area) const {
+    const Px c = centre_of(area);
+    Camera cam = framed;
+    cam.px_per_m = framed.px_per_m * zoom;
+    cam.anchor = {static_cast<float>(c.x + zoom * (framed.anchor.x - c.x) + pan_x_px),
+                  static_cast<float>(c.y + zoom * (framed.anchor.y - c.y) + pan_y_px)};
+    return cam;
+}
+
+LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect& area, bool follow, float unit,
+                       const ViewTransform& view) {
+    LaneLayout out;
+    if (lanes.empty()) return out;
+    const size_t n = lanes.size();
+    double radius = 0.0;
+    for (const auto& s : lanes) radius = std::max(radius, outer_radius_m(s));
+    const float band = kRampBandDesignPx * unit;
+
+    if (follow) {
+        // Every lane in its own strip, one shared camera centred on the leading polygon, so the
+        // race's gaps show as horizontal offsets.
+        size_t lead = 0;
+        for (size_t i = 1; i < n; ++i)
+            if (lanes[i].shell_centre_m.x > lanes[lead].shell_centre_m.x) lead = i;
+        const float strip = area.height / static_cast<float>(n);
+        const PxRect first{area.x, area.y, area.width, strip};
+        const Camera base = render::follow_camera(lanes[lead].shell_centre_m, lanes[lead].ramp_angle_deg, radius,
+                                                  kFollowRadiusShare, first);
+        out.lane_spacing_px = strip;
+        for (size_t i = 0; i < n; ++i) {
+            Camera c = base;
+            c.anchor.y += static_cast<float>(i) * strip;
+            out.cameras.push_back(view.apply(c, area));
+        }
+        return out;
+    }
+
+    // Whole ramps, stacked: fit the first ramp into the area less the room the lanes below need,
+    // then shift each lane down by the spacing (which depends on the scale: solve twice).
+    const auto& s0 = lanes.front();
+    float spacing = 0.0f;
+    Camera base;
+    for (int pass = 0; pass < 2; ++pass) {
+        PxRect fit = area;
+        if (n > 1) {
+            fit.x += kBadgeMarginDesignPx * unit;
+            fit.width = std::max(1.0f, fit.width - kBadgeMarginDesignPx * unit);
+        }
+        fit.height = std::max(1.0f, area.height - static_cast<float>(n - 1) * spacing - (n > 1 ? band : 0.0f));
+        base = render::whole_ramp_camera(s0.ramp_length_m, s0.ramp_angle_deg, kClearanceRadii * radius, fit);
+        spacing = static_cast<float>(kClearanceRadii * radius * base.px_per_m) + band;
+    }
+    out.lane_spacing_px = n > 1 ? spacing : 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        Camera c = base;
+        c.anchor.y += static_cast<float>(i) * spacing;
+        out.cameras.push_back(view.apply(c, area));
+    }
+    return out;
+}
+
+}  // namespace polyroll::app

@@ -1,0 +1,252 @@
+// The speed/accuracy study: see tradeoff.h.
+#include "sweep/tradeoff.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "sim/scene_json.h"
+#include "sim/shell_properties.h"
+#include "sweep/grid_values.h"
+
+namespace polyroll::sweep {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// The scenes' fixed parts: the short wooden ramp keeps the costly reference runs affordable.
+const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"ramp", {{"preset", "wooden"}}},
+                    {"run", {{"time_limit_s", 20}}}};
+const std::vector<int> kSides = {6, 18};
+const std::vector<std::pair<double, std::string>> kFills = {{0.0, "bb"}, {0.5, "bb"}, {1.0, "bb"}, {0.5, "rice"},
+                                                            {1.0, "rice"}};
+// 12 degrees: below the rolling band of the filled hexagons; 24: above it (the sweep in
+// docs/sweeps.md). Plus the third behaviour's scene, the half-full BB hexagon at 20 degrees.
+const std::vector<double> kAngles = {12.0, 24.0};
+const std::vector<std::string> kPresets = {"draft", "standard", "precise", "reference"};
+const std::map<std::string, double> kDiameters = {{"bb", 0.006}, {"rice", 0.0034}};  // assets/materials.json
+
+struct Variant {
+    std::string model, preset, kind;  // kind: "", "halved", "coarse x1.5", "coarse x2", "seed 2"
+    std::string label() const {
+        if (model != "grains") return model;
+        if (kind == "halved") return "reference, dt/2";
+        return kind.empty() ? preset : preset + ", " + kind;
+    }
+};
+
+struct Row {
+    std::string scene;  // n, r, material, angle
+    Variant v;
+    bool ok = false;
+    std::string behaviour;
+    double distance_m = NAN, vt_m_s = NAN, wall_s = NAN, side_m = NAN;
+};
+
+std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& name) {
+    const auto it = std::find(t.header.begin(), t.header.end(), name);
+    return row.at(static_cast<std::size_t>(it - t.header.begin()));
+}
+
+double number(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
+
+std::string fixed(double v, int digits) { return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : "-"; }
+std::string percent(double v) { return std::isfinite(v) ? fmt::format("{:.1f}%", 100.0 * v) : "-"; }
+
+}  // namespace
+
+SweepPlan tradeoff_plan() {
+    SweepPlan plan;
+    plan.base = kBase;
+    plan.fields = {"shell.sides",     "fill.ratio",         "fill.material.preset", "ramp.angle_deg",
+                   "run.model",       "fidelity.preset",    "fidelity.substeps",    "fill.material.diameter_m",
+                   "run.seed"};
+    plan.flags = plan.fields;
+    std::vector<std::tuple<int, double, std::string, double>> scenes;
+    for (int n : kSides)
+        for (const auto& [r, material] : kFills)
+            for (double a : kAngles) scenes.emplace_back(n, r, material, a);
+    scenes.emplace_back(6, 0.5, "bb", 20.0);
+    for (const auto& [n, r, material, a] : scenes) {
+        const json scene = {{"shell.sides", n}, {"fill.ratio", r}, {"fill.material.preset", material},
+                            {"ramp.angle_deg", a}};
+        auto with = [&](json extra) {
+            json p = scene;
+            for (const auto& [k, v] : extra.items()) p[k] = v;
+            add_run(plan, p);
+        };
+        for (const std::string& preset : kPresets)
+            with({{"run.model", "grains"}, {"fidelity.preset", preset}, {"run.seed", 1u}});
+        // The reference checked for convergence: its engine step halved once more.
+        with({{"run.model", "grains"}, {"fidelity.preset", "reference"}, {"fidelity.substeps", 8}, {"run.seed", 1u}});
+        // The spread a different grain packing gives, at the standard preset: the noise floor.
+        with({{"run.model", "grains"}, {"fidelity.preset", "standard"}, {"run.seed", 2u}});
+        if (r > 0.0) {
+            // The same fill mass (r x volume x bulk density) in fewer, larger grains.
+            for (double k : {1.5, 2.0})
+                with({{"run.model", "grains"}, {"fidelity.preset", "standard"},
+                      {"fill.material.diameter_m", kDiameters.at(material) * k}, {"run.seed", 1u}});
+        }
+        // The reduced models integrate to rounding error: the fidelity preset does not change them.
+        for (const char* model : {"rigid", "segments"})
+            with({{"run.model", model}, {"fidelity.preset", "standard"}, {"run.seed", 1u}});
+    }
+    return plan;
+}
+
+TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
+    std::vector<Row> rows;
+    std::map<std::string, double> side_of_scene;
+    for (const auto& r : t.rows) {
+        const PlannedRun& run = plan.runs.at(std::stoull(r.at(0)));
+        const json& p = run.point;
+        Row row;
+        row.scene = fmt::format("n = {}, r = {}, {}, {} deg", p.at("shell.sides").dump(), value_text(p.at("fill.ratio")),
+                                p.at("fill.ratio") == 0.0 ? "empty" : p.at("fill.material.preset").get<std::string>(),
+                                value_text(p.at("ramp.angle_deg")));
+        row.v.model = p.at("run.model");
+        row.v.preset = p.at("fidelity.preset");
+        if (p.contains("fidelity.substeps")) row.v.kind = "halved";
+        if (p.contains("fill.material.diameter_m")) {
+            const double k = p.at("fill.material.diameter_m").get<double>() /
+                             kDiameters.at(p.at("fill.material.preset").get<std::string>());
+            row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
+        }
+        if (p.at("run.seed") != 1) row.v.kind = "seed " + p.at("run.seed").dump();
+        row.ok = cell(t, r, "status") == "ok";
+        row.behaviour = row.ok ? cell(t, r, "behaviour") : "failed";
+        row.distance_m = number(cell(t, r, "distance_m"));
+        row.vt_m_s = number(cell(t, r, "terminal_velocity_m_s"));
+        row.wall_s = number(cell(t, r, "wall_time_s"));
+        if (!side_of_scene.count(row.scene)) {
+            // The outer side length: the floor of the distance error's scale (a first-impact stop
+            // moves the lid centre by a fraction of it).
+            const Scene s = resolve_scene(run_layers(plan, run));
+            const ShellProperties sp = shell_properties(s.shell);
+            side_of_scene[row.scene] = 2.0 * sp.outer_circumradius_m * std::sin(M_PI / s.shell.sides);
+        }
+        row.side_m = side_of_scene[row.scene];
+        rows.push_back(row);
+    }
+    std::map<std::string, const Row*> reference;
+    for (const Row& r : rows)
+        if (r.v.model == "grains" && r.v.preset == "reference" && r.v.kind.empty()) reference[r.scene] = &r;
+
+    struct Totals {
+        Variant v;
+        int runs = 0, compared = 0, wrong = 0, vt_n = 0, failed = 0;
+        double wall = 0, d_err = 0, vt_err = 0;
+    };
+    std::vector<std::string> order;
+    std::map<std::string, Totals> totals;
+    std::string md;
+    md += "# Speed against accuracy\n\n";
+    md += "Generated by `polyroll tradeoff` (src/sweep/tradeoff.cpp). Each scene runs with every model and fidelity "
+          "preset and is compared with the reference: the grain simulation at the `reference` preset, seed 1. "
+          "Distance error: |D - D_ref| / max(D_ref, s) with s the outer side length (a stop at the first impact "
+          "moves the lid centre by a fraction of a side); terminal velocity error: |Vt - Vt_ref| / Vt_ref where both "
+          "rolled to the end; behaviour: the share of scenes whose behaviour differs from the reference's. Wall "
+          "time: mean per run, each run on one core (two runs at a time). Pareto front: no other choice (model, "
+          "preset below the reference, coarser grains) is at once cheaper and no less accurate in all three errors.\n\n";
+    for (const Row& r : rows) {
+        const std::string key = r.v.model + "|" + r.v.preset + "|" + r.v.kind;
+        if (!totals.count(key)) {
+            order.push_back(key);
+            totals[key].v = r.v;
+        }
+        Totals& tt = totals[key];
+        ++tt.runs;
+        tt.wall += r.wall_s;
+        if (!r.ok) ++tt.failed;
+        const auto ref = reference.find(r.scene);
+        if (ref == reference.end() || !ref->second->ok || !r.ok) continue;
+        const Row& f = *ref->second;
+        ++tt.compared;
+        tt.d_err += std::fabs(r.distance_m - f.distance_m) / std::max(f.distance_m, r.side_m);
+        if (r.behaviour != f.behaviour) ++tt.wrong;
+        if (std::isfinite(r.vt_m_s) && std::isfinite(f.vt_m_s)) {
+            ++tt.vt_n;
+            tt.vt_err += std::fabs(r.vt_m_s - f.vt_m_s) / f.vt_m_s;
+        }
+    }
+    // The Pareto front over cost and all three errors among the choices a user has: the models, the
+    // presets below the reference (which is the yardstick, error 0 by definition) and coarser grains.
+    // The second seed and the halved step are yardsticks too: the noise floor and the reference's own error.
+    auto choice = [&](const Variant& v) {
+        return v.model != "grains" || (v.preset != "reference" && (v.kind.empty() || v.kind.rfind("coarse", 0) == 0));
+    };
+    std::vector<std::array<double, 4>> pts;
+    for (const auto& k : order) {
+        const Totals& tt = totals[k];
+        const bool ok = tt.compared && choice(tt.v);
+        pts.push_back({tt.wall / tt.runs, ok ? tt.d_err / tt.compared : INFINITY,
+                       ok && tt.vt_n ? tt.vt_err / tt.vt_n : INFINITY,
+                       ok ? static_cast<double>(tt.wrong) / tt.compared : INFINITY});
+    }
+    auto on_front = [&](std::size_t i) {
+        if (!std::isfinite(pts[i][1])) return false;
+        for (std::size_t j = 0; j < pts.size(); ++j) {
+            if (j == i) continue;
+            bool no_worse = true, better = false;
+            for (int m = 0; m < 4; ++m) {
+                no_worse = no_worse && pts[j][m] <= pts[i][m];
+                better = better || pts[j][m] < pts[i][m];
+            }
+            if (no_worse && better) return false;
+        }
+        return true;
+    };
+
+    md += "## Error against cost, per model and preset\n\n";
+    md += "| model | preset | runs | failed | wall time per run (s) | distance error | terminal velocity error | "
+          "wrong behaviour | Pareto front |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    std::string csv = "model,variant,label,runs,wall_time_s,distance_error,velocity_error,behaviour_error,pareto\n";
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const Totals& tt = totals[order[i]];
+        const double d = tt.compared ? tt.d_err / tt.compared : NAN;
+        const double vt = tt.vt_n ? tt.vt_err / tt.vt_n : NAN;
+        const double wrong = tt.compared ? static_cast<double>(tt.wrong) / tt.compared : NAN;
+        const std::string label = tt.v.label();
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} ({} of {}) | {} |\n", tt.v.model,
+                          tt.v.model == "grains" ? label : "-", tt.runs, tt.failed, fmt::format("{:.2g}", tt.wall / tt.runs),
+                          percent(d), percent(vt), percent(wrong), tt.wrong, tt.compared, on_front(i) ? "yes" : "");
+        const std::string variant = tt.v.kind.rfind("coarse", 0) == 0 ? "coarse"
+                                    : !tt.v.kind.empty()             ? tt.v.kind
+                                    : tt.v.preset == "reference" && tt.v.model == "grains" ? "reference"
+                                                                                           : "preset";
+        csv += fmt::format("{},{},\"{}\",{},{},{},{},{},{}\n", tt.v.model, variant, label, tt.runs, tt.wall / tt.runs,
+                           std::isfinite(d) ? fmt::format("{}", d) : "", std::isfinite(vt) ? fmt::format("{}", vt) : "",
+                           std::isfinite(wrong) ? fmt::format("{}", wrong) : "", on_front(i) ? 1 : 0);
+    }
+
+    md += "\n## Is the reference converged? (reference against its own time step halved)\n\n";
+    md += "| scene | behaviour (ref) | behaviour (dt/2) | D ref (m) | D dt/2 (m) | distance difference | Vt ref (m/s) | "
+          "Vt dt/2 (m/s) | seed 2 at standard: behaviour, D (m) |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    int agree = 0, scenes = 0;
+    for (const auto& [scene, ref] : reference) {
+        const Row* half = nullptr;
+        const Row* seed2 = nullptr;
+        for (const Row& r : rows) {
+            if (r.scene != scene) continue;
+            if (r.v.kind == "halved") half = &r;
+            if (r.v.kind == "seed 2") seed2 = &r;
+        }
+        if (!half) continue;
+        ++scenes;
+        const double diff = std::fabs(half->distance_m - ref->distance_m) / std::max(ref->distance_m, ref->side_m);
+        if (half->behaviour == ref->behaviour) ++agree;
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", scene, ref->behaviour, half->behaviour,
+                          fixed(ref->distance_m, 3), fixed(half->distance_m, 3), percent(diff), fixed(ref->vt_m_s, 3),
+                          fixed(half->vt_m_s, 3),
+                          seed2 ? seed2->behaviour + ", " + fixed(seed2->distance_m, 3) : std::string("-"));
+    }
+    md += fmt::format("\nThe reference and its halved step agree on the behaviour in {} of {} scenes.\n", agree, scenes);
+    return {md, csv};
+}
+
+}  // namespace polyroll::sweep

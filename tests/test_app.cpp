@@ -1,0 +1,520 @@
+// The sandbox's GL-free logic, without a window: sandbox presets resolve; each panel control changes
+// exactly the scene parameters it names and clamps to the valid range; the real-time clock and its
+// cap; lanes built, started and stepped together; divergence advice; plot data; pan, zoom and the
+// lanes' framing; the scene view's draw list; readouts; exports.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "app/controls.h"
+#include "app/divergence.h"
+#include "app/export_files.h"
+#include "app/lane_set.h"
+#include "app/plot_data.h"
+#include "app/readouts.h"
+#include "app/sandbox_presets.h"
+#include "app/sandbox_settings.h"
+#include "app/sandbox_state.h"
+#include "app/scene_view.h"
+#include "app/sim_clock.h"
+#include "app/view_control.h"
+#include "render/font.h"
+#include "sim/assets.h"
+#include "sim/errors.h"
+#include "sim/shell_properties.h"
+#include "sim/world_builder.h"
+#include "sim/scene_json.h"
+#include "test_helpers.h"
+
+using namespace polyroll;
+using namespace polyroll::app;
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+namespace {
+
+// "shell.sides" -> value, for every leaf of the resolved scene.
+void flatten(const json& j, const std::string& prefix, std::map<std::string, json>& out) {
+    if (j.is_object()) {
+        for (const auto& [k, v] : j.items()) flatten(v, prefix.empty() ? k : prefix + "." + k, out);
+    } else {
+        out[prefix] = j;
+    }
+}
+
+std::map<std::string, json> flat_scene(const Scene& s) {
+    std::map<std::string, json> out;
+    flatten(scene_to_json(s), "", out);
+    return out;
+}
+
+// The scene parameters that differ between two scenes.
+std::set<std::string> changed_fields(const Scene& a, const Scene& b) {
+    const auto fa = flat_scene(a), fb = flat_scene(b);
+    std::set<std::string> changed;
+    for (const auto& [k, v] : fa)
+        if (!fb.count(k) || fb.at(k) != v) changed.insert(k);
+    for (const auto& [k, v] : fb)
+        if (!fa.count(k)) changed.insert(k);
+    return changed;
+}
+
+bool all_under(const std::set<std::string>& fields, const std::string& prefix) {
+    for (const std::string& f : fields)
+        if (f.rfind(prefix, 0) != 0) return false;
+    return !fields.empty();
+}
+
+struct Base {
+    SandboxState state = state_for_preset("default");
+    LaneControls& lane() { return state.lanes[0].controls; }
+    Scene scene() const { return scenes_for(state).front(); }
+};
+
+// A clock that advances by `tick` at every reading, so a budget runs out after a known step count.
+struct FakeClock {
+    double t = 0.0, tick = 0.0;
+    double operator()() { return t += tick; }
+};
+
+}  // namespace
+
+TEST_CASE("every sandbox preset resolves to one to four valid lanes", "[app]") {
+    const std::vector<std::string> names = sandbox_preset_names();
+    REQUIRE(names.size() >= 3);
+    CHECK(names.front() == kDefaultSandboxPreset);
+    for (const std::string& name : names) {
+        INFO(name);
+        const SandboxPreset p = sandbox_preset(name);
+        CHECK(!p.description.empty());
+        const std::vector<Scene> scenes = resolve_preset(p);
+        CHECK(scenes.size() >= 1);
+        CHECK(static_cast<int>(scenes.size()) <= kMaxLanes);
+        // The panel shows each preset exactly: controls read back from the scene rebuild the same scene.
+        const SandboxState s = state_for_preset(name);
+        const std::vector<Scene> again = scenes_for(s);
+        REQUIRE(again.size() == scenes.size());
+        CHECK(changed_fields(scenes.front(), again.front()).empty());
+    }
+    // The issue's examples.
+    for (const char* name : {"octagon-rice", "hexagon-bb", "race"}) CHECK_NOTHROW(sandbox_preset(name));
+    const std::vector<Scene> race = resolve_preset(sandbox_preset("race"));
+    REQUIRE(race.size() == 3);
+    CHECK(race[0].fill.ratio == 0.0);
+    CHECK(race[1].fill.ratio == Approx(0.4));
+    CHECK(race[2].fill.ratio == 1.0);
+    CHECK(resolve_preset(sandbox_preset("default")).front().shell.sides ==
+          test::scene_with(json::object()).shell.sides);
+    CHECK_THROWS_AS(sandbox_preset("no-such-preset"), InputError);
+    CHECK_THROWS_WITH(sandbox_preset("no-such-preset"), Catch::Contains("allowed") && Catch::Contains("race"));
+}
+
+TEST_CASE("each panel control changes exactly the scene parameters it names", "[app]") {
+    Base b;
+    const Scene before = b.scene();
+    using Fields = std::set<std::string>;
+
+    SECTION("n") {
+        set_sides(b.lane(), 8);
+        CHECK(changed_fields(before, b.scene()) == Fields{"shell.sides"});
+    }
+    SECTION("r") {
+        set_fill_ratio(b.lane(), 0.6);
+        CHECK(changed_fields(before, b.scene()) == Fields{"fill.ratio"});
+    }
+    SECTION("theta") {
+        set_angle_deg(b.state.shared, 12.5);
+        CHECK(changed_fields(before, b.scene()) == Fields{"ramp.angle_deg"});
+        CHECK(b.scene().ramp.angle_deg == 12.5);
+    }
+    SECTION("material: the grains' values, nothing else") {
+        set_material(b.lane(), "rice");
+        const Fields f = changed_fields(before, b.scene());
+        CHECK(all_under(f, "fill.material."));
+        CHECK(f.count("fill.material.preset"));
+        CHECK(f.count("fill.material.diameter_m"));
+        CHECK(b.scene().fill.material.friction == assets::preset_values(assets::Kind::material, "rice").at("friction").get<double>());
+    }
+    SECTION("polygon: the shell's values, nothing else") {
+        set_polygon(b.lane(), "hexagon-large");
+        const Fields f = changed_fields(before, b.scene());
+        CHECK(all_under(f, "shell."));
+        CHECK(f.count("shell.inner_circumradius_m"));
+        set_polygon(b.lane(), "octagon-small");
+        CHECK(b.scene().shell.sides == 8);  // n follows the polygon chosen
+    }
+    SECTION("ramp: the ramp's values but not the angle") {
+        set_ramp(b.state.shared, "wooden");
+        const Fields f = changed_fields(before, b.scene());
+        CHECK(all_under(f, "ramp."));
+        CHECK(f.count("ramp.length_m"));
+        CHECK(!f.count("ramp.angle_deg"));
+    }
+    SECTION("release") {
+        set_release_pose(b.state.shared, ReleasePose::face);
+        CHECK(changed_fields(before, b.scene()) == Fields{"release.pose"});
+    }
+    SECTION("model") {
+        set_model(b.state.shared, Model::rigid);
+        CHECK(changed_fields(before, b.scene()) == Fields{"run.model"});
+    }
+    SECTION("fidelity") {
+        set_fidelity(b.state.shared, "precise");
+        const Fields f = changed_fields(before, b.scene());
+        CHECK(all_under(f, "fidelity."));
+        CHECK(f.count("fidelity.preset"));
+    }
+    SECTION("advanced: friction and restitution") {
+        set_grain_friction(b.lane(), 0.9);
+        CHECK(changed_fields(before, b.scene()) == Fields{"fill.material.friction"});
+        Base c;
+        set_grain_restitution(c.lane(), 0.1);
+        CHECK(changed_fields(before, c.scene()) == Fields{"fill.material.restitution"});
+        Base d;
+        set_ramp_friction(d.state.shared, 0.5);
+        CHECK(changed_fields(before, d.scene()) == Fields{"ramp.friction"});
+        Base e;
+        set_ramp_restitution(e.state.shared, 0.2);
+        CHECK(changed_fields(before, e.scene()) == Fields{"ramp.restitution"});
+    }
+    SECTION("a lane's controls change only that lane") {
+        REQUIRE(add_lane(b.state));
+        set_fill_ratio(b.state.lanes[1].controls, 0.9);
+        const std::vector<Scene> scenes = scenes_for(b.state);
+        REQUIRE(scenes.size() == 2);
+        CHECK(changed_fields(before, scenes[0]).empty());
+        CHECK(changed_fields(before, scenes[1]) == Fields{"fill.ratio"});
+    }
+}
+
+TEST_CASE("panel values are clamped to their valid range and names are checked", "[app]") {
+    LaneControls l = state_for_preset("default").lanes[0].controls;
+    SharedControls s = state_for_preset("default").shared;
+    set_sides(l, 1);
+    CHECK(l.sides == kSidesMin);
+    set_sides(l, 1000);
+    CHECK(l.sides == kSidesMax);
+    set_fill_ratio(l, -0.5);
+    CHECK(l.fill_ratio == 0.0);
+    set_fill_ratio(l, 1.7);
+    CHECK(l.fill_ratio == 1.0);
+    set_fill_ratio(l, std::numeric_limits<double>::quiet_NaN());
+    CHECK(l.fill_ratio == 0.0);
+    set_angle_deg(s, 95.0);
+    CHECK(s.angle_deg == kAngleMaxDeg);
+    set_angle_deg(s, -3.0);
+    CHECK(s.angle_deg == 0.0);
+    set_grain_friction(l, 5.0);
+    CHECK(l.grain_friction == kFrictionMax);
+    set_grain_restitution(l, -1.0);
+    CHECK(l.grain_restitution == 0.0);
+    set_ramp_friction(s, -2.0);
+    CHECK(s.ramp_friction == 0.0);
+    set_ramp_restitution(s, 3.0);
+    CHECK(s.ramp_restitution == 1.0);
+    // Clamped values always make a scene the core accepts.
+    CHECK_NOTHROW(lane_scene(json::object(), l, s));
+    CHECK_THROWS_AS(set_material(l, "sand"), InputError);
+    CHECK_THROWS_WITH(set_material(l, "sand"), Catch::Contains("rice"));
+    CHECK_THROWS_AS(set_polygon(l, "circle"), InputError);
+    CHECK_THROWS_AS(set_ramp(s, "ice"), InputError);
+    CHECK_THROWS_AS(set_fidelity(s, "ultra"), InputError);
+    CHECK_THROWS_AS(model_from("magic"), InputError);
+    CHECK(model_from("segments") == Model::segments);
+    CHECK(release_pose_from("face") == ReleasePose::face);
+}
+
+TEST_CASE("lanes: at most four, the last one stays", "[app]") {
+    SandboxState s = state_for_preset("default");
+    CHECK(!remove_lane(s, 0));
+    while (add_lane(s)) {
+    }
+    CHECK(static_cast<int>(s.lanes.size()) == kMaxLanes);
+    CHECK(s.selected_lane == kMaxLanes - 1);
+    CHECK(remove_lane(s, 3));
+    CHECK(s.lanes.size() == 3);
+    CHECK(s.selected_lane == 2);
+    // Loading a preset replaces the lanes but keeps the view choices.
+    s.follow = true;
+    load_preset(s, "race");
+    CHECK(s.lanes.size() == 3);
+    CHECK(s.follow);
+}
+
+TEST_CASE("the clock keeps real time, slows down under its cap and says so", "[app]") {
+    SimClock c;
+    c.restart(0.0);
+    // Real time at 60 frames/s: the target advances by each frame's wall time.
+    for (int i = 0; i < 60; ++i) {
+        c.advance(1.0 / 60.0);
+        c.frame_done(1.0 / 60.0, c.target_s(), false);
+    }
+    CHECK(c.target_s() == Approx(1.0));
+    CHECK(c.realtime_ratio() == Approx(1.0));
+    CHECK(c.keeping_up());
+
+    // Slow motion 1/16.
+    c.restart(0.0);
+    c.set_slow_divisor(16);
+    c.advance(1.6);  // a stall counts as at most kMaxFrameDtS
+    CHECK(c.target_s() == Approx(kMaxFrameDtS / 16));
+    c.set_slow_divisor(1);
+
+    // The budget ran out with half the frame's steps done: the backlog is dropped (no debt builds up)
+    // and the clock reports at once that it is not keeping up.
+    c.restart(0.0);
+    double reached = 0.0;
+    for (int i = 0; i < 120; ++i) {
+        c.advance(1.0 / 60.0);
+        reached += 0.5 / 60.0;
+        c.frame_done(1.0 / 60.0, reached, true);
+        CHECK(c.target_s() == Approx(reached));
+        CHECK(!c.keeping_up());
+    }
+    CHECK(c.realtime_ratio() == Approx(0.5));
+}
+
+TEST_CASE("lanes build in the background, start together and step together within the budget", "[app]") {
+    Scene grains = test::scene_with(json::parse(R"({"fill": {"ratio": 0.1}})"));
+    Scene rigid = test::scene_with(json::parse(R"({"fill": {"ratio": 0.4}, "run": {"model": "rigid"}})"));
+    LaneSet lanes;
+    lanes.rebuild({grains, rigid});
+    CHECK(!lanes.ready());
+    lanes.wait_until_built();
+    REQUIRE(lanes.ready());
+    REQUIRE(lanes.size() == 2);
+    CHECK(lanes.lane(0).time_s() == 0.0);
+    CHECK(lanes.lane(1).time_s() == 0.0);
+    CHECK(lanes.lane(0).grains() > 0);
+    CHECK(lanes.lane(1).grains() == 0);
+
+    // Unlimited budget: both reach the target, in the same fixed steps.
+    FakeClock clock;
+    AdvanceResult r = lanes.advance_to(0.05, 1e9, std::ref(clock));
+    CHECK(!r.budget_hit);
+    CHECK(r.steps == 2 * 50);  // 1000 steps/s
+    CHECK(lanes.lane(0).time_s() == Approx(0.05));
+    CHECK(lanes.lane(1).time_s() == Approx(0.05));
+    CHECK(r.reached_s == Approx(0.05));
+
+    // A budget of ten clock ticks: the lanes stop early, side by side.
+    clock.tick = 1.0;
+    r = lanes.advance_to(1.0, 10.0, std::ref(clock));
+    CHECK(r.budget_hit);
+    CHECK(r.steps == 2 * 10);
+    CHECK(lanes.lane(0).time_s() == Approx(lanes.lane(1).time_s()));
+
+    // Played back, the reduced model reveals its measurements as time passes and ends as run_scene.
+    clock.tick = 0.0;
+    lanes.advance_to(1e9, 1e9, std::ref(clock));
+    CHECK(lanes.all_finished());
+    const RunResult full = run_scene(rigid);
+    CHECK(lanes.lane(1).measured().behaviour == full.measured.behaviour);
+    CHECK(lanes.lane(1).measured().impacts.size() == full.measured.impacts.size());
+    CHECK(lanes.lane(0).measured().behaviour != Behaviour::running);
+    CHECK(!lanes.trouble());
+
+    // A rebuild throws the old lanes away; bad scenes report their error instead of lanes.
+    lanes.rebuild({grains});
+    lanes.wait_until_built();
+    CHECK(lanes.size() == 1);
+}
+
+TEST_CASE("a reduced model's playback turns the polygon on its lowest vertex", "[app]") {
+    const Scene s = test::scene_with(json::parse(R"({"run": {"model": "rigid"}})"));
+    const ShellPose p0 = rolling_pose(s, 0.0, 0.0);
+    const Pose release = release_pose(s, shell_properties(s.shell));
+    CHECK(p0.angle_rad == Approx(release.angle_rad));
+    CHECK(p0.centre_m.x == Approx(release.centre_m.x));
+    CHECK(p0.centre_m.y == Approx(release.centre_m.y).margin(1e-9));
+    // One face further (360/n degrees) the polygon again rests on a vertex: the centre is at the
+    // same height, one side length down the ramp.
+    const double side = shell_properties(s.shell).outer_side_m;
+    const ShellPose p1 = rolling_pose(s, side, 360.0 / s.shell.sides);
+    CHECK(p1.centre_m.y == Approx(p0.centre_m.y).margin(1e-9));
+    LaneSet lanes;
+    lanes.rebuild({s});
+    lanes.wait_until_built();
+    const render::Snapshot snap = lanes.lane(0).snapshot();
+    CHECK(snapshot_finite(snap));
+    CHECK(snap.shell_centre_m.x == Approx(release.centre_m.x));
+}
+
+TEST_CASE("numerical trouble stops the lanes with a message and a finer preset to try", "[app]") {
+    CHECK(finer_fidelity("draft") == std::optional<std::string>("standard"));
+    CHECK(finer_fidelity("standard") == std::optional<std::string>("precise"));
+    CHECK(!finer_fidelity("reference"));
+    const Scene s = test::scene_with(json::object());
+    const std::string m = trouble_message(2, s, 1.5, "grains outside the shell");
+    CHECK_THAT(m, Catch::Contains("Lane 2") && Catch::Contains("1.500 s") && Catch::Contains("grains outside") &&
+                      Catch::Contains("precise"));
+    Scene finest = s;
+    finest.fidelity.preset = "reference";
+    CHECK_THAT(trouble_message(1, finest, 0.0, "x"), Catch::Contains("finest"));
+
+    render::Snapshot snap;
+    CHECK(snapshot_finite(snap));
+    snap.grains.push_back({{0.0, std::numeric_limits<double>::quiet_NaN()}, 0.001, 0.0});
+    CHECK(!snapshot_finite(snap));
+
+    LaneSet lanes;
+    lanes.rebuild({s});
+    lanes.wait_until_built();
+    lanes.report_non_finite(0);
+    REQUIRE(lanes.trouble());
+    CHECK_THAT(*lanes.trouble(), Catch::Contains("non-finite"));
+    FakeClock clock;
+    CHECK(lanes.advance_to(1.0, 1e9, std::ref(clock)).steps == 0);  // paused, not drawing garbage
+}
+
+TEST_CASE("plot data: readable ranges, impact markers on the trace, thinning", "[app]") {
+    CHECK(readable_ceil(0.37, 0.1) == Approx(0.5));
+    CHECK(readable_ceil(1.2, 1.0) == Approx(2.0));
+    CHECK(readable_ceil(0.0, 1.0) == Approx(1.0));
+    Measurements m;
+    for (int i = 0; i <= 100; ++i) {
+        TrajectorySample t;
+        t.time_s = i * 0.01;
+        t.speed_m_s = i <= 50 ? i * 0.01 : -0.02;
+        t.kinetic_J = 0.001 * i;
+        t.potential_J = -0.002 * i;
+        m.trajectory.push_back(t);
+    }
+    FaceImpact f;
+    f.time_s = 0.255;
+    m.impacts.push_back(f);
+    const PlotRange r = speed_range({&m});
+    CHECK(r.t_max_s == Approx(1.0));
+    CHECK(r.y_max == Approx(0.5));
+    CHECK(r.y_min == Approx(-0.02));
+    const PlotRange e = energy_range(m);
+    CHECK(e.y_min == Approx(-0.2));
+    CHECK(e.y_max == Approx(0.1));
+    const std::vector<PlotPoint> marks = impact_markers(m);
+    REQUIRE(marks.size() == 1);
+    CHECK(marks[0].t_s == 0.255);
+    CHECK(marks[0].y == Approx(0.255));
+    const std::vector<PlotPoint> thin = series(m, Series::speed, 10);
+    CHECK(thin.size() <= 12);
+    CHECK(thin.back().t_s == Approx(1.0));  // the latest value is always shown
+    CHECK(series(m, Series::potential, 1000).size() == 101);
+}
+
+TEST_CASE("pan and zoom keep the point under the mouse where it is, and lanes stack as parallel ramps", "[app]") {
+    const render::PxRect area{400, 0, 880, 500};
+    render::Camera framed;
+    framed.centre_m = {1.0, -0.3};
+    framed.anchor = {840, 20};
+    framed.px_per_m = 350;
+    ViewTransform v;
+    const render::Px at{700, 300};
+    const geom::Vec2 world{(at.x - framed.anchor.x) / framed.px_per_m + framed.centre_m.x,
+                           -(at.y - framed.anchor.y) / framed.px_per_m + framed.centre_m.y};
+    v.zoom_at(at, 2.0, area);
+    v.zoom_at(at, 1.5, area);
+    const render::Px back = v.apply(framed, area).to_px(world);
+    CHECK(back.x == Approx(at.x).margin(1e-3));
+    CHECK(back.y == Approx(at.y).margin(1e-3));
+    CHECK(v.apply(framed, area).px_per_m == Approx(3.0 * 350));
+    v.pan_by(10, -5);
+    CHECK(v.apply(framed, area).to_px(world).x == Approx(at.x + 10).margin(1e-3));
+    v.zoom_at(at, 1e9, area);
+    CHECK(v.zoom == kMaxZoom);
+    v.reset();
+    CHECK(v.zoom == 1.0);
+
+    // Three lanes: one camera each, the same scale, each ramp below the one before.
+    Scene s = test::scene_with(json::object());
+    LaneSet lanes;
+    lanes.rebuild({s, s, s});
+    lanes.wait_until_built();
+    std::vector<render::Snapshot> snaps;
+    for (size_t i = 0; i < 3; ++i) snaps.push_back(lanes.lane(i).snapshot());
+    const LaneLayout L = lane_layout(snaps, area, false, 1.0f, ViewTransform{});
+    REQUIRE(L.cameras.size() == 3);
+    CHECK(L.lane_spacing_px > 0);
+    for (size_t i = 1; i < 3; ++i) {
+        CHECK(L.cameras[i].px_per_m == L.cameras[0].px_per_m);
+        CHECK(L.cameras[i].anchor.y == Approx(L.cameras[0].anchor.y + i * L.lane_spacing_px));
+    }
+    // Every ramp's lower end is inside the view.
+    const render::Px end = L.cameras[2].to_px(render::ramp_to_world({s.ramp.length_m, 0.0}, s.ramp.angle_deg));
+    CHECK(end.y <= area.y + area.height);
+    CHECK(end.x <= area.x + area.width + 1);
+    const LaneLayout F = lane_layout(snaps, area, true, 1.0f, ViewTransform{});
+    CHECK(F.cameras[0].px_per_m > L.cameras[0].px_per_m);  // following zooms in
+}
+
+TEST_CASE("the scene view draws every lane's shell inside the view, with labels when racing", "[app]") {
+    const Scene s = test::scene_with(json::object());
+    LaneSet lanes;
+    lanes.rebuild({s, s});
+    lanes.wait_until_built();
+    const std::vector<render::Snapshot> snaps = {lanes.lane(0).snapshot(), lanes.lane(1).snapshot()};
+    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
+    SceneViewOptions o;
+    o.width_px = 1280;
+    o.height_px = 800;
+    o.area = {400, 47, 880, 465};
+    const render::DrawList dl = build_scene_view(snaps, {"a", "b"}, o, font);
+    CHECK(dl.width_px == 1280);
+    int walls = 0, glyphs = 0;
+    for (const render::Layer& l : dl.layers) {
+        glyphs += static_cast<int>(l.glyphs.size());
+        for (const render::Triangle& t : l.triangles)
+            if (t.tag == render::Tag::shell_wall) {
+                ++walls;
+                for (const render::Px& p : {t.a, t.b, t.c}) {
+                    CHECK(p.x >= o.area.x - 1);
+                    CHECK(p.y >= o.area.y - 1);
+                }
+            }
+    }
+    CHECK(walls >= 3 * 2 * s.shell.sides);  // two lanes and the close-up
+    CHECK(glyphs > 0);
+    CHECK(lane_colour(0) != lane_colour(1));
+}
+
+TEST_CASE("readouts say what is known, in SI units", "[app]") {
+    const Scene s = test::scene_with(json::parse(R"({"fill": {"ratio": 0.4}})"));
+    Measurements m;
+    TrajectorySample t;
+    t.position_m = 0.1234;
+    t.speed_m_s = -0.001;
+    m.trajectory.push_back(t);
+    LaneReadout r = lane_readout(s, m, 1.5);
+    CHECK(r.title == "n = 6, r = 0.4 BBs");
+    CHECK(r.time == "1.50 s");
+    CHECK(r.position == "0.123 m");
+    CHECK(r.speed == "0.00 m/s");
+    CHECK(r.behaviour == "rolling");
+    CHECK(r.distance == "-");
+    m.behaviour = Behaviour::rolled_to_end;
+    m.distance_m = 2.4;
+    m.terminal_velocity_m_s = 0.61;
+    r = lane_readout(s, m, 3.0);
+    CHECK(r.distance == "2.400 m");
+    CHECK(r.terminal == "0.610 m/s");
+    CHECK(r.behaviour == "rolled to the end");
+}
+
+TEST_CASE("exports write polyroll run's files per lane under numbered names", "[app]") {
+    const fs::path dir = fs::temp_directory_path() / "polyroll-app-test-export";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    CHECK(next_numbered(dir, "run", "") == dir / "run-001");
+    const RunResult r = run_scene(test::scene_with(json::parse(R"({"run": {"model": "rigid"}})")));
+    const auto one = export_runs(next_numbered(dir, "run", ""), {r});
+    REQUIRE(one.size() == 1);
+    CHECK(fs::exists(dir / "run-001" / "summary.json"));
+    CHECK(fs::exists(dir / "run-001" / "trajectory.csv"));
+    CHECK(fs::exists(dir / "run-001" / "impacts.csv"));
+    CHECK(next_numbered(dir, "run", "") == dir / "run-002");
+    export_runs(next_numbered(dir, "run", ""), {r, r});
+    CHECK(fs::exists(dir / "run-002" / "lane-2" / "trajectory.csv"));
+    fs::remove_all(dir);
+}

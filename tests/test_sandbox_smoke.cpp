@@ -1,0 +1,137 @@
+// The sandbox window end to end: under Xvfb (xvfb-run, from Debian's xvfb package) it runs a few
+// hundred frames and saves a screenshot whose pixels show the panel's background where the panel
+// is and the shell standing on the ramp; without a display it renders the default scene headless
+// and says where the frames went; bad flags exit 2 with one line.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <sys/wait.h>
+
+#include "app/sandbox_settings.h"
+#include "render/colour.h"
+#include "render/png_writer.h"
+
+namespace fs = std::filesystem;
+using namespace polyroll;
+
+namespace {
+
+struct Run {
+    int exit_code = -1;
+    std::string out;
+};
+
+Run run(const std::string& cmd) {
+    Run r;
+    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path p = fs::temp_directory_path() / ("polyroll-sandbox-test-" + name);
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+struct Image {
+    render::DecodedPng png;
+    std::array<int, 3> at(int x, int y) const {
+        const size_t i = (static_cast<size_t>(y) * static_cast<size_t>(png.width) + static_cast<size_t>(x)) * 3;
+        return {png.rgb[i], png.rgb[i + 1], png.rgb[i + 2]};
+    }
+};
+
+std::array<int, 3> rgb(render::Rgba c) {
+    return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
+            static_cast<int>(std::lround(c.b * 255))};
+}
+
+bool near(std::array<int, 3> a, std::array<int, 3> b, int tol) {
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(a[i] - b[i]) > tol) return false;
+    return true;
+}
+
+const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
+
+}  // namespace
+
+TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox]") {
+    const Run which = run("command -v xvfb-run");
+    INFO("xvfb-run is needed (Debian package xvfb, in third_party/debian-packages.txt)");
+    REQUIRE(which.exit_code == 0);
+    const fs::path dir = scratch("smoke");
+    const fs::path shot = dir / "shot.png";
+    const Run r = run("cd " + dir.string() + " && " + kXvfb + POLYROLL_SANDBOX_EXE + " --screenshot " + shot.string() +
+                      " --frames 300");
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(fs::exists(shot));
+    Image img{render::read_png(shot)};
+    REQUIRE(img.png.width == app::kDefaultWidthPx);
+    REQUIRE(img.png.height == app::kDefaultHeightPx);
+
+    // The panel: its background colour fills much of the left column the panel occupies.
+    const int panel_w = static_cast<int>(app::kPanelWidthPx);
+    long panel_px = 0, total = 0;
+    for (int y = 0; y < img.png.height; y += 2)
+        for (int x = 0; x < panel_w; x += 2, ++total)
+            if (img.at(x, y) == app::kPanelBackgroundRgb) ++panel_px;
+    INFO("panel background share " << static_cast<double>(panel_px) / total);
+    CHECK(panel_px > total / 4);
+    // ... and not in the scene view, which has the renderer's background.
+    CHECK(img.at(img.png.width - 20, 200) == rgb(render::palette::background));
+
+    // The shell: its wall colour right of the panel, and the ramp directly under its lowest pixel.
+    const auto wall = rgb(render::palette::shell_wall);
+    int low_x = -1, low_y = -1;
+    long wall_px = 0;
+    for (int y = 0; y < img.png.height; ++y)
+        for (int x = panel_w; x < img.png.width; ++x)
+            if (near(img.at(x, y), wall, 2)) {
+                ++wall_px;
+                if (y > low_y) low_x = x, low_y = y;
+            }
+    INFO("shell wall pixels " << wall_px);
+    REQUIRE(wall_px > 50);
+    bool ramp_below = false;
+    for (int y = low_y; y < std::min(img.png.height, low_y + 30); ++y) {
+        const auto c = img.at(low_x, y);
+        if (near(c, rgb(render::palette::ramp_surface), 40) || near(c, rgb(render::palette::ramp_body), 12)) ramp_below = true;
+    }
+    CHECK(ramp_below);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("without a display the sandbox renders the default scene headless and says where", "[app][sandbox]") {
+    const fs::path dir = scratch("fallback");
+    const Run r = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + POLYROLL_SANDBOX_EXE);
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("no display") && Catch::Contains("headless"));
+    CHECK_THAT(r.out, Catch::Contains("runs/default"));  // polyroll render's own lines name the folder
+    CHECK(fs::exists(dir / "runs" / "default" / "frame_000001.png"));
+    CHECK(fs::exists(dir / "runs" / "default" / "summary.json"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][sandbox]") {
+    for (const std::string& args : {std::string("--preset nope"), std::string("--frames -3"),
+                                    std::string("--ui-scale 9"), std::string("--size 10x10"),
+                                    std::string("--screenshot x.png")}) {
+        INFO(args);
+        const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + args);
+        CHECK(r.exit_code == 2);
+        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        CHECK_THAT(r.out, Catch::Contains("allowed") || Catch::Contains("needs"));
+    }
+}
