@@ -42,7 +42,7 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     // Bounded by the validation's grain limit with room for packings denser than its estimate.
     const size_t max_count = static_cast<size_t>(2.0 * kMaxGrains);
     const std::vector<Disc> discs =
-        deposit_grains(inner, up, plan.surface_level_m, next_radius, r_max, max_count);
+        deposit_grains(inner, up, plan.surface_level_m, next_radius, r_max, max_count, [&] { return rng.uniform(); });
     double area_sum = 0.0;
     for (const Disc& d : discs) {
         plan.grains.push_back({d.centre, d.radius, 0.0});

@@ -55,7 +55,7 @@ struct Edge {
 
 std::vector<Disc> deposit_grains(const std::vector<Vec2>& poly, Vec2 up, double surface_level,
                                  const std::function<double()>& next_radius, double max_radius,
-                                 std::size_t max_count) {
+                                 std::size_t max_count, const std::function<double()>& tie_break) {
     std::vector<Disc> discs;
     const size_t n = poly.size();
     std::vector<Edge> edges(n);
@@ -65,7 +65,7 @@ std::vector<Disc> deposit_grains(const std::vector<Vec2>& poly, Vec2 up, double 
         edges[i].normal = {-e.y / len, e.x / len};  // inward for a counter-clockwise polygon
         edges[i].offset = geom::dot(edges[i].normal, poly[i]);
     }
-    const Vec2 right = {up.y, -up.x};
+    const double tie = 1e-9 * max_radius;  // heights closer than this are equal
     const double gap = 1e-3 * max_radius;  // each grain is placed as if this much larger
     const double eps = 1e-9 * max_radius;
     Grid grid(poly, 2.0 * (max_radius + gap));
@@ -84,14 +84,22 @@ std::vector<Disc> deposit_grains(const std::vector<Vec2>& poly, Vec2 up, double 
             });
             return ok;
         };
-        double best_h = std::numeric_limits<double>::infinity(), best_w = best_h;
+        double best_h = std::numeric_limits<double>::infinity();
         Vec2 best{};
+        int ties = 0;  // places found so far at the best height
         auto consider = [&](Vec2 p) {
-            const double h = geom::dot(p, up), w = geom::dot(p, right);
-            if (h > best_h || (h == best_h && w >= best_w)) return;
-            if (!fits(p)) return;
-            best_h = h;
-            best_w = w;
+            const double h = geom::dot(p, up);
+            if (h > best_h + tie || !fits(p)) return;
+            const bool tied = h >= best_h - tie;
+            // Equally low places are mirror images in a symmetric pile: choosing by position (or by
+            // rounding noise) would lean every pile the same way, so one is drawn, each as likely.
+            if (tied) {
+                ++ties;
+                if (tie_break() * ties >= 1.0) return;
+            } else {
+                ties = 1;
+            }
+            best_h = tied ? std::min(best_h, h) : h;
             best = p;
         };
         // Against two adjacent walls: the corner, offset inwards by the radius.

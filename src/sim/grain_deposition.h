@@ -21,9 +21,10 @@ struct Disc {
 // `poly`: convex, counter-clockwise. `up`: unit vector against gravity. Grains whose centre would lie
 // above `surface_level` (along `up`) are not placed; if not even the first fits below it, the lowest
 // single grain is placed, so a small fill keeps its mass. `next_radius` draws each grain's radius,
-// never above `max_radius`. Neighbouring grains are left a gap of 0.2% of `max_radius`.
+// never above `max_radius`. Neighbouring grains are left a gap of 0.2% of `max_radius`. Among
+// equally low places one is drawn with `tie_break` (uniform in [0, 1)), so piles have no lean.
 std::vector<Disc> deposit_grains(const std::vector<geom::Vec2>& poly, geom::Vec2 up, double surface_level,
                                  const std::function<double()>& next_radius, double max_radius,
-                                 std::size_t max_count);
+                                 std::size_t max_count, const std::function<double()>& tie_break);
 
 }  // namespace polyroll

@@ -36,6 +36,7 @@ json summary_json(const RunResult& r) {
     results["fill_mass_kg"] = r.fill_mass_kg;
     results["settle_time_s"] = r.settle_time_s;
     results["settled"] = r.settled;
+    results["release_balance_correction_deg"] = r.balance_correction_deg;
     results["max_energy_gain_J"] = m.max_energy_gain_J;
     results["steps"] = r.steps;
     results["model_valid"] = r.model_valid;

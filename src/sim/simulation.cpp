@@ -35,6 +35,7 @@ RunResult Simulation::result() const {
     for (const PlannedGrain& g : world_->fill.grains) r.fill_mass_kg += g.mass_kg;
     r.settle_time_s = world_->settle_time_s;
     r.settled = world_->settled;
+    r.balance_correction_deg = world_->balance_correction_deg;
     r.steps = steps_;
     return r;
 }

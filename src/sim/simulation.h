@@ -21,6 +21,7 @@ struct RunResult {
     double fill_mass_kg = 0.0;
     double settle_time_s = 0.0;
     bool settled = true;
+    double balance_correction_deg = 0.0;  // see balance_on_pivot in world_builder.cpp
     long steps = 0;
     double wall_time_s = 0.0;  // building, settling and running, measured by the caller's clock
     // The reduced models assume the polygon stays on the ramp; false once the normal force they need

@@ -16,6 +16,45 @@ b2Vec2 to_b2(Vec2 v_m, const EngineUnits& u) {
     return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
 }
 
+// A settled pile is never quite symmetric, and a full polygon's fill outweighs its shell several
+// times: a millimetre's lean of the pile moves the whole body's centre of mass further than the
+// release tilt does. The hand that holds the polygon on its vertex feels the balance of the whole
+// thing, so the shell and its settled grains are turned together about the pivot until the centre of
+// mass of everything lies release.tilt_deg past the vertical through the pivot, downhill. Returns the
+// turn made, in degrees (counter-clockwise positive).
+double balance_on_pivot(SimWorld& w, double theta) {
+    const EngineUnits& u = w.units;
+    const double shell_mass = w.shell_props.mass_kg;
+    const b2Vec2 centre = w.shell->GetPosition();
+    double mx = shell_mass * centre.x, my = shell_mass * centre.y, mass = shell_mass;
+    for (const b2Body* b : w.grains) {
+        mx += b->GetMass() * b->GetPosition().x;
+        my += b->GetMass() * b->GetPosition().y;
+        mass += b->GetMass();
+    }
+    const geom::Vec2 v1 = w.outer_local_m[1];
+    const b2Vec2 pivot = w.shell->GetWorldPoint(b2Vec2(static_cast<float>(u.to_units(v1.x)),
+                                                       static_cast<float>(u.to_units(v1.y))));
+    const geom::Vec2 lean = {mx / mass - pivot.x, my / mass - pivot.y};
+    const geom::Vec2 up = {-std::sin(theta), std::cos(theta)};
+    const double lean_rad = std::atan2(geom::cross(up, lean), geom::dot(up, lean));  // + is uphill
+    const double target_rad = -w.scene.release.tilt_deg * geom::kPi / 180.0;
+    // Keep both neighbouring faces off the ramp: face (0, 1) lies `turned` above it, face (1, 2)
+    // a face's turn less.
+    const double turned = -w.shell->GetAngle();
+    const double face_turn = 2.0 * geom::kPi / w.scene.shell.sides;
+    const double delta = std::clamp(target_rad - lean_rad, -0.9 * (face_turn - turned), 0.9 * turned);
+    auto turn = [&](b2Body* b) {
+        const b2Vec2 rel = b->GetPosition() - pivot;
+        const geom::Vec2 r = geom::rotate({rel.x, rel.y}, delta);
+        b->SetTransform(pivot + b2Vec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                        b->GetAngle() + static_cast<float>(delta));
+    };
+    turn(w.shell);
+    for (b2Body* b : w.grains) turn(b);
+    return delta * 180.0 / geom::kPi;
+}
+
 }  // namespace
 
 void ContactMaterials::BeginContact(b2Contact* contact) {
@@ -181,6 +220,8 @@ std::unique_ptr<SimWorld> build_world(const Scene& scene) {
             b->SetLinearVelocity(b2Vec2_zero);
             b->SetAngularVelocity(0.0f);
         }
+        if (scene.release.pose == ReleasePose::vertex && theta < geom::kPi / sp.sides)
+            w->balance_correction_deg = balance_on_pivot(*w, theta);
     }
 
     // Let go: the shell becomes dynamic with the real box's mass and moment of inertia about its

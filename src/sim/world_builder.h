@@ -41,6 +41,7 @@ struct SimWorld {
     double end_centre_x_m = 0.0;            // the run ends when the centre passes this
     double settle_time_s = 0.0;             // how long the grains were given before release
     bool settled = true;                    // the grains came to rest within run.settle_time_s
+    double balance_correction_deg = 0.0;    // turn that put the whole centre of mass past balance
 
     std::unique_ptr<ContactMaterials> materials;  // declared before the world: outlives it
     std::unique_ptr<b2World> world;

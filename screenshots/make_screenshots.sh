@@ -1,0 +1,25 @@
+#!/bin/sh
+# Remakes every image in screenshots/ from the current build, so they stay real captures of the
+# current program. Needs a build (build/polyroll, build/polyroll-sandbox) and xvfb-run.
+# Usage: screenshots/make_screenshots.sh [build-folder]
+set -eu
+build=${1:-build}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# Headless frames (polyroll render): pick one frame of each sequence.
+"$build/polyroll" render --fill 0.5 --angle 25 --out "$work/whole" >/dev/null 2>&1
+cp "$work/whole/frame_000045.png" "$here/render-whole-ramp.png"            # t = 1.47 s
+"$build/polyroll" render --sides 8 --fill 0.375 --material peas --angle 18 --follow --colour-by speed \
+    --out "$work/peas" >/dev/null 2>&1
+cp "$work/peas/frame_000060.png" "$here/render-follow-speed-colours.png"    # t = 1.97 s
+"$build/polyroll" render --fill 0.25 --material rice --angle 30 --follow --slow 4 --out "$work/rice" >/dev/null 2>&1
+cp "$work/rice/frame_000090.png" "$here/render-follow-rice.png"            # t = 0.74 s, slowed 4x
+
+# The sandbox window under Xvfb; each frame advances 1/60 s of simulated time.
+sandbox() { xvfb-run -a -s "-screen 0 1280x800x24" "$build/polyroll-sandbox" "$@" >/dev/null; }
+sandbox --screenshot "$here/sandbox-default.png" --frames 30                      # t = 0.5 s
+sandbox --preset race --screenshot "$here/sandbox-race.png" --frames 80           # t = 1.33 s
+sandbox --preset hexagon-bb --screenshot "$here/sandbox-stopped.png" --frames 180 # past its stop
+echo "screenshots remade in $here"
