@@ -141,3 +141,33 @@ TEST_CASE("a shell nearing the engine's per-step speed limit is stopped as diver
     CHECK(r.measured.behaviour == Behaviour::diverged);
     CHECK(r.measured.divergence.find("engine's limit") != std::string::npos);
 }
+
+TEST_CASE("held on a vertex, the whole polygon with its fill is released just past balance", "[runs][release]") {
+    for (double fill : {0.25, 0.5, 1.0}) {
+        for (const char* material : {"bb", "rice"}) {
+            const Scene s = test::scene_with({{"fill", {{"ratio", fill}, {"material", material}}},
+                                              {"ramp", {{"angle_deg", 16}}}});
+            auto w = build_world(s);
+            double mx = w->shell_props.mass_kg * w->shell->GetPosition().x;
+            double my = w->shell_props.mass_kg * w->shell->GetPosition().y, mass = w->shell_props.mass_kg;
+            for (const b2Body* b : w->grains) {
+                mx += b->GetMass() * b->GetPosition().x;
+                my += b->GetMass() * b->GetPosition().y;
+                mass += b->GetMass();
+            }
+            const geom::Vec2 v1 = w->outer_local_m[1];
+            const b2Vec2 pivot = w->shell->GetWorldPoint(
+                b2Vec2(static_cast<float>(w->units.to_units(v1.x)), static_cast<float>(w->units.to_units(v1.y))));
+            const double theta = 16.0 * geom::kPi / 180.0;
+            const geom::Vec2 lean = {mx / mass - pivot.x, my / mass - pivot.y};
+            const geom::Vec2 up = {-std::sin(theta), std::cos(theta)};
+            const double lean_deg = std::atan2(geom::cross(up, lean), geom::dot(up, lean)) * 180.0 / geom::kPi;
+            INFO(material << ", r = " << fill);
+            CHECK(lean_deg == Approx(-s.release.tilt_deg).margin(0.02));
+        }
+    }
+    // So a full polygon, which behaves like a solid one, rolls forward rather than tipping back.
+    const RunResult full = checked_run(test::scene_with({{"fill", {{"ratio", 1.0}}}, {"ramp", {{"angle_deg", 16}}}}));
+    CHECK(full.measured.distance_m > 0.0);
+    CHECK(full.measured.behaviour == Behaviour::rolled_to_end);
+}
