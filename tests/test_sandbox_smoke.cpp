@@ -65,7 +65,10 @@ const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
 
 }  // namespace
 
-TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox]") {
+// [no-asan]: under AddressSanitizer, Mesa's GLX driver (loaded with dlopen and unloaded before exit)
+// leaves allocations LeakSanitizer reports from an "<unknown module>", which no suppression can name;
+// tests/ci_checks.sh skips this one test in its sanitizer run. The plain build runs it as before.
+TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox][no-asan]") {
     const Run which = run("command -v xvfb-run");
     INFO("xvfb-run is needed (Debian package xvfb, in third_party/debian-packages.txt)");
     REQUIRE(which.exit_code == 0);

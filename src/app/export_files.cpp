@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 
 fs::path next_numbered(const fs::path& dir, const std::string& stem, const std::string& ext) {
     for (int k = 1;; ++k) {
-        const fs::path p = dir / fmt::format("{}-{:03d}{}", stem, k, ext);
+        fs::path p = dir / fmt::format("{}-{:03d}{}", stem, k, ext);
         std::error_code ec;
         if (!fs::exists(p, ec)) return p;
     }

@@ -32,6 +32,7 @@
 #include "render/gl_renderer.h"
 #include "render/png_writer.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 
 namespace polyroll::app {
 namespace {
@@ -429,7 +430,7 @@ int sandbox_main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
         return kExitBadInput;
     }
     SandboxState state;
@@ -437,7 +438,7 @@ int sandbox_main(int argc, char** argv) {
         check(o);
         state = state_for_preset(o.preset);
     } catch (const InputError& e) {
-        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
         return kExitBadInput;
     }
     state.follow = o.follow;
@@ -467,7 +468,7 @@ int main(int argc, char** argv) {
     try {
         return polyroll::app::sandbox_main(argc, argv);
     } catch (const std::exception& e) {
-        fmt::print(stderr, "polyroll-sandbox: {}\n", e.what());
+        fmt::print(stderr, "polyroll-sandbox: {}\n", polyroll::printable_line(e.what()));
         return 1;
     }
 }

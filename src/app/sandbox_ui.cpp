@@ -297,14 +297,24 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
     auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
     auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
     // Ticks: about five per axis, at 1, 2 or 5 times a power of ten.
+    // Integer tick counters: a float counter never ends when the step is 0 or NaN (an empty plot).
+    auto last_tick = [](double first, double last, double step) {
+        const double n = std::floor((last + 1e-9 - first) / step);
+        return step > 0.0 && std::isfinite(n) ? static_cast<int>(std::clamp(n, -1.0, 100.0)) : -1;
+    };
     const double t_step = render::nice_ceil(r.t_max_s / 5.0);
-    for (double t = 0.0; t <= r.t_max_s + 1e-9; t += t_step) {
+    const int t_ticks = last_tick(0.0, r.t_max_s, t_step);
+    for (int k = 0; k <= t_ticks; ++k) {
+        const double t = k * t_step;
         dl->AddLine({X(t), a0.y}, {X(t), a1.y}, grid);
         const std::string l = fmt::format("{:g}", std::round(t * 1000.0) / 1000.0);
         dl->AddText({X(t) - ImGui::CalcTextSize(l.c_str()).x / 2, a1.y + fs * 0.15f}, text, l.c_str());
     }
     const double y_step = render::nice_ceil((r.y_max - r.y_min) / 4.0);
-    for (double v = std::ceil(r.y_min / y_step - 1e-9) * y_step; v <= r.y_max + 1e-9; v += y_step) {
+    const double y_first = std::ceil(r.y_min / y_step - 1e-9) * y_step;
+    const int y_ticks = last_tick(y_first, r.y_max, y_step);
+    for (int k = 0; k <= y_ticks; ++k) {
+        const double v = y_first + k * y_step;
         dl->AddLine({a0.x, Y(v)}, {a1.x, Y(v)}, std::fabs(v) < 1e-12 ? axis : grid);
         const double shown = std::fabs(v) < 1e-12 ? 0.0 : std::round(v * 1e4) / 1e4;  // never "-0"
         const std::string l = fmt::format("{:g}", shown);
@@ -373,6 +383,7 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     if (ImGui::Button("Run to end")) req.run_to_end = true;
     tip("Compute the rest of the run as fast as possible without drawing it, then show the end (G).");
     std::vector<std::string> slow_labels;
+    slow_labels.reserve(std::size(kSlowMotionDivisors));
     for (int d : kSlowMotionDivisors) slow_labels.push_back(d == 1 ? "1\u00D7 (real time)" : fmt::format("1/{}\u00D7", d));
     if (ImGui::BeginCombo("slow motion", slow_labels[static_cast<size_t>(s.slow_index)].c_str())) {
         for (size_t i = 0; i < slow_labels.size(); ++i)

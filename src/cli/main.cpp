@@ -5,27 +5,16 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.h"
+#include "cli/command_table.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 
 int main(int argc, char** argv) {
     using namespace polyroll::cli;
     CLI::App app{"polyroll: hollow polygons partly filled with grains, rolling down an incline (2D, Box2D).\n"
                  "Units are SI (m, kg, s, m/s) and degrees."};
     app.require_subcommand(1);
-    std::vector<std::pair<CLI::App*, Action>> commands;
-    auto add = [&](Action (*adder)(CLI::App&)) {
-        Action a = adder(app);
-        commands.emplace_back(app.get_subcommands({}).back(), std::move(a));
-    };
-    add(add_run_command);
-    add(add_presets_command);
-    add(add_render_command);
-    add(add_compare_command);
-    add(add_sweep_command);
-    add(add_figures_command);
-    add(add_tradeoff_command);
-    add(add_bench_command);
+    auto commands = add_all_commands(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -34,17 +23,17 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         // One line naming the bad flag or value; usage is one --help away.
-        fmt::print(stderr, "polyroll: {} (see polyroll --help)\n", e.what());
+        fmt::print(stderr, "polyroll: {} (see polyroll --help)\n", polyroll::printable_line(e.what()));
         return kExitBadInput;
     }
     try {
         for (auto& [sub, action] : commands)
             if (sub->parsed()) return action();
     } catch (const polyroll::InputError& e) {
-        fmt::print(stderr, "polyroll: {}\n", e.what());
+        fmt::print(stderr, "polyroll: {}\n", polyroll::printable_line(e.what()));
         return kExitBadInput;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "polyroll: error: {}\n", e.what());
+        fmt::print(stderr, "polyroll: error: {}\n", polyroll::printable_line(e.what()));
         return kExitFailure;
     }
     return kExitFailure;

@@ -81,11 +81,18 @@ std::string find_on_path(const std::string& name) {
     return {};
 }
 
-std::vector<std::string> ffmpeg_args(const std::string& ffmpeg, const RenderOptions& o) {
+// ffmpeg writes the video under a temporary name beside it (same extension: it names the format) that
+// is renamed into place once whole, so a killed render never leaves half a video under its name.
+fs::path video_temp_path(const std::string& video) {
+    const fs::path v(video);
+    return v.parent_path() / fmt::format(".{}.tmp-{}{}", v.stem().string(), ::getpid(), v.extension().string());
+}
+
+std::vector<std::string> ffmpeg_args(const std::string& ffmpeg, const RenderOptions& o, const std::string& output) {
     return {ffmpeg, "-y", "-hide_banner", "-loglevel", "error", "-framerate", fmt::format("{:g}", o.fps), "-i",
             (fs::path(o.out) / "frame_%06d.png").string(),
             // yuv420p plays everywhere but needs even sides.
-            "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", o.video};
+            "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", output};
 }
 
 std::string shell_quote(const std::string& s) {
@@ -106,6 +113,7 @@ std::string command_line(const std::vector<std::string>& args) {
 // Runs ffmpeg and waits; returns its exit status (or -1 if it could not start).
 int run_ffmpeg(const std::vector<std::string>& args) {
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     pid_t pid = 0;
@@ -122,7 +130,7 @@ std::string no_ffmpeg_message(const RenderOptions& o) {
         "  Install it with:  sudo apt-get install ffmpeg\n"
         "  then make the video from these frames with:\n"
         "  {}",
-        o.video, o.out, command_line(ffmpeg_args("ffmpeg", o)));
+        o.video, o.out, command_line(ffmpeg_args("ffmpeg", o, o.video)));
 }
 
 // A progress line: in place on a terminal, otherwise a line every tenth of the way.
@@ -239,11 +247,18 @@ int render(const RenderOptions& o) {
             fmt::print(stderr, "polyroll: {}\n", no_ffmpeg_message(o));
             return code == kExitOk ? kExitFailure : code;
         }
-        const int status = run_ffmpeg(ffmpeg_args(ffmpeg, o));
+        const fs::path temp = video_temp_path(o.video);
+        int status = run_ffmpeg(ffmpeg_args(ffmpeg, o, temp.string()));
+        std::error_code ec;
+        if (status == 0) {
+            fs::rename(temp, o.video, ec);
+            if (ec) status = -1;
+        }
         if (status != 0) {
+            fs::remove(temp, ec);
             fmt::print(stderr, "polyroll: --video {}: ffmpeg failed (exit status {}); the frames are in {}. The command "
                                "was:\n  {}\n",
-                       o.video, status, o.out, command_line(ffmpeg_args(ffmpeg, o)));
+                       o.video, status, o.out, command_line(ffmpeg_args(ffmpeg, o, o.video)));
             return code == kExitOk ? kExitFailure : code;
         }
         fmt::print("  video      {}\n", o.video);

@@ -2,6 +2,7 @@
 #include "cli/scene_options.h"
 
 #include <cstdint>
+#include <type_traits>
 
 #include "sim/scene_json.h"
 
@@ -15,6 +16,14 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
     // The value lives on the heap so the flag's reader stays valid however flags_ grows.
     auto value = std::make_shared<T>();
     CLI::Option* o = app.add_option(name, *value, help)->group("Scene");
+    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1): refuse a sign.
+    if constexpr (std::is_unsigned_v<T>)
+        o->check(CLI::Validator(
+            [](const std::string& text) {
+                return text.find('-') == std::string::npos ? std::string()
+                                                           : "must be a whole number from 0 to 2^64-1, got " + text;
+            },
+            "UINT"));
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
 

@@ -128,7 +128,7 @@ FontAtlas::FontAtlas(const std::string& font_dir, const std::vector<FontSpec>& s
             bm.pixels.resize(static_cast<size_t>(bm.g.w) * static_cast<size_t>(bm.g.h));
             for (int row = 0; row < bm.g.h; ++row)
                 for (int col = 0; col < bm.g.w; ++col)
-                    bm.pixels[static_cast<size_t>(row * bm.g.w + col)] =
+                    bm.pixels[static_cast<size_t>(row) * static_cast<size_t>(bm.g.w) + static_cast<size_t>(col)] =
                         slot->bitmap.buffer[row * slot->bitmap.pitch + col];
             bitmaps.push_back(std::move(bm));
         }
@@ -156,8 +156,8 @@ FontAtlas::FontAtlas(const std::string& font_dir, const std::vector<FontSpec>& s
     pixels_.assign(static_cast<size_t>(width_) * static_cast<size_t>(height_), 0);
     for (const Bitmap& bm : bitmaps) {
         for (int row = 0; row < bm.g.h; ++row)
-            std::copy_n(bm.pixels.begin() + row * bm.g.w, bm.g.w,
-                        pixels_.begin() + static_cast<std::ptrdiff_t>((bm.g.y + row) * width_ + bm.g.x));
+            std::copy_n(bm.pixels.begin() + static_cast<std::ptrdiff_t>(row) * bm.g.w, bm.g.w,
+                        pixels_.begin() + static_cast<std::ptrdiff_t>(bm.g.y + row) * width_ + bm.g.x);
         sizes_[bm.spec].glyphs[bm.code] = bm.g;
     }
 }

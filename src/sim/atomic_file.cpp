@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <csignal>
+#include <regex>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -40,6 +42,24 @@ void write_file_atomic(const fs::path& path, std::string_view content, Durabilit
     }
 }
 
+namespace {
+
+// A killed writer leaves its temporary behind (never half a file under the real name). When the
+// folder is used again they are removed, unless the process that wrote one is still running.
+void remove_stale_temporaries(const fs::path& dir) {
+    static const std::regex temporary(R"(\..+\.tmp-(\d{1,9})(\..*)?)");
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        std::smatch m;
+        if (!std::regex_match(name, m, temporary)) continue;
+        const auto pid = static_cast<pid_t>(std::stol(m[1].str()));
+        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
+    }
+}
+
+}  // namespace
+
 std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
     std::error_code ec;
     std::optional<fs::path> created;
@@ -50,6 +70,7 @@ std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
             throw InputError(fmt::format("--out {}: folder exists and is not empty (use --force to overwrite "
                                          "its files, or choose a new folder)",
                                          dir.string()));
+        remove_stale_temporaries(dir);
     } else {
         // The first missing ancestor is what to remove if the run fails.
         fs::path top = fs::absolute(dir, ec).lexically_normal();

@@ -18,7 +18,8 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
                        Durability durability = Durability::synced);
 
 // Makes `dir` ready for a run's files before any work is done, so a bad folder fails at once.
-// Refuses a non-empty folder unless `force`; checks that files can be created in it. Returns the
+// Refuses a non-empty folder unless `force`; checks that files can be created in it; removes the
+// temporaries of killed writers (write_file_atomic's, whose process is gone). Returns the
 // topmost folder it created, if any, for the caller to remove if the run fails. Throws InputError.
 std::optional<std::filesystem::path> prepare_output_dir(const std::filesystem::path& dir, bool force);
 

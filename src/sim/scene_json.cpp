@@ -1,6 +1,7 @@
 // Scene JSON: layering presets and overrides, type checks, and the resolved form. See scene_json.h.
 #include "sim/scene_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -13,6 +14,7 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll {
@@ -88,6 +90,16 @@ void write_fields(json& out, const S& params, const std::vector<Field<S>>& field
 }
 const std::vector<std::string> kSections = {"shell", "fill", "ramp", "release", "fidelity", "run"};
 
+// A value as it appears in a message: JSON text, short, and never throwing on strings that are not
+// UTF-8 (a command-line flag can hold any bytes; dump() would throw on them).
+std::string shown(const json& v) {
+    // dump() writes NaN and infinity as null; say what they are (they come from flags: --angle nan).
+    if (v.is_number_float() && !std::isfinite(v.get<double>())) return fmt::format("{}", v.get<double>());
+    std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
+    if (s.size() > 80) s = s.substr(0, 77) + "...";
+    return s;
+}
+
 std::string join(const std::vector<std::string>& v) {
     std::string s;
     for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -100,8 +112,9 @@ using Origins = std::map<std::string, std::string>;
 class Resolver {
 public:
     Resolver() {
-        SceneLayer defaults{assets::default_scene_json(), "assets/defaults.json", {}};
+        const SceneLayer defaults{assets::default_scene_json(), "assets/defaults.json", {}};
         apply(defaults);
+        layer_ = nullptr;  // `defaults` dies here: no pointer to it may outlive the constructor
     }
 
     void apply(const SceneLayer& layer) {
@@ -127,7 +140,7 @@ public:
             const json& fill = layer.doc.at("fill");
             if (!fill.is_object())
                 throw InputError(fmt::format("{}: fill must be an object with keys ratio, material, got {}",
-                                             layer.origin, fill.dump()));
+                                             layer.origin, shown(fill)));
             for (const auto& [key, value] : fill.items()) {
                 if (key == "ratio") {
                     fill_ratio_ = value;
@@ -160,18 +173,18 @@ public:
         if (pose == "vertex") s.release.pose = ReleasePose::vertex;
         else if (pose == "face") s.release.pose = ReleasePose::face;
         else throw InputError(fmt::format("release.pose = {}{} is not allowed (allowed: vertex, face)",
-                                          pose.dump(), where("release.pose")));
+                                          shown(pose), where("release.pose")));
 
         const json& model = run_.at("model");
         if (model == "grains") s.run.model = Model::grains;
         else if (model == "segments") s.run.model = Model::segments;
         else if (model == "rigid") s.run.model = Model::rigid;
         else throw InputError(fmt::format("run.model = {}{} is not allowed (allowed: grains, segments, rigid)",
-                                          model.dump(), where("run.model")));
+                                          shown(model), where("run.model")));
 
         const json& seed = run_.at("seed");
         if (!seed.is_number_unsigned())
-            throw InputError(fmt::format("run.seed = {}{} must be a whole number from 0 to 2^64-1", seed.dump(),
+            throw InputError(fmt::format("run.seed = {}{} must be a whole number from 0 to 2^64-1", shown(seed),
                                          where("run.seed")));
         s.run.seed = seed.get<std::uint64_t>();
 
@@ -219,7 +232,7 @@ private:
         if (value.is_string() && kind) value = json{{"preset", value}};
         if (!value.is_object())
             throw InputError(fmt::format("{}: {} must be {}an object, got {}", layer_->origin, path,
-                                         kind ? "a preset name or " : "", value.dump()));
+                                         kind ? "a preset name or " : "", shown(value)));
         if (value.contains("preset")) {
             if (!kind)
                 throw InputError(fmt::format("{}: unknown key '{}.preset' (allowed: {})", layer_->origin, path,
@@ -227,7 +240,7 @@ private:
             const json& p = value.at("preset");
             if (!p.is_string())
                 throw InputError(fmt::format("{}: {}.preset must be a preset name, got {}", layer_->origin, path,
-                                             p.dump()));
+                                             shown(p)));
             const std::string preset = p.get<std::string>();
             try {
                 for (const auto& [k, v] : assets::preset_values(*kind, preset).items()) {
@@ -251,10 +264,10 @@ private:
 
     double number_value(const json& v, const std::string& field) const {
         if (!v.is_number())
-            throw InputError(fmt::format("{} = {}{} must be a number", field, v.dump(), where(field)));
+            throw InputError(fmt::format("{} = {}{} must be a number", field, shown(v), where(field)));
         const double d = v.get<double>();
         if (!std::isfinite(d))
-            throw InputError(fmt::format("{} = {}{} must be a finite number", field, v.dump(), where(field)));
+            throw InputError(fmt::format("{} = {}{} must be a finite number", field, shown(v), where(field)));
         return d;
     }
     double number(const json& sec, const std::string& path, const std::string& key) const {
@@ -264,10 +277,10 @@ private:
         const json& v = sec.at(key);
         const std::string field = path + "." + key;
         if (!v.is_number_integer())
-            throw InputError(fmt::format("{} = {}{} must be a whole number", field, v.dump(), where(field)));
+            throw InputError(fmt::format("{} = {}{} must be a whole number", field, shown(v), where(field)));
         const auto i = v.get<std::int64_t>();
         if (i < -1000000000 || i > 1000000000)
-            throw InputError(fmt::format("{} = {}{} is far out of range", field, v.dump(), where(field)));
+            throw InputError(fmt::format("{} = {}{} is far out of range", field, shown(v), where(field)));
         return static_cast<int>(i);
     }
 
@@ -281,25 +294,75 @@ private:
 }  // namespace
 
 SceneLayer read_scene_file(const std::filesystem::path& path) {
+    const std::string name = path.string();
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("scene file {}: is a directory, expected a JSON file", path.string()));
+        throw InputError(fmt::format("scene file {}: is a directory, expected a JSON file", name));
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("scene file {}: cannot be read", path.string()));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
+    if (!in) throw InputError(fmt::format("scene file {}: cannot be read", name));
+    // Read at most one byte past the cap, so an endless or huge file costs bounded memory and time.
+    std::string text;
+    char chunk[65536];
+    while (text.size() <= kMaxSceneFileBytes && in.read(chunk, sizeof chunk).gcount() > 0)
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneFileBytes)
+        throw InputError(fmt::format("scene file {}: larger than {} bytes, not a scene file", name, kMaxSceneFileBytes));
+    if (in.bad()) throw InputError(fmt::format("scene file {}: cannot be read", name));
+    return parse_scene_text(text, name);
+}
+
+SceneLayer parse_scene_text(std::string_view text, const std::string& origin) {
+    // nlohmann keeps the last of duplicate keys silently; a scene file that says a thing twice is
+    // refused instead, naming the key. One set of seen keys per open object, with its path.
+    struct Open {
+        std::string path;
+        std::vector<std::string> keys;
+    };
+    std::vector<Open> open;
+    std::string last_key;
+    std::string field;  // the last key read, with its path: where a syntax error is
+    constexpr int kMaxDepth = 32;
+    auto refuse_duplicates = [&](int depth, json::parse_event_t event, json& parsed) {
+        // Copying and printing a value recurse; a scene is four levels deep, so deep nesting is
+        // refused before it can exhaust the stack.
+        if (depth > kMaxDepth)
+            throw InputError(fmt::format("scene file {}: nested deeper than {} levels, not a scene file", origin,
+                                         kMaxDepth));
+        switch (event) {
+            case json::parse_event_t::object_start:
+                if (open.empty()) open.push_back({"", {}});
+                else open.push_back({open.back().path.empty() ? last_key : open.back().path + "." + last_key, {}});
+                break;
+            case json::parse_event_t::object_end:
+                if (!open.empty()) open.pop_back();
+                break;
+            case json::parse_event_t::key: {
+                last_key = parsed.get<std::string>();
+                auto& keys = open.back().keys;
+                field = open.back().path.empty() ? last_key : open.back().path + "." + last_key;
+                if (std::find(keys.begin(), keys.end(), last_key) != keys.end())
+                    throw InputError(printable_line(fmt::format(
+                        "scene file {}: duplicate key '{}' (each key may appear once)", origin, field)));
+                keys.push_back(last_key);
+                break;
+            }
+            default: break;
+        }
+        return true;
+    };
     SceneLayer layer;
-    layer.origin = path.string();
+    layer.origin = origin;
     try {
-        layer.doc = nlohmann::ordered_json::parse(buffer.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        // nlohmann's message names the byte offset and the token; keep it on one line.
-        std::string what = e.what();
-        std::replace(what.begin(), what.end(), '\n', ' ');
-        throw InputError(fmt::format("scene file {}: not valid JSON: {}", path.string(), what));
+        layer.doc = json::parse(text.begin(), text.end(), refuse_duplicates);
+    } catch (const nlohmann::json::exception& e) {
+        // A syntax error, or a number too large for a double (1e999: out_of_range, not parse_error).
+        // nlohmann's message names the byte offset and the token (which may be any bytes): keep it
+        // on one printable line.
+        throw InputError(printable_line(fmt::format("scene file {}: not valid JSON{}: {}", origin,
+                                                    field.empty() ? "" : " after key '" + field + "'", e.what())));
     }
     if (!layer.doc.is_object())
-        throw InputError(fmt::format("scene file {}: a scene must be a JSON object", path.string()));
+        throw InputError(fmt::format("scene file {}: a scene must be a JSON object", origin));
     return layer;
 }
 

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -20,8 +21,16 @@ struct SceneLayer {
     std::vector<std::pair<std::string, std::string>> field_labels;
 };
 
-// Reads and parses a scene file; throws InputError (unreadable, not JSON, not an object).
+// Reads and parses a scene file; throws InputError (unreadable, not a regular file, larger than
+// kMaxSceneFileBytes, not JSON, a duplicate key, not an object).
 SceneLayer read_scene_file(const std::filesystem::path& path);
+
+// Parses a scene document's text; `origin` names it in messages. Throws InputError as above.
+SceneLayer parse_scene_text(std::string_view text, const std::string& origin);
+
+// Scene files are a few kilobytes; the cap keeps memory bounded when pointed at something huge or
+// endless (/dev/zero, a log file).
+inline constexpr std::size_t kMaxSceneFileBytes = 1 << 20;
 
 // The defaults, then each layer in order; checks keys and types, then validates ranges
 // (scene_validate.h). Throws InputError naming the field, its value and what is allowed.

@@ -57,8 +57,8 @@ PendulumSeries::PendulumSeries(double psi0, double rate0, double a) : a_(a) {
     jx[1] = rate0;
     for (int k = 0; k < N; ++k) {
         if (k + 2 <= N) {
-            x_[static_cast<size_t>(k + 2)] = a * s_[static_cast<size_t>(k)] / ((k + 1.0) * (k + 2.0));
-            jx[static_cast<size_t>(k + 2)] = (k + 2) * x_[static_cast<size_t>(k + 2)];
+            x_[(static_cast<size_t>(k) + 2)] = a * s_[static_cast<size_t>(k)] / ((k + 1.0) * (k + 2.0));
+            jx[(static_cast<size_t>(k) + 2)] = (k + 2) * x_[(static_cast<size_t>(k) + 2)];
         }
         const int m = k + 1;
         double ss = 0.0, cc = 0.0;
