@@ -2,6 +2,8 @@
 // allowed, exit code 2 and no output left behind; a good run writes its three files.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -14,29 +16,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int exit_code = -1;
-    std::string out;  // stdout and stderr together
-};
+using Result = polyroll::test::CommandResult;
 
-Result polyroll(const std::string& args) {
-    const std::string cmd = std::string(POLYROLL_EXE) + " " + args + " 2>&1";
-    Result r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+Result run_polyroll(const std::string& args) {
+    return polyroll::test::run_command(std::string(POLYROLL_EXE) + " " + args);
 }
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-cli-test-" + name);
-    fs::remove_all(p);
-    return p;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("cli-" + name); }
 
 size_t line_count(const std::string& s) {
     size_t lines = 0;
@@ -66,7 +52,7 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
         {"--bogus 1", {"--bogus"}},
     };
     for (const Case& c : cases) {
-        const Result r = polyroll("run " + c.args + " --out " + out.string());
+        const Result r = run_polyroll("run " + c.args + " --out " + out.string());
         INFO("polyroll run " << c.args << " -> " << r.out);
         CHECK(r.exit_code == 2);
         CHECK(line_count(r.out) == 1);
@@ -95,7 +81,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
         {"--out " + (dir / "a-file").string(), "not a folder"},
     };
     for (const Case& c : cases) {
-        const Result r = polyroll("run " + c.args);
+        const Result r = run_polyroll("run " + c.args);
         INFO("polyroll run " << c.args << " -> " << r.out);
         CHECK(r.exit_code == 2);
         CHECK(line_count(r.out) == 1);
@@ -105,7 +91,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
     // A non-empty folder is not overwritten without --force.
     fs::create_directories(out);
     std::ofstream(out / "keep.txt") << "mine";
-    const Result r = polyroll("run --fill 0 --angle 10 --time-limit 0.2 --out " + out.string());
+    const Result r = run_polyroll("run --fill 0 --angle 10 --time-limit 0.2 --out " + out.string());
     CHECK(r.exit_code == 2);
     CHECK(r.out.find("--force") != std::string::npos);
     CHECK(fs::exists(out / "keep.txt"));
@@ -115,7 +101,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
 
 TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") {
     const fs::path out = scratch("good-run");
-    const Result r = polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string());
+    const Result r = run_polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string());
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("rolled_to_end") != std::string::npos);
@@ -142,7 +128,7 @@ TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") 
 
     // The summary's scene is itself a scene file that reproduces the run.
     std::ofstream(out.string() + "-scene.json") << summary.at("scene").dump();
-    const Result again = polyroll("run --json --scene " + out.string() + "-scene.json");
+    const Result again = run_polyroll("run --json --scene " + out.string() + "-scene.json");
     REQUIRE(again.exit_code == 0);
     const auto j = nlohmann::json::parse(again.out);
     CHECK(j.at("results").at("distance_m") == res.at("distance_m"));
@@ -152,7 +138,7 @@ TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") 
 }
 
 TEST_CASE("presets lists every bundled preset", "[cli]") {
-    const Result r = polyroll("presets");
+    const Result r = run_polyroll("presets");
     REQUIRE(r.exit_code == 0);
     for (const char* name : {"hexagon-small", "octadecagon-small", "hexagon-large", "bb", "rice", "peas", "air-track",
                              "wooden", "draft", "standard", "precise", "reference"})
@@ -161,7 +147,7 @@ TEST_CASE("presets lists every bundled preset", "[cli]") {
 
 TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli][divergence]") {
     const fs::path out = scratch("diverged");
-    const Result r = polyroll("run --step-hz 30 --angle 60 --out " + out.string());
+    const Result r = run_polyroll("run --step-hz 30 --angle 60 --out " + out.string());
     CHECK(r.exit_code == 3);
     CHECK(r.out.find("diverged") != std::string::npos);
     std::ifstream in(out / "summary.json");

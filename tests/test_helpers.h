@@ -1,7 +1,11 @@
 // Shared helpers for the tests: scenes from the bundled defaults with a few fields changed.
 #pragma once
 
+#include <array>
+#include <cstdio>
+#include <filesystem>
 #include <string>
+#include <sys/wait.h>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +19,33 @@ namespace polyroll::test {
 // The default scene with `overrides` (a scene document) on top, resolved and validated.
 inline Scene scene_with(const nlohmann::ordered_json& overrides) {
     return resolve_scene({SceneLayer{overrides, "test", {}}});
+}
+
+// What a command printed (stdout and stderr together) and how it exited, for the tests that run
+// the programs as a user would.
+struct CommandResult {
+    int exit_code = -1;
+    std::string out;
+};
+
+inline CommandResult run_command(const std::string& cmd) {
+    CommandResult r;
+    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) return r;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// A fresh, empty scratch folder (removed first if it exists; created when `create`).
+inline std::filesystem::path scratch_dir(const std::string& name, bool create = false) {
+    const std::filesystem::path p = std::filesystem::temp_directory_path() / ("polyroll-test-" + name);
+    std::filesystem::remove_all(p);
+    if (create) std::filesystem::create_directories(p);
+    return p;
 }
 
 }  // namespace polyroll::test

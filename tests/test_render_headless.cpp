@@ -27,12 +27,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-render-test-" + name);
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("render-" + name, true); }
 
 std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -67,21 +62,9 @@ SequenceSettings small_settings(int w, int h) {
     return st;
 }
 
-struct Cli {
-    int exit_code = -1;
-    std::string out;
-};
+using Cli = polyroll::test::CommandResult;
 Cli run_cli(const std::string& args, const std::string& env = "") {
-    const std::string cmd = env + (env.empty() ? "" : " ") + std::string(POLYROLL_EXE) + " " + args + " 2>&1";
-    Cli r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return polyroll::test::run_command(env + (env.empty() ? "" : " ") + std::string(POLYROLL_EXE) + " " + args);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 // and says where the frames went; bad flags exit 2 with one line.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -18,29 +20,11 @@ using namespace polyroll;
 
 namespace {
 
-struct Run {
-    int exit_code = -1;
-    std::string out;
-};
+using Run = polyroll::test::CommandResult;
 
-Run run(const std::string& cmd) {
-    Run r;
-    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+Run run(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-sandbox-test-" + name);
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sandbox-" + name, true); }
 
 struct Image {
     render::DecodedPng png;

@@ -2,6 +2,8 @@
 // merged gives the one-process table; bad grid flags and folders fail with one line and exit 2.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,30 +15,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-    int exit_code = -1;
-    std::string out;  // stdout and stderr together
-};
+using Result = polyroll::test::CommandResult;
 
-Result shell(const std::string& cmd) {
-    Result r;
-    FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+Result shell(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
 const std::string exe = POLYROLL_EXE;
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-sweep-cli-" + name);
-    fs::remove_all(p);
-    return p;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sweep-cli-" + name); }
 
 std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
