@@ -237,6 +237,16 @@ TEST_CASE("a sweep killed at random moments resumes with the same command, nothi
             auto got = table_indices(dir / "results.csv");
             const std::set<std::string> unique(got.begin(), got.end());
             CHECK(unique.size() == got.size());  // no run twice
+            // A whole table: it ends on a complete line and each row is the uninterrupted sweep's row.
+            const std::string text = slurp(dir / "results.csv");
+            REQUIRE_FALSE(text.empty());
+            CHECK(text.back() == '\n');
+            const std::string ref_rows = without_wall_time(slurp(ref / "results.csv"));
+            std::istringstream rows(without_wall_time(text));
+            for (std::string row; std::getline(rows, row);) {
+                INFO(row);
+                CHECK(ref_rows.find(row + "\n") != std::string::npos);
+            }
         }
         if (fs::exists(dir / "plan.json")) CHECK_NOTHROW(nlohmann::json::parse(slurp(dir / "plan.json")));
     }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "sim/errors.h"
 #include "sweep/grid_values.h"
@@ -14,6 +15,7 @@
 #include "sweep/results_table.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_runner.h"
+#include "sweep/table_writer.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
@@ -164,6 +166,43 @@ TEST_CASE("results tables: CSV cells round-trip; a line cut short is dropped", "
     CHECK(t.had_partial_line);
     std::ofstream(dir / "bad.csv") << "index,x\n0,a,b\n";
     CHECK_THROWS_AS(read_table(dir / "bad.csv"), InputError);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("the table writer only ever replaces the table whole, and no row waits long in memory", "[sweep]") {
+    const fs::path dir = scratch("writer");
+    fs::create_directories(dir);
+    const fs::path path = dir / "results.csv";
+    const std::vector<std::string> header{"index", "run_id", "status", "wall_time_s"};
+    std::ofstream(path) << "index,run_id,status,wall_time_s\n1,b,ok,0.5\n0,a,fail";  // cut short by an old writer
+    {
+        TableWriter w(path, header, false, std::chrono::milliseconds(300));
+        REQUIRE(w.existing_rows().size() == 1);
+        TableFile t = read_table(path);
+        CHECK_FALSE(t.had_partial_line);  // replaced whole on opening: the torn line is gone
+        CHECK(t.rows.size() == 1);
+        w.append("0,a,ok,0.25\n");
+        // Without another row or close, the flusher replaces the table within the delay (300 ms);
+        // wait up to 20 s so that a loaded machine cannot fail this.
+        for (int i = 0; i < 200 && read_table(path).rows.size() < 2; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        t = read_table(path);
+        REQUIRE(t.rows.size() == 2);
+        CHECK(t.rows[0][0] == "0");  // sorted by index on every replacement
+        CHECK_FALSE(t.had_partial_line);
+        // A second writer is refused while this one holds the table.
+        CHECK_THROWS_AS(TableWriter(path, header, false), InputError);
+        w.append("2,c,failed,0.1\n");
+        w.close_sorted();
+        CHECK(read_table(path).rows.size() == 3);
+    }
+    // Reopened with drop_failed, the failed row goes (to be run again).
+    TableWriter again(path, header, true);
+    CHECK(again.existing_rows().size() == 2);
+    again.close_sorted();
+    CHECK(read_table(path).rows.size() == 2);
+    // No temporaries are left beside the table.
+    for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
     fs::remove_all(dir);
 }
 

@@ -19,6 +19,7 @@ namespace {
 
 int spawn(const std::vector<std::string>& argv, bool silent) {
     std::vector<char*> cargs;
+    cargs.reserve(argv.size() + 1);
     for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
     cargs.push_back(nullptr);
     const pid_t pid = ::fork();

@@ -121,7 +121,11 @@ void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, c
     const float thin = std::max(1.0f, 1.2f * u);
     // Grid and tick labels: about four intervals on each axis.
     const double v_step = nice_ceil(v_span / 4.0);
-    for (double v = std::ceil(ax.speed_min_m_s / v_step - 1e-9) * v_step; v <= ax.speed_max_m_s + 1e-9; v += v_step) {
+    // Integer tick counters: a floating-point counter would gather rounding error tick by tick.
+    const double v_first = std::ceil(ax.speed_min_m_s / v_step - 1e-9) * v_step;
+    const int v_ticks = static_cast<int>(std::floor((ax.speed_max_m_s + 1e-9 - v_first) / v_step)) + 1;
+    for (int k = 0; k < v_ticks; ++k) {
+        const double v = v_first + k * v_step;
         const float y = Y(v);
         out.shapes.push_back(segment({left, y}, {right, y}, thin, palette::plot_grid, Tag::plot));
         const std::string label = signed_fixed(std::fabs(v) < 1e-12 ? 0.0 : v, v_step < 0.1 ? 2 : 1);
@@ -130,11 +134,13 @@ void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, c
                     out.glyphs);
     }
     const double t_step = nice_ceil(ax.time_max_s / 5.0);
-    for (double t = 0.0; t <= ax.time_max_s + 1e-9; t += t_step) {
+    const int t_ticks = static_cast<int>(std::floor((ax.time_max_s + 1e-9) / t_step)) + 1;
+    for (int k = 0; k < t_ticks; ++k) {
+        const double t = k * t_step;
         const float x = X(t);
         out.shapes.push_back(segment({x, top}, {x, bottom}, thin, palette::plot_grid, Tag::plot));
         // The unit rides on the last label, where a separate one would collide with it.
-        const bool last = t + t_step > ax.time_max_s + 1e-9;
+        const bool last = k + 1 == t_ticks;
         const std::string label = fmt::format("{:g}{}", std::round(t * 1000.0) / 1000.0, last ? " s" : "");
         const float tw = font.text_width(last ? label.substr(0, label.size() - 2) : label, L.small);
         font.layout(label, L.small, {x - tw / 2.0f, bottom + 6.0f * u + font.ascent(L.small)}, palette::text_dim,

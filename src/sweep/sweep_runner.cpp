@@ -4,6 +4,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <numeric>
 #include <set>
 #include <thread>
 
@@ -38,9 +39,11 @@ std::vector<fs::path> table_paths(const fs::path& dir) {
     return out;
 }
 
-RunRecord execute_run(const SweepPlan& plan, const PlannedRun& run, const fs::path& run_dir, bool trajectories) {
+namespace {
+
+// One point, run and its files written; a point that cannot be run is a failed record, never a throw.
+RunRecord attempt_run(const SweepPlan& plan, const PlannedRun& run, const fs::path& run_dir, bool trajectories) {
     RunRecord rec;
-    const auto start = std::chrono::steady_clock::now();
     try {
         const Scene scene = resolve_scene(run_layers(plan, run));
         RunResult r = run_scene(scene);
@@ -62,7 +65,17 @@ RunRecord execute_run(const SweepPlan& plan, const PlannedRun& run, const fs::pa
     }
     rec.ok = false;
     rec.result.reset();
-    rec.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return rec;
+}
+
+}  // namespace
+
+RunRecord execute_run(const SweepPlan& plan, const PlannedRun& run, const fs::path& run_dir, bool trajectories) {
+    const auto start = std::chrono::steady_clock::now();
+    RunRecord rec = attempt_run(plan, run, run_dir, trajectories);
+    // A failed point has no simulation time of its own: it costs what it took to fail.
+    if (!rec.result)
+        rec.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return rec;
 }
 
@@ -76,8 +89,10 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
     std::vector<std::size_t> slice;
     if (o.shard)
         slice = shard_indices(plan.runs.size(), o.shard->first, o.shard->second);
-    else
-        for (std::size_t i = 0; i < plan.runs.size(); ++i) slice.push_back(i);
+    else {
+        slice.resize(plan.runs.size());
+        std::iota(slice.begin(), slice.end(), std::size_t{0});
+    }
     report.planned = slice.size();
 
     TableWriter writer(report.table, table.columns(), o.retry_failed);
@@ -127,6 +142,7 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
     };
     const int jobs = std::max(1, std::min<int>(o.jobs, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
     std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(jobs));
     for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
     progress.finish();

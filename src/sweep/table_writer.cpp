@@ -1,6 +1,7 @@
-// Crash-safe appending to a results table: see table_writer.h.
+// Crash-safe recording of a results table: see table_writer.h.
 #include "sweep/table_writer.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -17,8 +18,9 @@
 
 namespace polyroll::sweep {
 
-TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::string>& header, bool drop_failed)
-    : path_(std::move(path)), header_(header) {
+TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::string>& header, bool drop_failed,
+                         std::chrono::milliseconds max_commit_delay)
+    : path_(std::move(path)), header_(header), max_commit_delay_(max_commit_delay) {
     const std::string lock = path_.string() + ".lock";
     lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (lock_fd_ < 0)
@@ -38,55 +40,98 @@ TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::stri
             std::find(header_.begin(), header_.end(), "status") - header_.begin());
         for (auto& row : t.rows)
             if (!(drop_failed && row.at(status) == "failed")) existing_.push_back(std::move(row));
-        // Rewritten whole so the file ends on a complete line before anything is appended.
-        std::string text = csv_line(header_);
-        for (const auto& r : existing_) text += csv_line(r);
-        write_file_atomic(path_, text);
-        fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-        if (fd_ < 0) throw std::runtime_error(fmt::format("{}: cannot be opened ({})", path_.string(), std::strerror(errno)));
+        std::lock_guard<std::mutex> g(mutex_);
+        commit_locked();  // a table (if only its header) exists from the start, and a bad folder fails now
+        open_ = true;
     } catch (...) {
         ::close(lock_fd_);
         lock_fd_ = -1;
         throw;
     }
+    flusher_ = std::thread([this] { flush_loop(); });
 }
 
 TableWriter::~TableWriter() {
-    if (fd_ >= 0) ::close(fd_);
+    {
+        std::lock_guard<std::mutex> g(mutex_);
+        // Left without close_sorted (an exception on the way out): keep the finished rows if the
+        // disk lets us; if it does not, the next run of the sweep makes them again.
+        if (open_ && dirty_) {
+            try {
+                commit_locked();
+            } catch (...) {
+            }
+        }
+        open_ = false;
+    }
+    wake_.notify_all();
+    if (flusher_.joinable()) flusher_.join();
     if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
-void TableWriter::append(const std::string& line) {
-    std::lock_guard<std::mutex> g(mutex_);
-    std::size_t done = 0;
-    while (done < line.size()) {
-        const ssize_t n = ::write(fd_, line.data() + done, line.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) throw std::runtime_error(fmt::format("{}: write failed ({})", path_.string(), std::strerror(errno)));
-        done += static_cast<std::size_t>(n);
+void TableWriter::commit_locked() {
+    std::vector<std::vector<std::string>> rows = existing_;
+    rows.insert(rows.end(), written_.begin(), written_.end());
+    const auto start = std::chrono::steady_clock::now();
+    write_file_atomic(path_, table_text(header_, std::move(rows)));
+    const auto end = std::chrono::steady_clock::now();
+    dirty_ = false;
+    // Replacing the table may take at most a tenth of the time: wait nine times what it cost.
+    next_commit_ = end + std::min<std::chrono::steady_clock::duration>(9 * (end - start), max_commit_delay_);
+}
+
+void TableWriter::flush_loop() {
+    std::unique_lock<std::mutex> g(mutex_);
+    while (open_) {
+        if (!dirty_) {
+            wake_.wait(g);
+            continue;
+        }
+        if (std::chrono::steady_clock::now() < next_commit_) {
+            wake_.wait_until(g, next_commit_);
+            continue;
+        }
+        try {
+            commit_locked();
+        } catch (...) {
+            flush_error_ = std::current_exception();
+            return;
+        }
     }
-    // On disk before the run counts as done: a power cut loses at most the runs still in flight.
-    if (::fdatasync(fd_) != 0)
-        throw std::runtime_error(fmt::format("{}: flush failed ({})", path_.string(), std::strerror(errno)));
-    std::string body = line;
-    if (!body.empty() && body.back() == '\n') body.pop_back();
-    written_.push_back(parse_csv_line(body));
+}
+
+void TableWriter::append(const std::string& line) {
+    {
+        std::lock_guard<std::mutex> g(mutex_);
+        if (flush_error_) std::rethrow_exception(flush_error_);
+        if (!open_) throw std::logic_error("TableWriter::append after close_sorted");
+        std::string body = line;
+        if (!body.empty() && body.back() == '\n') body.pop_back();
+        written_.push_back(parse_csv_line(body));
+        dirty_ = true;
+        if (std::chrono::steady_clock::now() >= next_commit_) commit_locked();
+    }
+    wake_.notify_all();  // the flusher replaces the table later if it was not due now
 }
 
 void TableWriter::replace_rows(std::vector<std::vector<std::string>> rows) {
     std::lock_guard<std::mutex> g(mutex_);
     existing_ = std::move(rows);
     written_.clear();
+    dirty_ = true;
 }
 
 void TableWriter::close_sorted() {
+    {
+        std::lock_guard<std::mutex> g(mutex_);
+        if (!open_) return;
+        open_ = false;
+    }
+    wake_.notify_all();
+    flusher_.join();
     std::lock_guard<std::mutex> g(mutex_);
-    if (fd_ < 0) return;
-    ::close(fd_);
-    fd_ = -1;
-    std::vector<std::vector<std::string>> rows = existing_;
-    rows.insert(rows.end(), written_.begin(), written_.end());
-    write_file_atomic(path_, table_text(header_, rows));
+    if (flush_error_) std::rethrow_exception(flush_error_);
+    commit_locked();
     // The lock file stays: removing it would let a second writer lock a fresh file while a third
     // still holds the old one.
     ::close(lock_fd_);
