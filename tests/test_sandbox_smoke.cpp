@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sys/wait.h>
 
@@ -49,16 +50,27 @@ const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
 
 }  // namespace
 
-// [no-asan]: under AddressSanitizer, Mesa's GLX driver (loaded with dlopen and unloaded before exit)
-// leaves allocations LeakSanitizer reports from an "<unknown module>", which no suppression can name;
-// tests/ci_checks.sh skips this one test in its sanitizer run. The plain build runs it as before.
-TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox][no-asan]") {
+// Under AddressSanitizer (tests/ci_checks.sh) the sandbox still runs with ASan and UBSan checking every
+// access, but without the leak check at exit: Mesa's GLX driver, loaded with dlopen and unloaded by
+// GLFW before exit, leaves allocations that LeakSanitizer can only attribute to an "<unknown module>",
+// which no suppression can name. The leak checks the issue asks for (a run, a render, a sweep) are in
+// tests/ci_checks.sh.
+std::string sandbox_env() {
+#if defined(__SANITIZE_ADDRESS__)
+    const char* opts = std::getenv("ASAN_OPTIONS");
+    return "ASAN_OPTIONS='" + std::string(opts ? opts : "") + ":detect_leaks=0' ";
+#else
+    return "";
+#endif
+}
+
+TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox]") {
     const Run which = run("command -v xvfb-run");
     INFO("xvfb-run is needed (Debian package xvfb, in third_party/debian-packages.txt)");
     REQUIRE(which.exit_code == 0);
     const fs::path dir = scratch("smoke");
     const fs::path shot = dir / "shot.png";
-    const Run r = run("cd " + dir.string() + " && " + kXvfb + POLYROLL_SANDBOX_EXE + " --screenshot " + shot.string() +
+    const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE + " --screenshot " + shot.string() +
                       " --frames 300");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
