@@ -4,6 +4,8 @@
 // uninterrupted command's own duration, so the test means the same on a fast build and under ASan.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -29,6 +31,11 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kExe = POLYROLL_EXE;
+
+using polyroll::test::read_file;
+using polyroll::test::table_without_wall_time;
+
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("crash-" + name); }
 
 pid_t start(const std::vector<std::string>& args) {
     std::vector<char*> argv;
@@ -78,19 +85,6 @@ std::vector<double> moments(unsigned seed, int count, double duration) {
     return m;
 }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-crash-" + name);
-    fs::remove_all(p);
-    return p;
-}
-
 // The files people see (not the temporaries, whose names start with a dot), by name.
 std::map<std::string, fs::path> visible_files(const fs::path& dir) {
     std::map<std::string, fs::path> files;
@@ -104,7 +98,7 @@ std::map<std::string, fs::path> visible_files(const fs::path& dir) {
 
 // A file's content for comparison: summary.json without its wall time, which differs run to run.
 std::string comparable(const fs::path& p) {
-    const std::string text = slurp(p);
+    const std::string text = read_file(p);
     if (p.filename() != "summary.json") return text;
     auto j = nlohmann::ordered_json::parse(text);  // throws (fails the test) on half a file
     j["results"].erase("wall_time_s");
@@ -193,7 +187,7 @@ namespace {
 // results.csv: the header, then one row per run; returns the rows' first cells (the run index) after
 // checking each row is whole (as many cells as the header, ends with a newline).
 std::vector<std::string> table_indices(const fs::path& csv) {
-    const std::string text = slurp(csv);
+    const std::string text = read_file(csv);
     REQUIRE(!text.empty());
     REQUIRE(text.back() == '\n');
     std::istringstream in(text);
@@ -207,13 +201,6 @@ std::vector<std::string> table_indices(const fs::path& csv) {
         indices.push_back(line.substr(0, line.find(',')));
     }
     return indices;
-}
-
-std::string without_wall_time(const std::string& table) {
-    std::istringstream in(table);
-    std::string line, out;
-    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
-    return out;
 }
 
 }  // namespace
@@ -238,17 +225,17 @@ TEST_CASE("a sweep killed at random moments resumes with the same command, nothi
             const std::set<std::string> unique(got.begin(), got.end());
             CHECK(unique.size() == got.size());  // no run twice
             // A whole table: it ends on a complete line and each row is the uninterrupted sweep's row.
-            const std::string text = slurp(dir / "results.csv");
+            const std::string text = read_file(dir / "results.csv");
             REQUIRE_FALSE(text.empty());
             CHECK(text.back() == '\n');
-            const std::string ref_rows = without_wall_time(slurp(ref / "results.csv"));
-            std::istringstream rows(without_wall_time(text));
+            const std::string ref_rows = table_without_wall_time(read_file(ref / "results.csv"));
+            std::istringstream rows(table_without_wall_time(text));
             for (std::string row; std::getline(rows, row);) {
                 INFO(row);
                 CHECK(ref_rows.find(row + "\n") != std::string::npos);
             }
         }
-        if (fs::exists(dir / "plan.json")) CHECK_NOTHROW(nlohmann::json::parse(slurp(dir / "plan.json")));
+        if (fs::exists(dir / "plan.json")) CHECK_NOTHROW(nlohmann::json::parse(read_file(dir / "plan.json")));
     }
     REQUIRE(run_whole(args(dir)).first == 0);
     auto got = table_indices(dir / "results.csv");
@@ -256,7 +243,7 @@ TEST_CASE("a sweep killed at random moments resumes with the same command, nothi
     auto sorted_want = want;
     std::sort(sorted_want.begin(), sorted_want.end());
     CHECK(got == sorted_want);
-    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(slurp(ref / "results.csv")));
+    CHECK(table_without_wall_time(read_file(dir / "results.csv")) == table_without_wall_time(read_file(ref / "results.csv")));
     fs::remove_all(ref);
     fs::remove_all(dir);
 }

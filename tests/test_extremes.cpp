@@ -7,6 +7,8 @@
 // wooden ramp with a short time limit, so the whole matrix stays within minutes.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -30,13 +32,6 @@ namespace {
 // run's energy scale (total mass x g x pivot radius, the potential energy of one roll over a
 // vertex). The tracker itself only calls a run diverged at 50%; a gain between the two is a finding.
 constexpr double kEnergyGainShare = 0.05;
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 struct Matrix {
     std::vector<int> sides;
@@ -104,10 +99,10 @@ Findings check_matrix(const std::string& fidelity, const Matrix& m) {
         }
         ++f.behaviours[behaviour];
         const fs::path run = dir / "runs" / row.at(1);
-        const json summary = json::parse(slurp(run / "summary.json"));
+        const json summary = json::parse(polyroll::test::read_file(run / "summary.json"));
         const json& res = summary.at("results");
         // No NaN or infinity anywhere in what the run wrote.
-        const std::string traj = slurp(run / "trajectory.csv");
+        const std::string traj = polyroll::test::read_file(run / "trajectory.csv");
         CHECK(traj.find("nan") == std::string::npos);
         CHECK(traj.find("inf") == std::string::npos);
         CHECK(std::isfinite(res.at("distance_m").get<double>()));

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <vector>
@@ -26,18 +29,38 @@ inline Scene scene_with(const nlohmann::ordered_json& overrides) {
 struct CommandResult {
     int exit_code = -1;
     std::string out;
+    double seconds = 0.0;  // wall time, start to exit
 };
 
 inline CommandResult run_command(const std::string& cmd) {
     CommandResult r;
+    const auto start = std::chrono::steady_clock::now();
     FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
     if (pipe == nullptr) return r;
     std::array<char, 4096> buf{};
     size_t n;
     while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
     const int status = pclose(pipe);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+// A file's bytes ("" if it cannot be read).
+inline std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A results table without its last column, wall_time_s: the one cell that differs between runs
+// and hosts, so two tables of the same sweep compare equal without it.
+inline std::string table_without_wall_time(const std::string& table) {
+    std::istringstream in(table);
+    std::string line, out;
+    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
+    return out;
 }
 
 // A fresh, empty scratch folder (removed first if it exists; created when `create`).

@@ -3,6 +3,8 @@
 // bounded memory, with nothing written. Regression cases found by the fuzzer are at the end.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -34,35 +36,15 @@ constexpr bool kSanitized = false;
 #endif
 constexpr double kTimeLimitS = kSanitized ? 5.0 : 1.0;
 
-struct Result {
-    int exit_code = -1;
-    std::string out;  // stdout and stderr together
-    double seconds = 0;
-};
+using Result = polyroll::test::CommandResult;
 
 Result run_polyroll(const std::string& args) {
     // 1 GiB of address space is far more than refusing any input needs (a run takes ~150 MiB).
     const std::string limit = kSanitized ? "" : "ulimit -v 1048576; ";
-    const std::string cmd = limit + "exec " + std::string(POLYROLL_EXE) + " " + args + " 2>&1";
-    Result r;
-    const auto start = std::chrono::steady_clock::now();
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buf{};
-    size_t n = 0;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return polyroll::test::run_command(limit + "exec " + std::string(POLYROLL_EXE) + " " + args);
 }
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-malformed-" + name);
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("malformed-" + name, true); }
 
 void write(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
 

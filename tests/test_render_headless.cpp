@@ -29,13 +29,6 @@ namespace {
 
 fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("render-" + name, true); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 struct Rgb {
     int r, g, b;
 };
@@ -145,10 +138,10 @@ TEST_CASE("two renders of the same scene give byte-identical frames", "[render]"
     REQUIRE(n > 5);
     for (long i = 1; i <= n; ++i) {
         INFO(frame_file_name(i));
-        CHECK(slurp(a / frame_file_name(i)) == slurp(b / frame_file_name(i)));
+        CHECK(polyroll::test::read_file(a / frame_file_name(i)) == polyroll::test::read_file(b / frame_file_name(i)));
     }
     // And the frames do change as the polygon moves.
-    CHECK(slurp(a / frame_file_name(1)) != slurp(a / frame_file_name(n)));
+    CHECK(polyroll::test::read_file(a / frame_file_name(1)) != polyroll::test::read_file(a / frame_file_name(n)));
 }
 
 TEST_CASE("polyroll render writes the run's files as polyroll run does", "[render][cli]") {
@@ -162,9 +155,9 @@ TEST_CASE("polyroll render writes the run's files as polyroll run does", "[rende
     CHECK(render.out.find("frame 15/15") != std::string::npos);  // progress: 0.2 s x 20 + 1, and 10 held
     CHECK(fs::exists(base / "frames" / frame_file_name(15)));
     CHECK(!fs::exists(base / "frames" / frame_file_name(16)));
-    for (const char* f : {"trajectory.csv", "impacts.csv"}) CHECK(slurp(base / "run" / f) == slurp(base / "frames" / f));
+    for (const char* f : {"trajectory.csv", "impacts.csv"}) CHECK(polyroll::test::read_file(base / "run" / f) == polyroll::test::read_file(base / "frames" / f));
     auto summary = [](const fs::path& p) {
-        nlohmann::json j = nlohmann::json::parse(slurp(p));
+        nlohmann::json j = nlohmann::json::parse(polyroll::test::read_file(p));
         j["results"].erase("wall_time_s");  // the only field that depends on the clock
         return j;
     };

@@ -3,6 +3,8 @@
 // recorded with their reason, and merged shards equal to the one-process table.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -24,26 +26,10 @@ using namespace polyroll::sweep;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("polyroll-sweep-test-" + name);
-    fs::remove_all(p);
-    return p;
-}
+using polyroll::test::read_file;
+using polyroll::test::table_without_wall_time;
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// The table without its last column (wall_time_s, the one cell that differs between hosts and runs).
-std::string without_wall_time(const std::string& table) {
-    std::istringstream in(table);
-    std::string line, out;
-    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
-    return out;
-}
+fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sweep-" + name); }
 
 // A cheap grid: empty shells and a few grains, draft fidelity, short runs; one point out of range.
 SweepPlan tiny_plan() {
@@ -217,7 +203,7 @@ TEST_CASE("a sweep records failed points, survives a crash and resumes without d
     const SweepReport first = run_sweep(plan, o, nullptr);
     CHECK(first.ran == plan.runs.size());
     CHECK_FALSE(first.interrupted);
-    const std::string full = slurp(dir / "results.csv");
+    const std::string full = read_file(dir / "results.csv");
     const TableFile t = read_table(dir / "results.csv");
     REQUIRE(t.rows.size() == plan.runs.size());
     const std::size_t status = columns.column("status"), reason = columns.column("reason"),
@@ -254,12 +240,12 @@ TEST_CASE("a sweep records failed points, survives a crash and resumes without d
     const SweepReport resumed = run_sweep(plan, o, nullptr);
     CHECK(resumed.already == 2);
     CHECK(resumed.ran == plan.runs.size() - 2);
-    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+    CHECK(table_without_wall_time(read_file(dir / "results.csv")) == table_without_wall_time(full));
 
     // Nothing left: the same sweep again runs nothing and leaves the table as it was.
     const SweepReport again = run_sweep(plan, o, nullptr);
     CHECK(again.ran == 0);
-    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+    CHECK(table_without_wall_time(read_file(dir / "results.csv")) == table_without_wall_time(full));
 
     // Stopped before it starts (Ctrl-C): nothing run, reported as interrupted; --retry-failed reruns
     // exactly the failed rows.
@@ -271,7 +257,7 @@ TEST_CASE("a sweep records failed points, survives a crash and resumes without d
     CHECK(stopped.ran == 0);
     const SweepReport retried = run_sweep(plan, retry, nullptr);
     CHECK(retried.ran == failed);
-    CHECK(without_wall_time(slurp(dir / "results.csv")) == without_wall_time(full));
+    CHECK(table_without_wall_time(read_file(dir / "results.csv")) == table_without_wall_time(full));
     fs::remove_all(dir);
 }
 
@@ -297,10 +283,10 @@ TEST_CASE("shards merged give the one-process table; tables of another plan are 
     CHECK(m.missing.empty());
     CHECK(m.rows == plan.runs.size());
     CHECK(m.tables == 4);
-    CHECK(without_wall_time(slurp(sharded / "results.csv")) == without_wall_time(slurp(one / "results.csv")));
+    CHECK(table_without_wall_time(read_file(sharded / "results.csv")) == table_without_wall_time(read_file(one / "results.csv")));
     // Merging again changes nothing (no duplicates from results.csv plus the shards).
     merge_tables(plan, sharded);
-    CHECK(without_wall_time(slurp(sharded / "results.csv")) == without_wall_time(slurp(one / "results.csv")));
+    CHECK(table_without_wall_time(read_file(sharded / "results.csv")) == table_without_wall_time(read_file(one / "results.csv")));
 
     // A missing slice is reported, not invented.
     fs::remove(sharded / "shards" / "shard-2-of-3.csv");

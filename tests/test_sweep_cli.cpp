@@ -23,20 +23,8 @@ const std::string exe = POLYROLL_EXE;
 
 fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sweep-cli-" + name); }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// wall_time_s is the table's last column and the only one that differs from run to run.
-std::string without_wall_time(const std::string& table) {
-    std::istringstream in(table);
-    std::string line, out;
-    while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
-    return out;
-}
+using polyroll::test::read_file;
+using polyroll::test::table_without_wall_time;
 
 // A small grid: empty and lightly filled shells, two materials, one invalid angle, two seeds.
 const std::string kGrid =
@@ -57,7 +45,7 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
     REQUIRE(plan.exit_code == 0);
     CHECK(fs::exists(big / "plan.json"));
     CHECK_FALSE(fs::exists(big / "results.csv"));
-    CHECK(slurp(big / "plan.json") == slurp(one / "plan.json"));
+    CHECK(read_file(big / "plan.json") == read_file(one / "plan.json"));
 
     const Result slices = shell("parallel --will-cite --halt now,fail=1 -j2 " + exe + " sweep --from " + big.string() +
                                 " --shard {}/4 --jobs 1 -q ::: 1 2 3 4");
@@ -67,10 +55,10 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
     INFO(merged.out);
     REQUIRE(merged.exit_code == 0);
     CHECK_THAT(merged.out, Catch::Contains("5 tables") && Catch::Contains("48 of 48 runs"));
-    const std::string a = slurp(one / "results.csv"), b = slurp(big / "results.csv");
+    const std::string a = read_file(one / "results.csv"), b = read_file(big / "results.csv");
     CHECK(std::count(a.begin(), a.end(), '\n') == 49);
     CHECK(a.find(",failed,") != std::string::npos);  // the 95-degree points, recorded not fatal
-    CHECK(without_wall_time(a) == without_wall_time(b));
+    CHECK(table_without_wall_time(a) == table_without_wall_time(b));
     // Each run's summary is there too, under its id.
     CHECK(std::distance(fs::directory_iterator(big / "runs"), fs::directory_iterator{}) ==
           std::distance(fs::directory_iterator(one / "runs"), fs::directory_iterator{}));
@@ -80,7 +68,7 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
     INFO(again.out);
     CHECK(again.exit_code == 0);
     CHECK_THAT(again.out, Catch::Contains("48 found done before"));
-    CHECK(without_wall_time(slurp(one / "results.csv")) == without_wall_time(a));
+    CHECK(table_without_wall_time(read_file(one / "results.csv")) == table_without_wall_time(a));
     fs::remove_all(one);
     fs::remove_all(big);
 }
@@ -113,11 +101,11 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
     }
     // A folder holding another sweep is not overwritten.
     REQUIRE(shell(exe + " sweep --sides 6 --fill 0 --out " + out.string() + " --plan-only").exit_code == 0);
-    const std::string before = slurp(out / "plan.json");
+    const std::string before = read_file(out / "plan.json");
     const Result other = shell(exe + " sweep --sides 8 --fill 0 --out " + out.string());
     INFO(other.out);
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds a different sweep"));
-    CHECK(slurp(out / "plan.json") == before);
+    CHECK(read_file(out / "plan.json") == before);
     fs::remove_all(out);
 }
