@@ -37,8 +37,9 @@ void set_fill_ratio(LaneControls& c, double ratio) { c.fill_ratio = clamp_finite
 void set_material(LaneControls& c, const std::string& preset) {
     const json& v = values_of(assets::Kind::material, preset);
     c.material = preset;
-    c.grain_friction = clamp_finite(v.at("friction").get<double>(), kFrictionMin, kFrictionMax);
-    c.grain_restitution = clamp_finite(v.at("restitution").get<double>(), kRestitutionMin, kRestitutionMax);
+    // Through the Advanced sliders' setters: the preset's values get the sliders' clamping.
+    set_grain_friction(c, v.at("friction").get<double>());
+    set_grain_restitution(c, v.at("restitution").get<double>());
 }
 void set_grain_friction(LaneControls& c, double f) { c.grain_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }
 void set_grain_restitution(LaneControls& c, double e) {
@@ -48,8 +49,8 @@ void set_grain_restitution(LaneControls& c, double e) {
 void set_ramp(SharedControls& c, const std::string& preset) {
     const json& v = values_of(assets::Kind::ramp, preset);
     c.ramp = preset;
-    c.ramp_friction = clamp_finite(v.at("friction").get<double>(), kFrictionMin, kFrictionMax);
-    c.ramp_restitution = clamp_finite(v.at("restitution").get<double>(), kRestitutionMin, kRestitutionMax);
+    set_ramp_friction(c, v.at("friction").get<double>());
+    set_ramp_restitution(c, v.at("restitution").get<double>());
 }
 void set_angle_deg(SharedControls& c, double a) { c.angle_deg = clamp_finite(a, kAngleMinDeg, kAngleMaxDeg); }
 void set_ramp_friction(SharedControls& c, double f) { c.ramp_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }

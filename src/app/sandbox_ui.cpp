@@ -67,6 +67,27 @@ bool slider_double(const char* label, double& v, double lo, double hi, const cha
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format);
 }
 
+// The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
+// setter (controls.h), which checks the name or clamps the number: the panel never writes a value
+// the scene would refuse. Each shows its tooltip and returns true when the user changed the value.
+template <class Controls>
+bool preset_control(const char* label, assets::Kind kind, Controls& c, std::string value,
+                    void (*set)(Controls&, const std::string&), const std::string& help) {
+    const bool edited = preset_combo(label, kind, value);
+    if (edited) set(c, value);
+    tip(help);
+    return edited;
+}
+
+template <class Controls>
+bool slider_control(const char* label, Controls& c, double value, double lo, double hi, const char* format,
+                    void (*set)(Controls&, double), const std::string& help) {
+    const bool edited = slider_double(label, value, lo, hi, format);
+    if (edited) set(c, value);
+    tip(help);
+    return edited;
+}
+
 void heading(const char* text) {
     ImGui::Spacing();
     ImGui::TextDisabled("%s", text);
@@ -127,14 +148,9 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
 
 void lane_controls(SandboxState& s, UiRequests& req) {
     LaneControls& c = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
-    bool changed = false;
-    std::string polygon = c.polygon;
-    if (preset_combo("polygon", assets::Kind::polygon, polygon)) {
-        set_polygon(c, polygon);
-        changed = true;
-    }
-    tip("The experiment's polygon this lane's shell is built from (size, wall, mass); n below can change its "
-        "number of sides.");
+    bool changed = preset_control("polygon", assets::Kind::polygon, c, c.polygon, set_polygon,
+                                  "The experiment's polygon this lane's shell is built from (size, wall, mass); n "
+                                  "below can change its number of sides.");
     int n = c.sides;
     if (ImGui::SliderInt("n (sides)", &n, kSidesMin, 24)) {
         set_sides(c, n);
@@ -142,45 +158,29 @@ void lane_controls(SandboxState& s, UiRequests& req) {
     }
     tip(fmt::format("n: the number of sides of the hollow polygon, {} to {} (Ctrl+click to type more than 24).",
                     kSidesMin, kSidesMax));
-    double r = c.fill_ratio;
-    if (slider_double("r (fill)", r, kFillMin, kFillMax, "%.2f")) {
-        set_fill_ratio(c, r);
-        changed = true;
-    }
-    tip("r: the share of the polygon's inside volume filled with grains, 0 (empty) to 1 (full). No unit.");
-    std::string material = c.material;
-    if (preset_combo("material", assets::Kind::material, material)) {
-        set_material(c, material);
-        changed = true;
-    }
-    tip("The grains filling the polygon (their size, density, friction and restitution come from the preset; "
-        "friction and restitution can be changed under Advanced).");
+    changed |= slider_control("r (fill)", c, c.fill_ratio, kFillMin, kFillMax, "%.2f", set_fill_ratio,
+                              "r: the share of the polygon's inside volume filled with grains, 0 (empty) to 1 "
+                              "(full). No unit.");
+    changed |= preset_control("material", assets::Kind::material, c, c.material, set_material,
+                              "The grains filling the polygon (their size, density, friction and restitution come "
+                              "from the preset; friction and restitution can be changed under Advanced).");
     if (changed) req.controls_changed = true;
 }
 
 void shared_controls(SandboxState& s, UiRequests& req) {
     SharedControls& c = s.shared;
-    bool changed = false;
-    double a = c.angle_deg;
-    if (slider_double("\u03B8 (angle)", a, kAngleMinDeg, kAngleSliderMaxDeg, "%.1f\u00B0")) {
-        set_angle_deg(c, a);
-        changed = true;
-    }
-    tip(fmt::format("\u03B8: the ramp's angle from horizontal, in degrees (all lanes). Ctrl+click to type up to "
-                    "{:g} degrees.",
-                    kAngleMaxDeg));
-    if (changed) req.controls_changed = true;
+    if (slider_control("\u03B8 (angle)", c, c.angle_deg, kAngleMinDeg, kAngleSliderMaxDeg, "%.1f\u00B0", set_angle_deg,
+                       fmt::format("\u03B8: the ramp's angle from horizontal, in degrees (all lanes). Ctrl+click to "
+                                   "type up to {:g} degrees.",
+                                   kAngleMaxDeg)))
+        req.controls_changed = true;
 }
 
 void physics_controls(SandboxState& s, UiRequests& req) {
     SharedControls& c = s.shared;
-    bool changed = false;
-    std::string ramp = c.ramp;
-    if (preset_combo("ramp", assets::Kind::ramp, ramp)) {
-        set_ramp(c, ramp);
-        changed = true;
-    }
-    tip("The ramp all lanes roll on: its length, friction and restitution (wooden ramp 1.21 m, air track 2.54 m).");
+    bool changed = preset_control("ramp", assets::Kind::ramp, c, c.ramp, set_ramp,
+                                  "The ramp all lanes roll on: its length, friction and restitution (wooden ramp "
+                                  "1.21 m, air track 2.54 m).");
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("release");
     ImGui::SameLine();
@@ -204,44 +204,28 @@ void physics_controls(SandboxState& s, UiRequests& req) {
     tip("How the physics is computed: grains (Box2D simulates the shell and every grain), segments (the fill as "
         "rigid segments that re-level after each impact) or rigid (the fill frozen as at release). The reduced "
         "models compute a whole run in under a millisecond and draw the shell only.");
-    std::string fidelity = c.fidelity;
-    if (preset_combo("fidelity", assets::Kind::fidelity, fidelity)) {
-        set_fidelity(c, fidelity);
-        changed = true;
-    }
-    tip("Time step and solver iterations: draft is fastest, reference the most accurate (and slowest).");
+    changed |= preset_control("fidelity", assets::Kind::fidelity, c, c.fidelity, set_fidelity,
+                              "Time step and solver iterations: draft is fastest, reference the most accurate (and "
+                              "slowest).");
     if (changed) req.controls_changed = true;
 }
 
 void advanced_controls(SandboxState& s, UiRequests& req) {
     LaneControls& l = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
     SharedControls& c = s.shared;
-    bool changed = false;
-    double v = l.grain_friction;
-    if (slider_double("grain friction", v, kFrictionMin, kFrictionMax, "%.2f")) {
-        set_grain_friction(l, v);
-        changed = true;
-    }
-    tip("Friction coefficient between grains (this lane), 0 to 2, no unit. Choosing a material resets it.");
-    v = l.grain_restitution;
-    if (slider_double("grain restitution", v, kRestitutionMin, kRestitutionMax, "%.2f")) {
-        set_grain_restitution(l, v);
-        changed = true;
-    }
-    tip("Restitution of grain impacts (on grains and walls; this lane), 0 (no bounce) to 1 (elastic), no unit.");
-    v = c.ramp_friction;
-    if (slider_double("ramp friction", v, kFrictionMin, kFrictionMax, "%.2f")) {
-        set_ramp_friction(c, v);
-        changed = true;
-    }
-    tip("Friction coefficient between the shell and the ramp (all lanes), 0 to 2, no unit. Choosing a ramp resets "
-        "it.");
-    v = c.ramp_restitution;
-    if (slider_double("ramp restitution", v, kRestitutionMin, kRestitutionMax, "%.2f")) {
-        set_ramp_restitution(c, v);
-        changed = true;
-    }
-    tip("Restitution of the shell's impacts on the ramp (all lanes), 0 to 1, no unit.");
+    bool changed = slider_control(
+        "grain friction", l, l.grain_friction, kFrictionMin, kFrictionMax, "%.2f", set_grain_friction,
+        "Friction coefficient between grains (this lane), 0 to 2, no unit. Choosing a material resets it.");
+    changed |= slider_control(
+        "grain restitution", l, l.grain_restitution, kRestitutionMin, kRestitutionMax, "%.2f", set_grain_restitution,
+        "Restitution of grain impacts (on grains and walls; this lane), 0 (no bounce) to 1 (elastic), no unit.");
+    changed |= slider_control("ramp friction", c, c.ramp_friction, kFrictionMin, kFrictionMax, "%.2f",
+                              set_ramp_friction,
+                              "Friction coefficient between the shell and the ramp (all lanes), 0 to 2, no unit. "
+                              "Choosing a ramp resets it.");
+    changed |= slider_control("ramp restitution", c, c.ramp_restitution, kRestitutionMin, kRestitutionMax, "%.2f",
+                              set_ramp_restitution,
+                              "Restitution of the shell's impacts on the ramp (all lanes), 0 to 1, no unit.");
     if (changed) req.controls_changed = true;
 }
 

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "render/close_up.h"
 #include "render/world_draw.h"
 
 namespace polyroll::app {
@@ -22,55 +23,22 @@ std::vector<FontSpec> scene_view_fonts(float unit) { return {label_font(unit), s
 
 namespace {
 
-double outer_radius_m(const Snapshot& s) {
-    double r = 0.0;
-    for (const geom::Vec2& v : s.outer_local_m) r = std::max(r, geom::length(v));
-    return r;
-}
-
-void outline(Layer& out, PxRect r, float width, Rgba colour, Tag tag) {
-    const Px tl{r.x, r.y}, tr{r.x + r.width, r.y}, br{r.x + r.width, r.y + r.height}, bl{r.x, r.y + r.height};
-    out.shapes.push_back(segment(tl, tr, width, colour, tag));
-    out.shapes.push_back(segment(tr, br, width, colour, tag));
-    out.shapes.push_back(segment(br, bl, width, colour, tag));
-    out.shapes.push_back(segment(bl, tl, width, colour, tag));
-}
-
-// Share of the inset's height the polygon's outer radius spans (as polyroll render's close-up).
-constexpr double kInsetRadiusShare = 0.30;
-
-// The close-up: bottom left of the view, under the ramp, following one lane's polygon; the main
-// view marks where it looks.
-void draw_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const SceneViewOptions& o, const WorldStyle& st,
-                   const FontAtlas& font, DrawList& dl) {
+// The close-up: bottom left of the view, under the ramp, following one lane's polygon, framed and
+// marked in the lane's colour; the main view marks where it looks.
+void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const SceneViewOptions& o,
+                        const WorldStyle& st, const FontAtlas& font, DrawList& dl) {
     const float u = o.unit;
     const float m = 12.0f * u;
     const float w = std::round(0.36f * o.area.width), h = std::round(0.50f * o.area.height);
-    const PxRect r{o.area.x + m, o.area.y + o.area.height - h - m, w, h};
-    const double R = outer_radius_m(s);
-    const Camera cam = follow_camera(s.shell_centre_m, s.ramp_angle_deg, R, kInsetRadiusShare, r);
-    {
-        Layer& mark = dl.new_layer();
-        const Px c = main_cam.to_px(ramp_to_world(s.shell_centre_m, s.ramp_angle_deg));
-        const float half = std::max(8.0f * u, main_cam.to_px_length(R) * 1.6f);
-        outline(mark, {c.x - half, c.y - half, 2 * half, 2 * half}, std::max(1.0f, 2.0f * u), lane_colour(lane),
-                Tag::inset_marker);
-    }
-    const ClipRect clip{static_cast<int>(std::lround(r.x)), static_cast<int>(std::lround(r.y)),
-                        static_cast<int>(std::lround(r.width)), static_cast<int>(std::lround(r.height))};
-    Layer& back = dl.new_layer(clip);
-    const Px tl{r.x, r.y}, tr{r.x + r.width, r.y}, br{r.x + r.width, r.y + r.height}, bl{r.x, r.y + r.height};
-    back.triangles.push_back({tl, tr, br, palette::background, Tag::inset_frame});
-    back.triangles.push_back({tl, br, bl, palette::background, Tag::inset_frame});
-    WorldStyle inset_style = st;
-    inset_style.visible = r;
-    draw_world(s, cam, inset_style, font, dl.new_layer(clip));
-    Layer& frame = dl.new_layer();
-    outline(frame, r, std::max(1.0f, 2.5f * u), lane_colour(lane), Tag::inset_frame);
-    const FontSpec f = inset_font(u);
-    const std::string text = fmt::format("close-up \u00D7{:.0f}{}", cam.px_per_m / main_cam.px_per_m,
-                                         racing ? fmt::format(", lane {}", lane + 1) : std::string());
-    font.layout(text, f, {r.x + 8.0f * u, r.y + 6.0f * u + font.ascent(f)}, palette::text_dim, frame.glyphs);
+    CloseUpStyle style;
+    style.rect = {o.area.x + m, o.area.y + o.area.height - h - m, w, h};
+    style.unit = u;
+    style.marker = lane_colour(lane);
+    style.border = lane_colour(lane);
+    style.label_font = inset_font(u);
+    style.label_offset = {8.0f * u, 6.0f * u};
+    if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
+    draw_close_up(s, main_cam, style, st, font, dl);
 }
 
 }  // namespace
@@ -102,7 +70,7 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
     for (size_t i = 0; i < lanes.size(); ++i) draw_world(lanes[i], layout.cameras[i], st, font, dl.new_layer(clip));
     if (!o.follow && o.close_up_lane >= 0 && static_cast<size_t>(o.close_up_lane) < lanes.size()) {
         const size_t k = static_cast<size_t>(o.close_up_lane);
-        draw_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], o, st, font, dl);
+        draw_lane_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], o, st, font, dl);
     }
 
     // When racing: each lane's number in a badge at the top of its ramp (where the polygons start),

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/world_draw.h"
+
 namespace polyroll::app {
 
 using render::Camera;
@@ -13,12 +15,6 @@ using render::PxRect;
 namespace {
 
 Px centre_of(const PxRect& a) { return {a.x + a.width / 2.0f, a.y + a.height / 2.0f}; }
-
-double outer_radius_m(const render::Snapshot& s) {
-    double r = 0.0;
-    for (const geom::Vec2& v : s.outer_local_m) r = std::max(r, geom::length(v));
-    return r;
-}
 
 // Height of the ramp's drawn body and its scale labels below the surface, in design pixels
 // (world_draw.cpp draws an 18-pixel body and labels under it).
@@ -62,7 +58,7 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
     if (lanes.empty()) return out;
     const size_t n = lanes.size();
     double radius = 0.0;
-    for (const auto& s : lanes) radius = std::max(radius, outer_radius_m(s));
+    for (const auto& s : lanes) radius = std::max(radius, render::outer_radius_m(s));
     const float band = kRampBandDesignPx * unit;
 
     if (follow) {

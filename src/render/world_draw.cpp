@@ -27,6 +27,12 @@ std::vector<Vec2> shell_world_polygon(const Snapshot& s, bool outer) {
     return out;
 }
 
+double outer_radius_m(const Snapshot& s) {
+    double r = 0.0;
+    for (const Vec2& v : s.outer_local_m) r = std::max(r, geom::length(v));
+    return r;
+}
+
 Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, double speed_max_m_s) {
     if (how == GrainColouring::speed) return speed_colour(g.speed_m_s / std::max(speed_max_m_s, 1e-9));
     return material_colour(s.material);

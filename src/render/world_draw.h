@@ -24,6 +24,10 @@ void draw_world(const Snapshot& s, const Camera& cam, const WorldStyle& style, c
 // The shell's vertices in the lab frame (outer or inner polygon).
 std::vector<geom::Vec2> shell_world_polygon(const Snapshot& s, bool outer);
 
+// The shell's outer radius: its farthest outer vertex from its centre. The cameras frame the polygon
+// by it (the whole ramp's clearance, following, the close-up).
+double outer_radius_m(const Snapshot& s);
+
 // The grain fill colour for a grain of the snapshot.
 Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, double speed_max_m_s);
 
