@@ -208,6 +208,32 @@ TEST_CASE("polyroll render refuses bad flags with one line, exit 2 and nothing w
     CHECK(fs::exists(full / "keep.txt"));
 }
 
+TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[render][cli][video]") {
+    // ffmpeg (and its ffprobe) come from Debian's ffmpeg package, in third_party/debian-packages.txt.
+    INFO("ffmpeg and ffprobe are needed (Debian package ffmpeg, in third_party/debian-packages.txt)");
+    REQUIRE(polyroll::test::run_command("command -v ffmpeg && command -v ffprobe").exit_code == 0);
+    const fs::path base = scratch("video-made");
+    // Odd sides: the video pads them to even ones (yuv420p needs even sides).
+    const Cli r = run_cli("render --time-limit 0.5 --fps 10 --size 65x37 --hold 0 --out " + (base / "f").string() +
+                          " --video " + (base / "v.mp4").string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(fs::exists(base / "v.mp4"));
+    int frames = 0;
+    for (const auto& e : fs::directory_iterator(base / "f")) frames += e.path().extension() == ".png";
+    REQUIRE(frames > 1);
+    const auto probe = polyroll::test::run_command(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames,width,height "
+        "-of csv=p=0 " + (base / "v.mp4").string());
+    INFO(probe.out);
+    REQUIRE(probe.exit_code == 0);
+    CHECK(probe.out == "66,38," + std::to_string(frames) + "\n");
+    // Nothing but the video and the frames' folder: ffmpeg's temporary was renamed into place.
+    const auto entries = std::distance(fs::directory_iterator(base), fs::directory_iterator());
+    CHECK(entries == 2);
+    fs::remove_all(base);
+}
+
 TEST_CASE("render with --video but no ffmpeg says how to get it and still writes the frames", "[render][cli]") {
     const fs::path base = scratch("video");
     // An empty PATH hides any installed ffmpeg.
