@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -101,7 +102,7 @@ void write_screenshot(Window& win, const fs::path& path) {
 
 // Frame-time statistics for --bench.
 struct BenchStats {
-    std::vector<double> frame_s, physics_s;
+    std::vector<double> frame_s, physics_s, drawing_s;
     double sim_start_s = 0.0, wall_start_s = 0.0;
     double running_wall_s = 0.0;  // wall time of the frames that began with a lane still running
     long steps = 0;
@@ -111,9 +112,10 @@ struct BenchStats {
         std::vector<double> sorted = frame_s;
         std::sort(sorted.begin(), sorted.end());
         auto pct = [&](double p) { return sorted[std::min(sorted.size() - 1, static_cast<size_t>(p * sorted.size()))]; };
-        double total = 0, phys = 0;
+        double total = 0, phys = 0, draw = 0;
         for (double f : frame_s) total += f;
         for (double p : physics_s) phys += p;
+        for (double d : drawing_s) draw += d;
         const double n = static_cast<double>(frame_s.size());
         int grains = 0;
         for (size_t i = 0; i < lanes.size(); ++i) grains += lanes.lane(i).grains();
@@ -126,9 +128,9 @@ struct BenchStats {
         fmt::print("  frames       {} in {:.2f} s: {:.1f} frames/s\n", frame_s.size(), wall, n / wall);
         fmt::print("  frame time   mean {:.2f} ms, median {:.2f} ms, 95th percentile {:.2f} ms, max {:.2f} ms\n",
                    1e3 * total / n, 1e3 * pct(0.5), 1e3 * pct(0.95), 1e3 * sorted.back());
-        fmt::print("  physics      {:.2f} ms per frame (budget {:.0f} ms), {} tracker steps\n", 1e3 * phys / n,
-                   1e3 * kPhysicsBudgetPerFrameS, steps);
-        fmt::print("  drawing      {:.2f} ms per frame (scene draw list, GL, ImGui, swap)\n", 1e3 * (total - phys) / n);
+        fmt::print("  physics      {:.2f} ms per frame (budget {:.0f} ms, beside the drawing), {} tracker steps\n",
+                   1e3 * phys / n, 1e3 * kPhysicsBudgetPerFrameS, steps);
+        fmt::print("  drawing      {:.2f} ms per frame (scene draw list, GL, ImGui, swap)\n", 1e3 * draw / n);
         fmt::print("  simulated    {:.3f} s in {:.2f} s of wall time while running: {:.2f}x real time (physics alone "
                    "{:.2f}x){}\n",
                    sim, rt_wall, sim / rt_wall, phys > 0 ? sim / phys : 0.0,
@@ -170,12 +172,13 @@ public:
             last = t0;
             const bool final_frame = frames > 0 && frame + 1 >= frames;
             const bool was_running = lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble();
-            const double physics_s = frame_once(wall_dt, final_frame && !o_.screenshot.empty());
+            const FrameTimes times = frame_once(wall_dt, final_frame && !o_.screenshot.empty());
             ++frame;
             if (o_.bench) {
                 bench.frame_s.push_back(now_s() - t0);
                 if (was_running) bench.running_wall_s += now_s() - t0;
-                bench.physics_s.push_back(physics_s);
+                bench.physics_s.push_back(times.physics_s);
+                bench.drawing_s.push_back(times.drawing_s);
             }
             if (final_frame) break;
             if (!o_.capture() && !o_.bench) {
@@ -198,17 +201,31 @@ public:
     }
 
 private:
-    // One window frame; returns the wall time spent on physics.
-    double frame_once(double wall_dt, bool screenshot_after) {
+    struct FrameTimes {
+        double physics_s = 0.0;  // on the physics thread
+        double drawing_s = 0.0;  // on this thread, meanwhile
+    };
+
+    // One window frame. The panel is built first (it reads the lanes), then the lanes' snapshots are
+    // taken; from there the frame's physics runs on a second thread while this one draws the
+    // snapshots, renders the panel and swaps, which read nothing the physics writes. The two meet
+    // before the panel's requests are carried out. A frame thus shows the state its physics started
+    // from (one frame of lag, 1/60 s), and a slow scene's physics and the drawing share the frame's
+    // time instead of taking turns. A capture (--frames) steps first instead, so that its last frame
+    // shows the moment its frame count promises.
+    FrameTimes frame_once(double wall_dt, bool screenshot_after) {
         win_.set_ui_scale(s_.ui_scale);
         win_.set_high_contrast(s_.high_contrast);
         win_.begin_frame();
         if (lanes_.poll()) clock_.restart(0.0);
         clock_.set_slow_divisor(kSlowMotionDivisors[static_cast<size_t>(s_.slow_index)]);
-
-        const double p0 = now_s();
-        step_physics(wall_dt);
-        const double physics_s = now_s() - p0;
+        auto timed_physics = [this, wall_dt] {
+            const double p0 = now_s();
+            step_physics(wall_dt);
+            return now_s() - p0;
+        };
+        FrameTimes times;
+        if (o_.capture()) times.physics_s = timed_physics();
 
         const ImGuiIO& io = ImGui::GetIO();
         const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, s_.ui_scale);
@@ -228,14 +245,22 @@ private:
         const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
                                   std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
         handle_mouse(area, ratio);
-        draw_scene(fb_w, fb_h, area, ratio);
+        const std::vector<std::string> labels = take_snapshots();
+        const bool show_scene = !running_to_end_;
         const bool any_active = ImGui::IsAnyItemActive();
+
+        std::future<double> physics;
+        if (!o_.capture()) physics = std::async(std::launch::async, timed_physics);
+        const double d0 = now_s();
+        draw_scene(fb_w, fb_h, area, ratio, labels, show_scene);
         win_.render_ui();
         if (screenshot_after) write_screenshot(win_, o_.screenshot);
         if (req.screenshot) save_screenshot();
         win_.swap();
+        times.drawing_s = now_s() - d0;
+        if (physics.valid()) times.physics_s = physics.get();  // rethrows what the physics threw
         carry_out(req, any_active);
-        return physics_s;
+        return times;
     }
 
     void step_physics(double wall_dt) {
@@ -275,14 +300,10 @@ private:
             view_.pan_by(io.MouseDelta.x * ratio, io.MouseDelta.y * ratio);
     }
 
-    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio) {
-        const float unit = s_.ui_scale * ratio;
-        if (!atlas_ || atlas_unit_ != unit) {
-            atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
-            atlas_unit_ = unit;
-        }
-        // The last finite snapshots are kept: a lane whose state turns to NaN stops the run, and the
-        // picture stays the last sound one rather than garbage.
+    // The lanes' snapshots for this frame's picture, and the lanes' labels. The last finite snapshots
+    // are kept: a lane whose state turns to NaN stops the run, and the picture stays the last sound
+    // one rather than garbage.
+    std::vector<std::string> take_snapshots() {
         std::vector<std::string> labels;
         if (lanes_.ready() && !running_to_end_) {
             shown_.resize(lanes_.size());
@@ -295,6 +316,17 @@ private:
         } else if (!lanes_.ready()) {
             shown_.clear();
         }
+        return labels;
+    }
+
+    // Reads only the snapshots and the view: it runs while the physics thread steps the lanes.
+    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, const std::vector<std::string>& labels,
+                    bool show_scene) {
+        const float unit = s_.ui_scale * ratio;
+        if (!atlas_ || atlas_unit_ != unit) {
+            atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
+            atlas_unit_ = unit;
+        }
         SceneViewOptions vo;
         vo.width_px = fb_w;
         vo.height_px = fb_h;
@@ -306,8 +338,7 @@ private:
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
         const std::vector<render::Snapshot> none;
-        gl_.draw(build_scene_view(running_to_end_ ? none : shown_, labels, vo, *atlas_));
-        (void)ratio;
+        gl_.draw(build_scene_view(show_scene ? shown_ : none, labels, vo, *atlas_));
     }
 
     void apply_controls() {

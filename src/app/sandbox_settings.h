@@ -31,9 +31,11 @@ inline constexpr double kFrameRateCapHz = 60.0;
 
 // --- Real time. The physics runs in fixed tracker steps; each window frame takes as many as the
 // simulated time owes, but spends at most this much wall time on them, so a slow machine slows the
-// simulation down (and the window says so) instead of freezing the UI. 10 ms leaves about 6 ms of a
-// 60 frames/s frame for drawing.
-inline constexpr double kPhysicsBudgetPerFrameS = 0.010;
+// simulation down (and the window says so) instead of freezing the UI. The steps run on a second
+// thread while the frame is drawn, so the budget may fill most of a 60 frames/s frame (16.7 ms),
+// less the panel's own ~2 ms. Measured with --bench on the 2-core machine (docs/sandbox.md), 14 ms
+// against 10 ms: the large rice scene 0.16x against 0.13x real time, 47 against 52 frames/s.
+inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
 // "Run to the end" draws no scene, so it may spend most of a frame on physics (the UI still answers).
 inline constexpr double kRunToEndBudgetPerFrameS = 0.200;
 // A stalled frame (window dragged, machine busy) owes at most this much simulated time.
