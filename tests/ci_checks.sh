@@ -40,10 +40,14 @@ fi
 step "3/4 fuzz targets (clang, libFuzzer + ASan + UBSan), 60 s each"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
+# Seeds: tests/fuzz/corpus_<target>/, and for the scene parser the bundled asset files themselves.
 for target in scene cli; do
     mkdir -p "$scratch/corpus_$target" "$scratch/artifacts"
+    seeds="tests/fuzz/corpus_$target"
+    [ "$target" = scene ] && seeds="$seeds assets"
+    # shellcheck disable=SC2086
     build-fuzz/fuzz_$target -max_total_time=60 -print_final_stats=1 -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
-        -artifact_prefix="$scratch/artifacts/$target-" "$scratch/corpus_$target" "tests/fuzz/corpus_$target" \
+        -artifact_prefix="$scratch/artifacts/$target-" "$scratch/corpus_$target" $seeds \
         2>"$scratch/fuzz_$target.log" || { tail -n 60 "$scratch/fuzz_$target.log"; exit 1; }
     grep -E '^Done [0-9]+ runs|DONE' "$scratch/fuzz_$target.log" || true
 done
