@@ -35,7 +35,7 @@ PhysicsOutcome PhysicsWorker::finish() {
     done_.wait(lock, [this] { return outcome_.has_value() || error_; });
     busy_ = false;
     if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-    PhysicsOutcome out = std::move(*outcome_);
+    const PhysicsOutcome out = *outcome_;
     outcome_.reset();
     return out;
 }
@@ -67,7 +67,7 @@ void PhysicsWorker::loop() {
             error = std::current_exception();
         }
         lock.lock();
-        outcome_ = std::move(out);
+        outcome_ = out;
         error_ = error;
         done_.notify_one();
     }
