@@ -6,12 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <future>
-#include <limits>
 #include <memory>
-#include <optional>
 #include <regex>
 #include <thread>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -21,14 +19,16 @@
 #include "app/export_files.h"
 #include "app/headless_fallback.h"
 #include "app/lane_set.h"
+#include "app/physics_requests.h"
+#include "app/physics_worker.h"
 #include "app/readouts.h"
+#include "app/sandbox_physics.h"
 #include "app/sandbox_presets.h"
 #include "app/sandbox_settings.h"
 #include "app/sandbox_state.h"
 #include "app/sandbox_ui.h"
 #include "app/sandbox_window.h"
 #include "app/scene_view.h"
-#include "app/sim_clock.h"
 #include "render/font.h"
 #include "render/gl_renderer.h"
 #include "render/png_writer.h"
@@ -140,26 +140,30 @@ struct BenchStats {
     }
 };
 
+// The window's loop on the UI thread. The physics (lanes, clock, transport) lives in SandboxPhysics and
+// is changed only by jobs on the one physics worker: this class fills PhysicsRequests, hands them
+// over, and learns what happened from each job's PhysicsOutcome; it reads the lanes to draw them
+// only while the worker is idle.
 class Sandbox {
 public:
-    Sandbox(Window& win, SandboxState state, const Options& o) : win_(win), s_(std::move(state)), o_(o) {
-        ctx_.lanes = &lanes_;
-        ctx_.clock = &clock_;
+    Sandbox(Window& win, SandboxState state, const Options& o)
+        : win_(win), s_(std::move(state)), o_(o), physics_(o.capture(), now_s) {
+        ctx_.lanes = &physics_.lanes();
+        ctx_.clock = &physics_.clock();
     }
 
     int run() {
         apply_controls();
-        double build_s = 0.0;
-        if (o_.capture() || o_.bench) {
-            // A capture or a benchmark starts from the built scene, whatever the machine's speed.
-            const double t0 = now_s();
-            lanes_.wait_until_built();
-            build_s = now_s() - t0;
-            clock_.restart(0.0);
-            if (!lanes_.build_error().empty()) {
-                fmt::print(stderr, "polyroll-sandbox: the scene could not be built: {}\n", lanes_.build_error());
-                return kExitFailure;
-            }
+        pending_.play = s_.playing;  // --paused
+        // A capture or a benchmark starts from the built scene, whatever the machine's speed.
+        const bool wait = o_.capture() || o_.bench;
+        pending_.wait_until_built = wait;
+        const double build_start_s = now_s();
+        take(worker_.run(std::exchange(pending_, {})));
+        const double build_s = wait ? now_s() - build_start_s : 0.0;
+        if (wait && last_.build_failed) {
+            fmt::print(stderr, "polyroll-sandbox: the scene could not be built: {}\n", lanes().build_error());
+            return kExitFailure;
         }
         const long frames = o_.bench && o_.frames == 0 ? kDefaultBenchFrames : o_.frames;
         BenchStats bench;
@@ -171,7 +175,7 @@ public:
             const double wall_dt = frame == 0 ? 0.0 : t0 - last;
             last = t0;
             const bool final_frame = frames > 0 && frame + 1 >= frames;
-            const bool was_running = lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble();
+            const bool was_running = lanes().ready() && !last_.run_over();
             const FrameTimes times = frame_once(wall_dt, final_frame && !o_.screenshot.empty());
             ++frame;
             if (o_.bench) {
@@ -189,49 +193,46 @@ public:
         }
         if (o_.bench) {
             bench.steps = steps_;
-            bench.print(lanes_, lanes_.time_s(), now_s(), s_.preset, win_.gl_renderer(), build_s);
+            bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
         }
         if (o_.capture()) {
             fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
-                       lanes_.time_s(), lanes_.trouble() ? ", stopped by numerical trouble" : "",
+                       last_.time_s, last_.trouble ? ", stopped by numerical trouble" : "",
                        o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
-            if (lanes_.trouble()) fmt::print("  {}\n", *lanes_.trouble());
+            if (lanes().trouble()) fmt::print("  {}\n", *lanes().trouble());
         }
         return kExitOk;
     }
 
 private:
     struct FrameTimes {
-        double physics_s = 0.0;  // on the physics thread
+        double physics_s = 0.0;  // on the physics worker
         double drawing_s = 0.0;  // on this thread, meanwhile
     };
 
+    // Read only while the worker is idle (between a job's finish and the next start).
+    const LaneSet& lanes() const { return physics_.lanes(); }
+
     // One window frame. The panel is built first (it reads the lanes), then the lanes' snapshots are
-    // taken; from there the frame's physics runs on a second thread while this one draws the
+    // taken; from there the frame's physics job runs on the worker while this thread draws the
     // snapshots, renders the panel and swaps, which read nothing the physics writes. The two meet
-    // before the panel's requests are carried out. A frame thus shows the state its physics started
-    // from (one frame of lag, 1/60 s), and a slow scene's physics and the drawing share the frame's
-    // time instead of taking turns. A capture (--frames) steps first instead, so that its last frame
-    // shows the moment its frame count promises.
+    // (the sync point) before the panel's requests are handed over. A frame thus shows the state its
+    // physics started from (one frame of lag, 1/60 s), and a slow scene's physics and the drawing
+    // share the frame's time instead of taking turns. A capture (--frames) runs its frame's job
+    // first instead and waits for it, so that its last frame shows the moment its frame count
+    // promises.
     FrameTimes frame_once(double wall_dt, bool screenshot_after) {
         win_.set_ui_scale(s_.ui_scale);
         win_.set_high_contrast(s_.high_contrast);
         win_.begin_frame();
-        if (lanes_.poll()) clock_.restart(0.0);
-        clock_.set_slow_divisor(kSlowMotionDivisors[static_cast<size_t>(s_.slow_index)]);
-        auto timed_physics = [this, wall_dt] {
-            const double p0 = now_s();
-            step_physics(wall_dt);
-            return now_s() - p0;
-        };
         FrameTimes times;
-        if (o_.capture()) times.physics_s = timed_physics();
+        if (o_.capture()) times.physics_s = take(worker_.run(frame_requests(wall_dt)));
 
         const ImGuiIO& io = ImGui::GetIO();
         const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, s_.ui_scale);
         UiRequests req;
         read_shortcuts(s_, req);
-        ctx_.running_to_end = running_to_end_;
+        ctx_.running_to_end = last_.running_to_end;
         ctx_.large_font = win_.large_font();
         draw_control_panel(s_, ctx_, L, req);
         draw_readouts_and_plots(s_, ctx_, L);
@@ -246,11 +247,10 @@ private:
                                   std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
         handle_mouse(area, ratio);
         const std::vector<std::string> labels = take_snapshots();
-        const bool show_scene = !running_to_end_;
+        const bool show_scene = !last_.running_to_end;
         const bool any_active = ImGui::IsAnyItemActive();
 
-        std::future<double> physics;
-        if (!o_.capture()) physics = std::async(std::launch::async, timed_physics);
+        if (!o_.capture()) worker_.start(frame_requests(wall_dt));
         const double d0 = now_s();
         draw_scene(fb_w, fb_h, area, ratio, labels, show_scene);
         win_.render_ui();
@@ -258,35 +258,25 @@ private:
         if (req.screenshot) save_screenshot();
         win_.swap();
         times.drawing_s = now_s() - d0;
-        if (physics.valid()) times.physics_s = physics.get();  // rethrows what the physics threw
+        if (!o_.capture()) times.physics_s = take(worker_.finish());  // rethrows what the physics threw
         carry_out(req, any_active);
         return times;
     }
 
-    void step_physics(double wall_dt) {
-        if (!lanes_.ready() || lanes_.trouble()) return;
-        if (running_to_end_) {
-            if (!lanes_.all_finished()) {
-                const AdvanceResult r =
-                    lanes_.advance_to(std::numeric_limits<double>::infinity(), kRunToEndBudgetPerFrameS, now_s);
-                steps_ += r.steps;
-            }
-            if (lanes_.all_finished() || lanes_.trouble()) {
-                running_to_end_ = false;
-                s_.playing = false;
-            }
-            clock_.restart(lanes_.time_s());
-            return;
-        }
-        if (!s_.playing || lanes_.all_finished()) return;
-        // A capture advances a fixed 1/60 s per frame with no budget, so it shows the same moment on any
-        // machine; the window and the benchmark keep real time within the budget.
-        const double dt = o_.capture() ? kCaptureFrameDtS : wall_dt;
-        const double budget = o_.capture() ? std::numeric_limits<double>::infinity() : kPhysicsBudgetPerFrameS;
-        clock_.advance(dt);
-        const AdvanceResult r = lanes_.advance_to(clock_.target_s(), budget, now_s);
-        steps_ += r.steps;
-        clock_.frame_done(dt, r.reached_s, r.budget_hit);
+    // A frame's job: the commands pending so far (a lane found not finite) and the frame itself.
+    PhysicsRequests frame_requests(double wall_dt) {
+        PhysicsRequests r = std::exchange(pending_, {});
+        r.frame = PhysicsRequests::Frame{wall_dt, kSlowMotionDivisors[static_cast<size_t>(s_.slow_index)]};
+        return r;
+    }
+
+    // Reads a job's outcome: the panel shows the transport the physics reports. Returns the job's
+    // wall time.
+    double take(const PhysicsOutcome& out) {
+        last_ = out;
+        s_.playing = out.playing;
+        steps_ += out.steps;
+        return out.physics_s;
     }
 
     void handle_mouse(const render::PxRect& area, float ratio) {
@@ -301,25 +291,26 @@ private:
     }
 
     // The lanes' snapshots for this frame's picture, and the lanes' labels. The last finite snapshots
-    // are kept: a lane whose state turns to NaN stops the run, and the picture stays the last sound
-    // one rather than garbage.
+    // are kept: a lane whose state turns to NaN stops the run (requested of the physics before it
+    // steps again), and the picture stays the last sound one rather than garbage.
     std::vector<std::string> take_snapshots() {
         std::vector<std::string> labels;
-        if (lanes_.ready() && !running_to_end_) {
-            shown_.resize(lanes_.size());
-            for (size_t i = 0; i < lanes_.size(); ++i) {
-                render::Snapshot snap = lanes_.lane(i).snapshot();
+        const LaneSet& lanes = this->lanes();
+        if (lanes.ready() && !last_.running_to_end) {
+            shown_.resize(lanes.size());
+            for (size_t i = 0; i < lanes.size(); ++i) {
+                render::Snapshot snap = lanes.lane(i).snapshot();
                 if (snapshot_finite(snap)) shown_[i] = std::move(snap);
-                else lanes_.report_non_finite(i);
-                labels.push_back(lane_readout(lanes_.lane(i).scene(), lanes_.lane(i).measured(), 0).title);
+                else if (!pending_.non_finite_lane) pending_.non_finite_lane = i;
+                labels.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), 0).title);
             }
-        } else if (!lanes_.ready()) {
+        } else if (!lanes.ready()) {
             shown_.clear();
         }
         return labels;
     }
 
-    // Reads only the snapshots and the view: it runs while the physics thread steps the lanes.
+    // Reads only the snapshots and the view: it runs while the physics worker steps the lanes.
     void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, const std::vector<std::string>& labels,
                     bool show_scene) {
         const float unit = s_.ui_scale * ratio;
@@ -341,12 +332,11 @@ private:
         gl_.draw(build_scene_view(show_scene ? shown_ : none, labels, vo, *atlas_));
     }
 
+    // The controls' scenes, requested of the physics as a restart (or the reason they were refused).
     void apply_controls() {
         try {
-            lanes_.rebuild(scenes_for(s_));
+            pending_.restart_with = scenes_for(s_);
             ctx_.control_error.clear();
-            running_to_end_ = false;
-            clock_.restart(0.0);
         } catch (const std::exception& e) {
             ctx_.control_error = fmt::format("Not applied: {}", e.what());
         }
@@ -365,11 +355,11 @@ private:
     }
 
     void export_run() {
-        if (!lanes_.ready()) return;
+        if (!lanes().ready()) return;
         try {
             fs::create_directories(o_.out);
             std::vector<RunResult> runs;
-            for (size_t i = 0; i < lanes_.size(); ++i) runs.push_back(lanes_.lane(i).result());
+            for (size_t i = 0; i < lanes().size(); ++i) runs.push_back(lanes().lane(i).result());
             const fs::path folder = next_numbered(o_.out, "run", "");
             export_runs(folder, runs);
             ctx_.last_saved = folder.string();
@@ -378,6 +368,8 @@ private:
         }
     }
 
+    // At the sync point: the panel's requests become commands for the physics, handed over at once
+    // and waited for (the physics is idle now), so the next frame's panel shows their effect.
     void carry_out(const UiRequests& req, bool any_item_active) {
         if (req.load_preset) {
             try {
@@ -393,20 +385,17 @@ private:
         if (s_.changes_pending && s_.restart_on_change && !any_item_active) apply_controls();
         if (req.reset) apply_controls();
         if (req.toggle_play) {
-            if (lanes_.all_finished() || lanes_.trouble()) {
+            // Play after the run is over starts it again; a restart already asked for is not over.
+            if (!pending_.restart_with && last_.run_over()) {
                 apply_controls();
-                s_.playing = true;
+                pending_.play = true;
             } else {
-                s_.playing = !s_.playing;
-                clock_.restart(lanes_.time_s());
+                pending_.play = !s_.playing;
             }
         }
-        if (req.step && lanes_.ready() && !lanes_.trouble()) {
-            s_.playing = false;
-            lanes_.advance_to(lanes_.time_s() + kSingleStepS, std::numeric_limits<double>::infinity(), now_s);
-            clock_.restart(lanes_.time_s());
-        }
-        if (req.run_to_end && lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble()) running_to_end_ = true;
+        if (req.step) pending_.step = true;
+        if (req.run_to_end) pending_.run_to_end = true;
+        if (pending_.has_commands()) take(worker_.run(std::exchange(pending_, {})));
         if (req.export_run) export_run();
         if (req.reset_view) view_.reset();
     }
@@ -414,16 +403,18 @@ private:
     Window& win_;
     SandboxState s_;
     Options o_;
-    LaneSet lanes_;
-    SimClock clock_;
+    SandboxPhysics physics_;
     UiContext ctx_;
     ViewTransform view_;
     render::GlRenderer gl_;
     std::unique_ptr<render::FontAtlas> atlas_;
     float atlas_unit_ = 0.0f;
     std::vector<render::Snapshot> shown_;
-    bool running_to_end_ = false;
+    PhysicsRequests pending_;  // commands gathered since the last hand-off
+    PhysicsOutcome last_;      // what the last job reported
     long steps_ = 0;
+    // Last, so it is destroyed first: it finishes a job in hand before physics_ goes.
+    PhysicsWorker worker_{[this](const PhysicsRequests& r) { return physics_.run(r); }};
 };
 
 int sandbox_main(int argc, char** argv) {

@@ -30,6 +30,8 @@ struct SandboxState {
     bool restart_on_change = true;
     bool changes_pending = false;      // controls changed since the lanes were built
 
+    // The transport as the physics last reported it (PhysicsOutcome), shown by the panel; at the start,
+    // what the window asks for (--paused). Play and pause are requests (PhysicsRequests).
     bool playing = true;
     int slow_index = 0;                // into kSlowMotionDivisors
     bool follow = false;

@@ -1,0 +1,87 @@
+// The sandbox's physics side: see sandbox_physics.h.
+#include "app/sandbox_physics.h"
+
+#include <limits>
+#include <utility>
+
+#include "app/sandbox_settings.h"
+
+namespace polyroll::app {
+
+namespace {
+constexpr double kNoBudget = std::numeric_limits<double>::infinity();
+}
+
+SandboxPhysics::SandboxPhysics(bool fixed_frames, std::function<double()> now_s)
+    : fixed_frames_(fixed_frames), now_s_(std::move(now_s)) {}
+
+PhysicsOutcome SandboxPhysics::run(const PhysicsRequests& requests) {
+    const double t0 = now_s_();
+    PhysicsOutcome out;
+    apply(requests, out);
+    if (requests.frame) {
+        if (lanes_.poll()) {
+            clock_.restart(0.0);
+            out.built = true;
+        }
+        clock_.set_slow_divisor(requests.frame->slow_divisor);
+        step_frame(requests.frame->wall_dt_s, out);
+    }
+    out.physics_s = now_s_() - t0;
+    out.time_s = lanes_.time_s();
+    out.playing = playing_;
+    out.running_to_end = running_to_end_;
+    out.build_failed = !lanes_.build_error().empty();
+    out.finished = lanes_.all_finished();
+    out.trouble = lanes_.trouble().has_value();
+    return out;
+}
+
+void SandboxPhysics::apply(const PhysicsRequests& r, PhysicsOutcome& out) {
+    if (r.non_finite_lane) lanes_.report_non_finite(*r.non_finite_lane);
+    if (r.restart_with) {
+        lanes_.rebuild(*r.restart_with);
+        running_to_end_ = false;
+        clock_.restart(0.0);
+    }
+    if (r.wait_until_built) {
+        lanes_.wait_until_built();
+        clock_.restart(0.0);
+        out.built = lanes_.ready();
+    }
+    if (r.play && *r.play != playing_) {
+        playing_ = *r.play;
+        clock_.restart(lanes_.time_s());
+    }
+    if (r.step && lanes_.ready() && !lanes_.trouble()) {
+        playing_ = false;
+        out.steps += lanes_.advance_to(lanes_.time_s() + kSingleStepS, kNoBudget, now_s_).steps;
+        clock_.restart(lanes_.time_s());
+    }
+    if (r.run_to_end && lanes_.ready() && !lanes_.all_finished() && !lanes_.trouble()) running_to_end_ = true;
+}
+
+void SandboxPhysics::step_frame(double wall_dt_s, PhysicsOutcome& out) {
+    if (!lanes_.ready() || lanes_.trouble()) return;
+    if (running_to_end_) {
+        if (!lanes_.all_finished())
+            out.steps += lanes_.advance_to(kNoBudget, kRunToEndBudgetPerFrameS, now_s_).steps;
+        if (lanes_.all_finished() || lanes_.trouble()) {
+            running_to_end_ = false;
+            playing_ = false;
+        }
+        clock_.restart(lanes_.time_s());
+        return;
+    }
+    if (!playing_ || lanes_.all_finished()) return;
+    // A capture advances a fixed 1/60 s per frame with no budget, so it shows the same moment on any
+    // machine; the window and the benchmark keep real time within the budget.
+    const double dt = fixed_frames_ ? kCaptureFrameDtS : wall_dt_s;
+    const double budget = fixed_frames_ ? kNoBudget : kPhysicsBudgetPerFrameS;
+    clock_.advance(dt);
+    const AdvanceResult r = lanes_.advance_to(clock_.target_s(), budget, now_s_);
+    out.steps += r.steps;
+    clock_.frame_done(dt, r.reached_s, r.budget_hit);
+}
+
+}  // namespace polyroll::app
