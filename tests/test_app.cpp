@@ -23,6 +23,7 @@
 #include "app/sim_clock.h"
 #include "app/view_control.h"
 #include "render/font.h"
+#include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/shell_properties.h"
@@ -372,9 +373,9 @@ TEST_CASE("numerical trouble stops the lanes with a message and a finer preset t
 }
 
 TEST_CASE("plot data: readable ranges, impact markers on the trace, thinning", "[app]") {
-    CHECK(readable_ceil(0.37, 0.1) == Approx(0.5));
-    CHECK(readable_ceil(1.2, 1.0) == Approx(2.0));
-    CHECK(readable_ceil(0.0, 1.0) == Approx(1.0));
+    CHECK(render::nice_ceil(0.37, 0.1) == Approx(0.5));
+    CHECK(render::nice_ceil(1.2, 1.0) == Approx(2.0));
+    CHECK(render::nice_ceil(0.0, 1.0) == Approx(1.0));
     Measurements m;
     for (int i = 0; i <= 100; ++i) {
         TrajectorySample t;

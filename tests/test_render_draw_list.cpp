@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/overlay.h"
 #include "render/snapshot.h"
+#include "render/ticks.h"
 #include "render/world_draw.h"
 #include "sim/geometry.h"
 #include "sim/simulation.h"
@@ -183,6 +185,34 @@ TEST_CASE("the speed plot's axes cover the data and grow with it", "[render]") {
     CHECK(ax.speed_min_m_s <= -0.15);
     o.plot_time_max_s = 10.0;
     CHECK(plot_axes(s, o).time_max_s == 10.0);
+}
+
+TEST_CASE("readable numbers: nice values, axis ends and ticks, the same for frames and window", "[render]") {
+    CHECK(nice_ceil(0.37) == Approx(0.5));
+    CHECK(nice_ceil(2.0) == 2.0);  // already nice: not a step up
+    CHECK(nice_ceil(0.0) == 1.0);
+    CHECK(nice_ceil(std::nan("")) == 1.0);
+    CHECK(nice_ceil(0.001, 0.1) == Approx(0.1));
+    CHECK(nice_ceil(std::numeric_limits<double>::infinity(), 0.1) == 0.1);
+    CHECK(round_up_nice(1.225, 5.0) == Approx(1.5));
+    CHECK(round_up_nice(11.4, 8.0) == Approx(12.0));
+    CHECK(round_up_nice(-1.0, 5.0) == 0.0);
+
+    // A speed axis from -0.15 to 0.5: steps of 0.2 from 0 (a +0 that prints "0", never "-0").
+    const AxisTicks v = axis_ticks(-0.15, 0.5, 4.0);
+    CHECK(v.step == Approx(0.2));
+    CHECK(v.first == Approx(0.0));
+    CHECK(!std::signbit(v.first));
+    CHECK(v.count == 3);
+    CHECK(v.at(v.count - 1) <= 0.5);
+    const AxisTicks t = axis_ticks(0.0, 2.5, 5.0);
+    CHECK(t.step == Approx(0.5));
+    CHECK(t.count == 6);
+    CHECK(!std::signbit(t.at(0)));
+    // No range, no ticks; never an endless axis.
+    CHECK(axis_ticks(0.0, std::nan(""), 4.0).count == 0);
+    CHECK(axis_ticks(0.0, std::numeric_limits<double>::infinity(), 4.0).count == 0);
+    CHECK(axis_ticks(0.0, 1e9, 1e9).count == kMaxTicks);
 }
 
 TEST_CASE("the frame schedule takes a frame whenever simulated time advances by 1/(fps x slow)", "[render]") {

@@ -6,17 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "render/ticks.h"
+
 namespace polyroll::render {
 
 using geom::Vec2;
-
-double nice_ceil(double x) {
-    if (!(x > 0.0)) return 1.0;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= x * (1.0 - 1e-9)) return m * p;
-    return 10.0 * p;
-}
 
 std::vector<Vec2> shell_world_polygon(const Snapshot& s, bool outer) {
     const std::vector<Vec2>& local = outer ? s.outer_local_m : s.inner_local_m;

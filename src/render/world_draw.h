@@ -31,7 +31,4 @@ double outer_radius_m(const Snapshot& s);
 // The grain fill colour for a grain of the snapshot.
 Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, double speed_max_m_s);
 
-// A "nice" number (1, 2 or 5 times a power of ten) at least `x`.
-double nice_ceil(double x);
-
 }  // namespace polyroll::render
