@@ -8,7 +8,7 @@
 #include "app/view_control.h"
 #include "render/draw_list.h"
 #include "render/font.h"
-#include "render/frame_layout.h"
+#include "render/view_style.h"
 #include "render/snapshot.h"
 
 namespace polyroll::app {

@@ -12,15 +12,8 @@ namespace {
 // Share of the view's height the shell's outer radius spans when followed.
 constexpr double kFollowRadiusShare = 0.24;
 
-WorldStyle world_style(const FrameOptions& o, const FrameLayout& L, PxRect visible) {
-    WorldStyle st;
-    st.unit = L.unit;
-    st.stroke = L.stroke;
-    st.scale_font = L.small;
-    st.visible = visible;
-    st.grain_colouring = o.grain_colouring;
-    st.colour_speed_max_m_s = o.colour_speed_max_m_s;
-    return st;
+WorldStyle frame_world_style(const FrameOptions& o, const FrameLayout& L, PxRect visible) {
+    return world_style(L.unit, visible, o.grain_colouring, o.colour_speed_max_m_s);
 }
 
 // The close-up in the layout's inset, framed and marked in neutral colours.
@@ -34,7 +27,7 @@ void draw_inset(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
     style.label_font = L.label;
     const float pad = 10.0f * L.unit;
     style.label_offset = {pad, pad};
-    draw_close_up(s, main_cam, style, world_style(o, L, style.rect), font, dl);
+    draw_close_up(s, main_cam, style, frame_world_style(o, L, style.rect), font, dl);
 }
 
 }  // namespace
@@ -59,7 +52,7 @@ DrawList build_frame(const Snapshot& s, const FrameOptions& o, const FontAtlas& 
     dl.atlas = &font;
     const Camera cam = main_camera(s, o, L);
     const PxRect full{0.0f, 0.0f, static_cast<float>(o.width_px), static_cast<float>(o.height_px)};
-    draw_world(s, cam, world_style(o, L, full), font, dl.new_layer());
+    draw_world(s, cam, frame_world_style(o, L, full), font, dl.new_layer());
     if (L.inset) draw_inset(s, o, L, font, cam, dl);
     Layer& overlay = dl.new_layer();
     draw_panel(s, o, L, font, overlay);

@@ -8,10 +8,9 @@
 
 #include "render/camera.h"
 #include "render/font.h"
+#include "render/view_style.h"
 
 namespace polyroll::render {
-
-enum class GrainColouring { material, speed };
 
 // What the user chooses about a frame.
 struct FrameOptions {
