@@ -16,10 +16,9 @@ using namespace render;
 namespace {
 // The lanes' numbers and legend: the window's own text (the scene's is render/view_style.h's).
 FontSpec lane_font(float unit) { return {FontFace::bold, font_px(20, unit)}; }
-FontSpec inset_font(float unit) { return {FontFace::regular, std::max(8, static_cast<int>(std::lround(18.0f * unit)))}; }
 }  // namespace
 
-std::vector<FontSpec> scene_view_fonts(float unit) { return {lane_font(unit), scale_font(unit), inset_font(unit)}; }
+std::vector<FontSpec> scene_view_fonts(float unit) { return {lane_font(unit), scale_font(unit), label_font(unit)}; }
 
 namespace {
 
@@ -30,13 +29,9 @@ void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camer
     const float u = o.unit;
     const float m = 12.0f * u;
     const float w = std::round(0.36f * o.area.width), h = std::round(0.50f * o.area.height);
-    CloseUpStyle style;
-    style.rect = {o.area.x + m, o.area.y + o.area.height - h - m, w, h};
-    style.unit = u;
+    CloseUpStyle style = close_up_style({o.area.x + m, o.area.y + o.area.height - h - m, w, h}, u);
     style.marker = lane_colour(lane);
     style.border = lane_colour(lane);
-    style.label_font = inset_font(u);
-    style.label_offset = {8.0f * u, 6.0f * u};
     if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
     draw_close_up(s, main_cam, style, st, font, dl);
 }

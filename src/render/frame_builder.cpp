@@ -16,17 +16,10 @@ WorldStyle frame_world_style(const FrameOptions& o, const FrameLayout& L, PxRect
     return world_style(L.unit, visible, o.grain_colouring, o.colour_speed_max_m_s);
 }
 
-// The close-up in the layout's inset, framed and marked in neutral colours.
+// The close-up in the layout's inset.
 void draw_inset(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font,
                 const Camera& main_cam, DrawList& dl) {
-    CloseUpStyle style;
-    style.rect = *L.inset;
-    style.unit = L.unit;
-    style.marker = palette::inset_marker;
-    style.border = palette::inset_border;
-    style.label_font = L.label;
-    const float pad = 10.0f * L.unit;
-    style.label_offset = {pad, pad};
+    const CloseUpStyle style = close_up_style(*L.inset, L.unit);
     draw_close_up(s, main_cam, style, frame_world_style(o, L, style.rect), font, dl);
 }
 
