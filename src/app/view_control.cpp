@@ -23,8 +23,6 @@ constexpr float kRampBandDesignPx = 48.0f;
 constexpr float kBadgeMarginDesignPx = 44.0f;
 // Room above the surface for a lane's polygon, in outer radii (it may rock onto a vertex).
 constexpr double kClearanceRadii = 2.4;
-// Share of a lane's strip height the polygon's radius spans when following.
-constexpr double kFollowRadiusShare = 0.28;
 
 }  // namespace
 
@@ -63,14 +61,14 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
 
     if (follow) {
         // Every lane in its own strip, one shared camera centred on the leading polygon, so the
-        // race's gaps show as horizontal offsets.
+        // race's gaps show as horizontal offsets; each strip is framed as a frame is (its own picture).
         size_t lead = 0;
         for (size_t i = 1; i < n; ++i)
             if (lanes[i].shell_centre_m.x > lanes[lead].shell_centre_m.x) lead = i;
         const float strip = area.height / static_cast<float>(n);
         const PxRect first{area.x, area.y, area.width, strip};
-        const Camera base = render::follow_camera(lanes[lead].shell_centre_m, lanes[lead].ramp_angle_deg, radius,
-                                                  kFollowRadiusShare, first);
+        const Camera base =
+            render::follow_framing(lanes[lead].shell_centre_m, lanes[lead].ramp_angle_deg, radius, first, strip);
         out.lane_spacing_px = strip;
         for (size_t i = 0; i < n; ++i) {
             Camera c = base;

@@ -9,9 +9,6 @@ namespace polyroll::render {
 
 namespace {
 
-// Share of the view's height the shell's outer radius spans when followed.
-constexpr double kFollowRadiusShare = 0.24;
-
 WorldStyle frame_world_style(const FrameOptions& o, const FrameLayout& L, PxRect visible) {
     return world_style(L.unit, visible, o.grain_colouring, o.colour_speed_max_m_s);
 }
@@ -27,12 +24,8 @@ void draw_inset(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
 
 Camera main_camera(const Snapshot& s, const FrameOptions& o, const FrameLayout& L) {
     const double R = outer_radius_m(s);
-    if (o.follow) {
-        // Follow the shell in the middle of the frame below the overlay, at a fixed zoom.
-        PxRect area = L.world;
-        return follow_camera(s.shell_centre_m, s.ramp_angle_deg, R,
-                             kFollowRadiusShare * static_cast<double>(o.height_px) / area.height, area);
-    }
+    // Following: the shell in the middle of the frame below the overlay, zoomed by the frame's height.
+    if (o.follow) return follow_framing(s.shell_centre_m, s.ramp_angle_deg, R, L.world, o.height_px);
     return whole_ramp_camera(s.ramp_length_m, s.ramp_angle_deg, 2.2 * R, L.world);
 }
 
