@@ -4,6 +4,7 @@
 // lanes' framing; the scene view's draw list; readouts; exports.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -24,6 +25,7 @@
 #include "app/view_control.h"
 #include "render/font.h"
 #include "render/ticks.h"
+#include "render/world_draw.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/shell_properties.h"
@@ -448,6 +450,9 @@ TEST_CASE("pan and zoom keep the point under the mouse where it is, and lanes st
     CHECK(end.x <= area.x + area.width + 1);
     const LaneLayout F = lane_layout(snaps, area, true, 1.0f, ViewTransform{});
     CHECK(F.cameras[0].px_per_m > L.cameras[0].px_per_m);  // following zooms in
+    // The frames' follow framing (render/camera.h): each lane's strip is framed as a frame is.
+    CHECK(F.cameras[0].px_per_m * render::outer_radius_m(snaps[0]) ==
+          Approx(render::kFollowRadiusShare * area.height / 3.0));
 }
 
 TEST_CASE("the scene view draws every lane's shell inside the view, with labels when racing", "[app]") {
@@ -476,6 +481,10 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
             }
     }
     CHECK(walls >= 3 * 2 * s.shell.sides);  // two lanes and the close-up
+    // The scene's text is the frames' (render/view_style.h): the atlas holds those sizes.
+    const std::vector<render::FontSpec> fonts = scene_view_fonts(1.0f);
+    CHECK(std::count(fonts.begin(), fonts.end(), render::scale_font(1.0f)) == 1);
+    CHECK(std::count(fonts.begin(), fonts.end(), render::label_font(1.0f)) == 1);
     CHECK(glyphs > 0);
     CHECK(lane_colour(0) != lane_colour(1));
 }

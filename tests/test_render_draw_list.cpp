@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "render/close_up.h"
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/overlay.h"
@@ -155,6 +156,33 @@ TEST_CASE("the follow camera keeps the shell in the middle of the view, large", 
         // Grains are several pixels across, so a projector shows them.
         for (const Shape& g : shapes_tagged(dl.layers.front(), Tag::grain)) CHECK(g.radius > 3.0f);
     }
+}
+
+TEST_CASE("one view layer: the frames' follow framing and styles are the render layer's", "[render]") {
+    // The follow framing: the shell's centre in the middle of the area, its outer radius a fixed
+    // share of the picture's height, however much of it the overlays take.
+    const PxRect area{100.0f, 200.0f, 600.0f, 300.0f};
+    const Camera c = follow_framing({0.4, 0.03}, 30.0, 0.05, area, 720.0);
+    const Px centre = c.to_px(ramp_to_world({0.4, 0.03}, 30.0));
+    CHECK(centre.x == Approx(400.0f));
+    CHECK(centre.y == Approx(350.0f));
+    CHECK(c.px_per_m * 0.05 == Approx(kFollowRadiusShare * 720.0));
+
+    const Snapshot s = known_snapshot();
+    FrameOptions o;
+    o.follow = true;
+    const FrameLayout L = frame_layout(o);
+    CHECK(main_camera(s, o, L).px_per_m * outer_radius_m(s) == Approx(kFollowRadiusShare * o.height_px));
+
+    // The frames' world and close-up are drawn in the shared style at the frame's design pixel.
+    const WorldStyle w = world_style(L.unit, area, GrainColouring::speed, 0.7);
+    CHECK(w.stroke == L.stroke);
+    CHECK(w.scale_font == L.small);
+    CHECK(w.grain_colouring == GrainColouring::speed);
+    CHECK(w.colour_speed_max_m_s == 0.7);
+    const CloseUpStyle cu = close_up_style(area, L.unit);
+    CHECK(cu.label_font == L.label);
+    CHECK(cu.marker == palette::inset_marker);
 }
 
 TEST_CASE("grains coloured by speed follow the colour map", "[render]") {
