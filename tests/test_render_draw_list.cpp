@@ -226,6 +226,14 @@ TEST_CASE("readable numbers: nice values, axis ends and ticks, the same for fram
     CHECK(round_up_nice(11.4, 8.0) == Approx(12.0));
     CHECK(round_up_nice(-1.0, 5.0) == 0.0);
 
+    // Growing axes (the frames' plot without fixed axes, the window's plots).
+    CHECK(growing_time_axis_s(0.3) == 1.0);
+    CHECK(growing_time_axis_s(11.4) == Approx(12.0));
+    const AxisRange grown = growing_value_axis(-0.013, 0.37, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
+    CHECK(grown.lo == Approx(-0.02));
+    CHECK(grown.hi == Approx(0.5));
+    CHECK(growing_value_axis(0.0, 0.01, 0.1, 0.01).lo == 0.0);
+
     // A speed axis from -0.15 to 0.5: steps of 0.2 from 0 (a +0 that prints "0", never "-0").
     const AxisTicks v = axis_ticks(-0.15, 0.5, 4.0);
     CHECK(v.step == Approx(0.2));

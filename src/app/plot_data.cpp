@@ -8,8 +8,8 @@
 
 namespace polyroll::app {
 
-using render::nice_ceil;
-using render::round_up_nice;
+using render::growing_time_axis_s;
+using render::growing_value_axis;
 
 namespace {
 
@@ -25,9 +25,6 @@ double value_of(const TrajectorySample& t, Series which) {
 
 double last_time(const Measurements& m) { return m.trajectory.empty() ? 0.0 : m.trajectory.back().time_s; }
 
-// The time axis grows in steps of about an eighth of its length (11.4 s -> 12 s, not 20 s), from 1 s.
-double time_axis(double t) { return std::max(1.0, round_up_nice(std::max(t, 1.0), 8.0)); }
-
 }  // namespace
 
 PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
@@ -41,9 +38,11 @@ PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
         }
     }
     PlotRange r;
-    r.t_max_s = time_axis(t);
-    r.y_max = nice_ceil(hi, 0.1);
-    r.y_min = lo < 0.0 ? -nice_ceil(-lo, 0.01) : 0.0;
+    r.t_max_s = growing_time_axis_s(t);
+    const render::AxisRange y =
+        growing_value_axis(lo, hi, render::kSpeedAxisFloor_m_s, render::kSpeedAxisFloorBelow_m_s);
+    r.y_min = y.lo;
+    r.y_max = y.hi;
     return r;
 }
 
@@ -56,9 +55,10 @@ PlotRange energy_range(const Measurements& m) {
             hi = std::max(hi, v);
         }
     PlotRange r;
-    r.t_max_s = time_axis(last_time(m));
-    r.y_max = nice_ceil(hi, 0.001);
-    r.y_min = lo < 0.0 ? -nice_ceil(-lo, 0.001) : 0.0;
+    r.t_max_s = growing_time_axis_s(last_time(m));
+    const render::AxisRange y = growing_value_axis(lo, hi, 0.001, 0.001);  // at least 1 mJ each way
+    r.y_min = y.lo;
+    r.y_max = y.hi;
     return r;
 }
 

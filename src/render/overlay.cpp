@@ -94,9 +94,11 @@ PlotAxes plot_axes(const Snapshot& s, const FrameOptions& o) {
         v_lo = std::min(v_lo, p.speed_m_s);
         v_hi = std::max(v_hi, p.speed_m_s);
     }
-    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : nice_ceil(std::max(1.0, t_hi));
-    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : nice_ceil(std::max(0.1, v_hi));
-    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : (v_lo < 0.0 ? -nice_ceil(-v_lo) : 0.0);
+    // Not fixed: grown as the window's plots grow (ticks.h).
+    const AxisRange v = growing_value_axis(v_lo, v_hi, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
+    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : growing_time_axis_s(t_hi);
+    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : v.hi;
+    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : v.lo;
     return a;
 }
 

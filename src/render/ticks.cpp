@@ -26,6 +26,12 @@ double round_up_nice(double x, double intervals) {
     return std::ceil(x / step - 1e-9) * step;
 }
 
+double growing_time_axis_s(double t_s) { return std::max(1.0, round_up_nice(std::max(t_s, 1.0), 8.0)); }
+
+AxisRange growing_value_axis(double lo, double hi, double hi_floor, double lo_floor) {
+    return {lo < 0.0 ? -nice_ceil(-lo, lo_floor) : 0.0, nice_ceil(hi, hi_floor)};
+}
+
 AxisTicks axis_ticks(double lo, double hi, double intervals) {
     AxisTicks t;
     t.step = nice_ceil((hi - lo) / intervals);

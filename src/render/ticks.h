@@ -15,6 +15,19 @@ double nice_ceil(double x, double floor);
 // without wasting room: 1.225 -> 1.5 (fifths), 11.4 -> 12 (eighths). 0 when x is not positive.
 double round_up_nice(double x, double intervals);
 
+// Axes that grow with the data in readable steps, so they do not twitch every frame: the frames'
+// plot when the run's length is not known in advance, and the sandbox's live plots.
+// Time, from 0: at least 1 s, in steps of about an eighth of its length (11.4 s -> 12 s, not 20 s).
+double growing_time_axis_s(double t_s);
+// A value axis holding 0 and [lo, hi]: each end rounded out to a nice number, at least `hi_floor`
+// above and `lo_floor` below 0 when there are negative values.
+struct AxisRange {
+    double lo = 0.0, hi = 1.0;
+};
+AxisRange growing_value_axis(double lo, double hi, double hi_floor, double lo_floor);
+// The speed plots' floors (frames and window): 0.1 m/s up; 0.01 m/s down once the lid rocks back.
+inline constexpr double kSpeedAxisFloor_m_s = 0.1, kSpeedAxisFloorBelow_m_s = 0.01;
+
 // An axis's ticks: first, first + step, ... (count of them), every tick inside [lo, hi].
 struct AxisTicks {
     double first = 0.0;
