@@ -22,7 +22,7 @@ FrameLayout frame_layout(const FrameOptions& o) {
     L.plot = {w - L.margin - 420.0f * u, L.margin, 420.0f * u, 200.0f * u};
     const float top = std::max(L.panel.y + L.panel.height, L.plot.y + L.plot.height) + 2.0f * L.margin;
     // Below the ramp: its body and the scale's labels.
-    const float below = 52.0f * u;
+    const float below = kRampBelowDesignPx * u;
     L.world = {2.0f * L.margin, top, w - 4.0f * L.margin, std::max(1.0f, h - top - L.margin - below)};
     if (!o.follow) L.inset = PxRect{L.margin, h - L.margin - 0.42f * h, 0.30f * w, 0.42f * h};
     return L;

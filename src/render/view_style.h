@@ -22,6 +22,11 @@ float stroke_px(float unit);
 FontSpec scale_font(float unit);
 FontSpec label_font(float unit);
 
+// The ramp as drawn under its surface, in design pixels: its body (the same thickness at any zoom),
+// and the room the body and the scale's labels under it take, which a view leaves free below a ramp.
+inline constexpr double kRampBodyDesignPx = 18.0;
+inline constexpr float kRampBelowDesignPx = 52.0f;
+
 // How the world is drawn through a camera: everything but the camera itself.
 struct WorldStyle {
     float unit = 1.0f;    // design pixel

@@ -41,7 +41,7 @@ bool inside(Px p, const PxRect& r, float pad) {
 void draw_ramp(const Snapshot& s, const Camera& cam, const WorldStyle& st, const FontAtlas& font, Layer& out) {
     const double deg = s.ramp_angle_deg;
     const double L = s.ramp_length_m;
-    const double band_m = 18.0 * st.unit / cam.px_per_m;  // the body's thickness stays readable at any zoom
+    const double band_m = kRampBodyDesignPx * st.unit / cam.px_per_m;  // the body's thickness stays readable at any zoom
     auto P = [&](double x, double y) { return cam.to_px(ramp_to_world({x, y}, deg)); };
     const Px a = P(0, 0), b = P(L, 0), c = P(L, -band_m), d = P(0, -band_m);
     out.triangles.push_back({a, b, c, palette::ramp_body, Tag::ramp_body});
