@@ -4,6 +4,7 @@
 // lanes' framing; the scene view's draw list; readouts; exports.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -23,6 +24,8 @@
 #include "app/sim_clock.h"
 #include "app/view_control.h"
 #include "render/font.h"
+#include "render/ticks.h"
+#include "render/world_draw.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/shell_properties.h"
@@ -372,9 +375,9 @@ TEST_CASE("numerical trouble stops the lanes with a message and a finer preset t
 }
 
 TEST_CASE("plot data: readable ranges, impact markers on the trace, thinning", "[app]") {
-    CHECK(readable_ceil(0.37, 0.1) == Approx(0.5));
-    CHECK(readable_ceil(1.2, 1.0) == Approx(2.0));
-    CHECK(readable_ceil(0.0, 1.0) == Approx(1.0));
+    CHECK(render::nice_ceil(0.37, 0.1) == Approx(0.5));
+    CHECK(render::nice_ceil(1.2, 1.0) == Approx(2.0));
+    CHECK(render::nice_ceil(0.0, 1.0) == Approx(1.0));
     Measurements m;
     for (int i = 0; i <= 100; ++i) {
         TrajectorySample t;
@@ -447,6 +450,9 @@ TEST_CASE("pan and zoom keep the point under the mouse where it is, and lanes st
     CHECK(end.x <= area.x + area.width + 1);
     const LaneLayout F = lane_layout(snaps, area, true, 1.0f, ViewTransform{});
     CHECK(F.cameras[0].px_per_m > L.cameras[0].px_per_m);  // following zooms in
+    // The frames' follow framing (render/camera.h): each lane's strip is framed as a frame is.
+    CHECK(F.cameras[0].px_per_m * render::outer_radius_m(snaps[0]) ==
+          Approx(render::kFollowRadiusShare * area.height / 3.0));
 }
 
 TEST_CASE("the scene view draws every lane's shell inside the view, with labels when racing", "[app]") {
@@ -475,6 +481,10 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
             }
     }
     CHECK(walls >= 3 * 2 * s.shell.sides);  // two lanes and the close-up
+    // The scene's text is the frames' (render/view_style.h): the atlas holds those sizes.
+    const std::vector<render::FontSpec> fonts = scene_view_fonts(1.0f);
+    CHECK(std::count(fonts.begin(), fonts.end(), render::scale_font(1.0f)) == 1);
+    CHECK(std::count(fonts.begin(), fonts.end(), render::label_font(1.0f)) == 1);
     CHECK(glyphs > 0);
     CHECK(lane_colour(0) != lane_colour(1));
 }

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "render/close_up.h"
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/overlay.h"
 #include "render/snapshot.h"
+#include "render/ticks.h"
 #include "render/world_draw.h"
 #include "sim/geometry.h"
 #include "sim/simulation.h"
@@ -155,6 +158,33 @@ TEST_CASE("the follow camera keeps the shell in the middle of the view, large", 
     }
 }
 
+TEST_CASE("one view layer: the frames' follow framing and styles are the render layer's", "[render]") {
+    // The follow framing: the shell's centre in the middle of the area, its outer radius a fixed
+    // share of the picture's height, however much of it the overlays take.
+    const PxRect area{100.0f, 200.0f, 600.0f, 300.0f};
+    const Camera c = follow_framing({0.4, 0.03}, 30.0, 0.05, area, 720.0);
+    const Px centre = c.to_px(ramp_to_world({0.4, 0.03}, 30.0));
+    CHECK(centre.x == Approx(400.0f));
+    CHECK(centre.y == Approx(350.0f));
+    CHECK(c.px_per_m * 0.05 == Approx(kFollowRadiusShare * 720.0));
+
+    const Snapshot s = known_snapshot();
+    FrameOptions o;
+    o.follow = true;
+    const FrameLayout L = frame_layout(o);
+    CHECK(main_camera(s, o, L).px_per_m * outer_radius_m(s) == Approx(kFollowRadiusShare * o.height_px));
+
+    // The frames' world and close-up are drawn in the shared style at the frame's design pixel.
+    const WorldStyle w = world_style(L.unit, area, GrainColouring::speed, 0.7);
+    CHECK(w.stroke == L.stroke);
+    CHECK(w.scale_font == L.small);
+    CHECK(w.grain_colouring == GrainColouring::speed);
+    CHECK(w.colour_speed_max_m_s == 0.7);
+    const CloseUpStyle cu = close_up_style(area, L.unit);
+    CHECK(cu.label_font == L.label);
+    CHECK(cu.marker == palette::inset_marker);
+}
+
 TEST_CASE("grains coloured by speed follow the colour map", "[render]") {
     const Snapshot s = known_snapshot();
     FrameOptions o;
@@ -183,6 +213,42 @@ TEST_CASE("the speed plot's axes cover the data and grow with it", "[render]") {
     CHECK(ax.speed_min_m_s <= -0.15);
     o.plot_time_max_s = 10.0;
     CHECK(plot_axes(s, o).time_max_s == 10.0);
+}
+
+TEST_CASE("readable numbers: nice values, axis ends and ticks, the same for frames and window", "[render]") {
+    CHECK(nice_ceil(0.37) == Approx(0.5));
+    CHECK(nice_ceil(2.0) == 2.0);  // already nice: not a step up
+    CHECK(nice_ceil(0.0) == 1.0);
+    CHECK(nice_ceil(std::nan("")) == 1.0);
+    CHECK(nice_ceil(0.001, 0.1) == Approx(0.1));
+    CHECK(nice_ceil(std::numeric_limits<double>::infinity(), 0.1) == 0.1);
+    CHECK(round_up_nice(1.225, 5.0) == Approx(1.5));
+    CHECK(round_up_nice(11.4, 8.0) == Approx(12.0));
+    CHECK(round_up_nice(-1.0, 5.0) == 0.0);
+
+    // Growing axes (the frames' plot without fixed axes, the window's plots).
+    CHECK(growing_time_axis_s(0.3) == 1.0);
+    CHECK(growing_time_axis_s(11.4) == Approx(12.0));
+    const AxisRange grown = growing_value_axis(-0.013, 0.37, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
+    CHECK(grown.lo == Approx(-0.02));
+    CHECK(grown.hi == Approx(0.5));
+    CHECK(growing_value_axis(0.0, 0.01, 0.1, 0.01).lo == 0.0);
+
+    // A speed axis from -0.15 to 0.5: steps of 0.2 from 0 (a +0 that prints "0", never "-0").
+    const AxisTicks v = axis_ticks(-0.15, 0.5, 4.0);
+    CHECK(v.step == Approx(0.2));
+    CHECK(v.first == Approx(0.0));
+    CHECK(!std::signbit(v.first));
+    CHECK(v.count == 3);
+    CHECK(v.at(v.count - 1) <= 0.5);
+    const AxisTicks t = axis_ticks(0.0, 2.5, 5.0);
+    CHECK(t.step == Approx(0.5));
+    CHECK(t.count == 6);
+    CHECK(!std::signbit(t.at(0)));
+    // No range, no ticks; never an endless axis.
+    CHECK(axis_ticks(0.0, std::nan(""), 4.0).count == 0);
+    CHECK(axis_ticks(0.0, std::numeric_limits<double>::infinity(), 4.0).count == 0);
+    CHECK(axis_ticks(0.0, 1e9, 1e9).count == kMaxTicks);
 }
 
 TEST_CASE("the frame schedule takes a frame whenever simulated time advances by 1/(fps x slow)", "[render]") {

@@ -4,7 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/ticks.h"
+
 namespace polyroll::app {
+
+using render::growing_time_axis_s;
+using render::growing_value_axis;
 
 namespace {
 
@@ -22,21 +27,6 @@ double last_time(const Measurements& m) { return m.trajectory.empty() ? 0.0 : m.
 
 }  // namespace
 
-double readable_ceil(double x, double floor) {
-    x = std::max(x, floor);
-    if (!(x > 0.0) || !std::isfinite(x)) return floor;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= x * (1.0 - 1e-9)) return m * p;
-    return 10.0 * p;
-}
-
-// The time axis grows in steps of about an eighth of its length (11.4 s -> 12 s, not 20 s).
-double time_axis(double t) {
-    const double step = readable_ceil(std::max(t, 1.0) / 8.0, 0.125);
-    return std::max(1.0, std::ceil(t / step - 1e-9) * step);
-}
-
 PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
     double t = 0.0, lo = 0.0, hi = 0.0;
     for (const Measurements* m : lanes) {
@@ -48,9 +38,11 @@ PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
         }
     }
     PlotRange r;
-    r.t_max_s = time_axis(t);
-    r.y_max = readable_ceil(hi, 0.1);
-    r.y_min = lo < 0.0 ? -readable_ceil(-lo, 0.01) : 0.0;
+    r.t_max_s = growing_time_axis_s(t);
+    const render::AxisRange y =
+        growing_value_axis(lo, hi, render::kSpeedAxisFloor_m_s, render::kSpeedAxisFloorBelow_m_s);
+    r.y_min = y.lo;
+    r.y_max = y.hi;
     return r;
 }
 
@@ -63,9 +55,10 @@ PlotRange energy_range(const Measurements& m) {
             hi = std::max(hi, v);
         }
     PlotRange r;
-    r.t_max_s = time_axis(last_time(m));
-    r.y_max = readable_ceil(hi, 0.001);
-    r.y_min = lo < 0.0 ? -readable_ceil(-lo, 0.001) : 0.0;
+    r.t_max_s = growing_time_axis_s(last_time(m));
+    const render::AxisRange y = growing_value_axis(lo, hi, 0.001, 0.001);  // at least 1 mJ each way
+    r.y_min = y.lo;
+    r.y_max = y.hi;
     return r;
 }
 

@@ -1,6 +1,7 @@
 // The numbers behind the live plots, without any drawing: axis ranges that grow with the data in
-// readable steps (so the axes do not twitch every frame), the speed at each face impact (the plot's
-// markers), the energy series, and thinning a long series to what a plot's width can show.
+// readable steps (render/ticks.h, so the axes do not twitch every frame), the speed at each face
+// impact (the plot's markers), the energy series, and thinning a long series to what a plot's width
+// can show.
 #pragma once
 
 #include <vector>
@@ -13,9 +14,6 @@ struct PlotRange {
     double t_max_s = 1.0;
     double y_min = 0.0, y_max = 1.0;
 };
-
-// A value rounded up to 1, 2 or 5 times a power of ten, at least `floor`.
-double readable_ceil(double x, double floor);
 
 // The time axis covers [0, t_max_s] (grown in steps of about an eighth); the value axis includes 0 and every value of every series.
 PlotRange speed_range(const std::vector<const Measurements*>& lanes);

@@ -13,7 +13,7 @@
 #include "app/readouts.h"
 #include "app/sandbox_presets.h"
 #include "app/scene_view.h"
-#include "render/world_draw.h"
+#include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/scene_json.h"
@@ -280,25 +280,17 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
     dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, fmt::format("{}: {} against time (s)", title, unit).c_str());
     auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
     auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
-    // Ticks: about five per axis, at 1, 2 or 5 times a power of ten.
-    // Integer tick counters: a float counter never ends when the step is 0 or NaN (an empty plot).
-    auto last_tick = [](double first, double last, double step) {
-        const double n = std::floor((last + 1e-9 - first) / step);
-        return step > 0.0 && std::isfinite(n) ? static_cast<int>(std::clamp(n, -1.0, 100.0)) : -1;
-    };
-    const double t_step = render::nice_ceil(r.t_max_s / 5.0);
-    const int t_ticks = last_tick(0.0, r.t_max_s, t_step);
-    for (int k = 0; k <= t_ticks; ++k) {
-        const double t = k * t_step;
+    // Ticks: the frames' plot's rules (render/ticks.h), five intervals in time and four in value.
+    const render::AxisTicks t_ticks = render::axis_ticks(0.0, r.t_max_s, 5.0);
+    for (int k = 0; k < t_ticks.count; ++k) {
+        const double t = t_ticks.at(k);
         dl->AddLine({X(t), a0.y}, {X(t), a1.y}, grid);
         const std::string l = fmt::format("{:g}", std::round(t * 1000.0) / 1000.0);
         dl->AddText({X(t) - ImGui::CalcTextSize(l.c_str()).x / 2, a1.y + fs * 0.15f}, text, l.c_str());
     }
-    const double y_step = render::nice_ceil((r.y_max - r.y_min) / 4.0);
-    const double y_first = std::ceil(r.y_min / y_step - 1e-9) * y_step;
-    const int y_ticks = last_tick(y_first, r.y_max, y_step);
-    for (int k = 0; k <= y_ticks; ++k) {
-        const double v = y_first + k * y_step;
+    const render::AxisTicks y_ticks = render::axis_ticks(r.y_min, r.y_max, 4.0);
+    for (int k = 0; k < y_ticks.count; ++k) {
+        const double v = y_ticks.at(k);
         dl->AddLine({a0.x, Y(v)}, {a1.x, Y(v)}, std::fabs(v) < 1e-12 ? axis : grid);
         const double shown = std::fabs(v) < 1e-12 ? 0.0 : std::round(v * 1e4) / 1e4;  // never "-0"
         const std::string l = fmt::format("{:g}", shown);

@@ -14,12 +14,11 @@ namespace polyroll::app {
 using namespace render;
 
 namespace {
-FontSpec label_font(float unit) { return {FontFace::bold, std::max(8, static_cast<int>(std::lround(20.0f * unit)))}; }
-FontSpec inset_font(float unit) { return {FontFace::regular, std::max(8, static_cast<int>(std::lround(18.0f * unit)))}; }
-FontSpec scale_font(float unit) { return {FontFace::regular, std::max(7, static_cast<int>(std::lround(16.0f * unit)))}; }
+// The lanes' numbers and legend: the window's own text (the scene's is render/view_style.h's).
+FontSpec lane_font(float unit) { return {FontFace::bold, font_px(20, unit)}; }
 }  // namespace
 
-std::vector<FontSpec> scene_view_fonts(float unit) { return {label_font(unit), scale_font(unit), inset_font(unit)}; }
+std::vector<FontSpec> scene_view_fonts(float unit) { return {lane_font(unit), scale_font(unit), label_font(unit)}; }
 
 namespace {
 
@@ -30,13 +29,9 @@ void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camer
     const float u = o.unit;
     const float m = 12.0f * u;
     const float w = std::round(0.36f * o.area.width), h = std::round(0.50f * o.area.height);
-    CloseUpStyle style;
-    style.rect = {o.area.x + m, o.area.y + o.area.height - h - m, w, h};
-    style.unit = u;
+    CloseUpStyle style = close_up_style({o.area.x + m, o.area.y + o.area.height - h - m, w, h}, u);
     style.marker = lane_colour(lane);
     style.border = lane_colour(lane);
-    style.label_font = inset_font(u);
-    style.label_offset = {8.0f * u, 6.0f * u};
     if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
     draw_close_up(s, main_cam, style, st, font, dl);
 }
@@ -60,13 +55,7 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
     const LaneLayout layout = lane_layout(lanes, o.area, o.follow, o.unit, o.view);
     const ClipRect clip{static_cast<int>(std::floor(o.area.x)), static_cast<int>(std::floor(o.area.y)),
                         static_cast<int>(std::ceil(o.area.width)), static_cast<int>(std::ceil(o.area.height))};
-    WorldStyle st;
-    st.unit = o.unit;
-    st.stroke = std::max(1.0f, 2.5f * o.unit);
-    st.scale_font = scale_font(o.unit);
-    st.visible = o.area;
-    st.grain_colouring = o.colouring;
-    st.colour_speed_max_m_s = o.colour_speed_max_m_s;
+    const WorldStyle st = world_style(o.unit, o.area, o.colouring, o.colour_speed_max_m_s);
     for (size_t i = 0; i < lanes.size(); ++i) draw_world(lanes[i], layout.cameras[i], st, font, dl.new_layer(clip));
     if (!o.follow && o.close_up_lane >= 0 && static_cast<size_t>(o.close_up_lane) < lanes.size()) {
         const size_t k = static_cast<size_t>(o.close_up_lane);
@@ -77,7 +66,7 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
     // and a legend in the free corner above the ramps naming each lane.
     if (lanes.size() > 1) {
         Layer& labels_layer = dl.new_layer(clip);
-        const FontSpec f = label_font(o.unit);
+        const FontSpec f = lane_font(o.unit);
         const float pad = 6.0f * o.unit;
         const float h = font.line_height(f);
         float legend_w = 0.0f;

@@ -1,5 +1,6 @@
-// The sandbox's scene view as a draw list (GL-free): each lane's ramp, shell and grains through its
-// camera (view_control.h), clipped to the view, with the lane's label in the lane's colour. The
+// The sandbox's scene view as a draw list (GL-free): what a frame draws (the world and the close-up,
+// in render/view_style.h's style) for each lane through the lane's camera (view_control.h), clipped
+// to the view, plus what only the window has: the lanes' badges and legend in their colours. The
 // window draws it with render::GlRenderer, the same renderer as polyroll render's frames.
 #pragma once
 
@@ -8,8 +9,8 @@
 #include "app/view_control.h"
 #include "render/draw_list.h"
 #include "render/font.h"
-#include "render/frame_layout.h"
 #include "render/snapshot.h"
+#include "render/view_style.h"
 
 namespace polyroll::app {
 

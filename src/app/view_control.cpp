@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/view_style.h"
 #include "render/world_draw.h"
 
 namespace polyroll::app {
@@ -16,15 +17,10 @@ namespace {
 
 Px centre_of(const PxRect& a) { return {a.x + a.width / 2.0f, a.y + a.height / 2.0f}; }
 
-// Height of the ramp's drawn body and its scale labels below the surface, in design pixels
-// (world_draw.cpp draws an 18-pixel body and labels under it).
-constexpr float kRampBandDesignPx = 48.0f;
 // Room left of the ramps for the lane badges (scene_view.cpp), in design pixels.
 constexpr float kBadgeMarginDesignPx = 44.0f;
 // Room above the surface for a lane's polygon, in outer radii (it may rock onto a vertex).
 constexpr double kClearanceRadii = 2.4;
-// Share of a lane's strip height the polygon's radius spans when following.
-constexpr double kFollowRadiusShare = 0.28;
 
 }  // namespace
 
@@ -59,18 +55,18 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
     const size_t n = lanes.size();
     double radius = 0.0;
     for (const auto& s : lanes) radius = std::max(radius, render::outer_radius_m(s));
-    const float band = kRampBandDesignPx * unit;
+    const float band = render::kRampBelowDesignPx * unit;  // the body and labels under a ramp
 
     if (follow) {
         // Every lane in its own strip, one shared camera centred on the leading polygon, so the
-        // race's gaps show as horizontal offsets.
+        // race's gaps show as horizontal offsets; each strip is framed as a frame is (its own picture).
         size_t lead = 0;
         for (size_t i = 1; i < n; ++i)
             if (lanes[i].shell_centre_m.x > lanes[lead].shell_centre_m.x) lead = i;
         const float strip = area.height / static_cast<float>(n);
         const PxRect first{area.x, area.y, area.width, strip};
-        const Camera base = render::follow_camera(lanes[lead].shell_centre_m, lanes[lead].ramp_angle_deg, radius,
-                                                  kFollowRadiusShare, first);
+        const Camera base =
+            render::follow_framing(lanes[lead].shell_centre_m, lanes[lead].ramp_angle_deg, radius, first, strip);
         out.lane_spacing_px = strip;
         for (size_t i = 0; i < n; ++i) {
             Camera c = base;

@@ -1,6 +1,7 @@
 // The scene view's camera, without a window: the lanes' parallel ramps stacked in the view (the
-// whole ramps, or following the leading polygon), and the user's pan and zoom on top of that
-// framing. Plain arithmetic on render::Camera, so it is tested without GL.
+// whole ramps, or following the leading polygon with the frames' follow framing, render/camera.h),
+// and the user's pan and zoom on top of that framing. Plain arithmetic on render::Camera, so it is
+// tested without GL.
 #pragma once
 
 #include <vector>

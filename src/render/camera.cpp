@@ -41,4 +41,10 @@ Camera follow_camera(geom::Vec2 shell_centre_ramp_m, double angle_deg, double ra
     return cam;
 }
 
+Camera follow_framing(geom::Vec2 shell_centre_ramp_m, double angle_deg, double radius_m, PxRect area,
+                      double picture_height_px) {
+    return follow_camera(shell_centre_ramp_m, angle_deg, radius_m, kFollowRadiusShare * picture_height_px / area.height,
+                         area);
+}
+
 }  // namespace polyroll::render

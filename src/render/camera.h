@@ -1,6 +1,7 @@
 // The camera: where the world appears in the frame. The picture's world frame is the lab's (x to the
 // right, y up, metres), with the ramp drawn at its angle going down to the right; the simulation's
-// ramp frame is turned into it by ramp_to_world. Two framings: the whole ramp, or following the shell.
+// ramp frame is turned into it by ramp_to_world. Two framings: the whole ramp, or following the shell;
+// the frames and the sandbox's window both frame with these, each in its own area.
 #pragma once
 
 #include "render/draw_list.h"
@@ -37,5 +38,17 @@ Camera whole_ramp_camera(double ramp_length_m, double angle_deg, double clearanc
 // `radius_m` spans `radius_share` of the area's height.
 Camera follow_camera(geom::Vec2 shell_centre_ramp_m, double angle_deg, double radius_m, double radius_share,
                      PxRect area);
+
+// Share of the picture's height the shell's outer radius spans when the camera follows it, in the
+// frames and the window alike. 0.24, the frames' value (the window had 0.28): at 0.28 a 16:9 frame's
+// polygon would span 403 of its world area's 404 design pixels, and the window's one-lane view cut
+// the ramp's scale labels off at the bottom.
+inline constexpr double kFollowRadiusShare = 0.24;
+
+// The follow framing: the shell's centre at the middle of `area` (what the overlays leave free), at
+// the scale where `radius_m` spans kFollowRadiusShare of `picture_height_px` (a frame's height; one
+// lane's strip of the window), so the zoom does not depend on the overlays' size.
+Camera follow_framing(geom::Vec2 shell_centre_ramp_m, double angle_deg, double radius_m, PxRect area,
+                      double picture_height_px);
 
 }  // namespace polyroll::render

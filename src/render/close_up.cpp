@@ -24,6 +24,18 @@ void outline_rect(Layer& out, PxRect r, float width, Rgba colour, Tag tag) {
 
 }  // namespace
 
+CloseUpStyle close_up_style(PxRect rect, float unit) {
+    CloseUpStyle style;
+    style.rect = rect;
+    style.unit = unit;
+    style.marker = palette::inset_marker;
+    style.border = palette::inset_border;
+    style.label_font = label_font(unit);
+    const float pad = 10.0f * unit;
+    style.label_offset = {pad, pad};
+    return style;
+}
+
 void draw_close_up(const Snapshot& s, const Camera& main_cam, const CloseUpStyle& style, WorldStyle world,
                    const FontAtlas& font, DrawList& dl) {
     const PxRect r = style.rect;

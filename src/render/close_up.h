@@ -1,7 +1,7 @@
 // The close-up inset: a second camera following the polygon, drawn in a framed rectangle over the
 // main view, with a box in the main view marking where it looks. polyroll render's frames
 // (frame_builder.cpp) and the sandbox's scene view (app/scene_view.cpp) draw it with this one
-// function; they differ only in where it goes, its colours and its label.
+// function and style; they differ only in where it goes, and the window's lane colours and label.
 #pragma once
 
 #include <string>
@@ -23,6 +23,11 @@ struct CloseUpStyle {
     Px label_offset;           // the label's top left, from the inset's top left
     std::string label_suffix;  // after "close-up ×N" (N: the magnification over the main view)
 };
+
+// The close-up's look at a design unit, the same in the frames and the window: neutral colours, the
+// scene's label font (view_style.h), the label inside the top-left corner. The caller places it in
+// `rect` (each view has its own free corner); the window colours it by lane.
+CloseUpStyle close_up_style(PxRect rect, float unit);
 
 // Adds the mark (one layer over the main view seen through `main_cam`), then the inset: its
 // background, `s`'s world drawn with `world` (only what falls inside the inset), its frame and label.

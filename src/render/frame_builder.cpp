@@ -9,44 +9,23 @@ namespace polyroll::render {
 
 namespace {
 
-// Share of the view's height the shell's outer radius spans when followed.
-constexpr double kFollowRadiusShare = 0.24;
-
-WorldStyle world_style(const FrameOptions& o, const FrameLayout& L, PxRect visible) {
-    WorldStyle st;
-    st.unit = L.unit;
-    st.stroke = L.stroke;
-    st.scale_font = L.small;
-    st.visible = visible;
-    st.grain_colouring = o.grain_colouring;
-    st.colour_speed_max_m_s = o.colour_speed_max_m_s;
-    return st;
+WorldStyle frame_world_style(const FrameOptions& o, const FrameLayout& L, PxRect visible) {
+    return world_style(L.unit, visible, o.grain_colouring, o.colour_speed_max_m_s);
 }
 
-// The close-up in the layout's inset, framed and marked in neutral colours.
+// The close-up in the layout's inset.
 void draw_inset(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font,
                 const Camera& main_cam, DrawList& dl) {
-    CloseUpStyle style;
-    style.rect = *L.inset;
-    style.unit = L.unit;
-    style.marker = palette::inset_marker;
-    style.border = palette::inset_border;
-    style.label_font = L.label;
-    const float pad = 10.0f * L.unit;
-    style.label_offset = {pad, pad};
-    draw_close_up(s, main_cam, style, world_style(o, L, style.rect), font, dl);
+    const CloseUpStyle style = close_up_style(*L.inset, L.unit);
+    draw_close_up(s, main_cam, style, frame_world_style(o, L, style.rect), font, dl);
 }
 
 }  // namespace
 
 Camera main_camera(const Snapshot& s, const FrameOptions& o, const FrameLayout& L) {
     const double R = outer_radius_m(s);
-    if (o.follow) {
-        // Follow the shell in the middle of the frame below the overlay, at a fixed zoom.
-        PxRect area = L.world;
-        return follow_camera(s.shell_centre_m, s.ramp_angle_deg, R,
-                             kFollowRadiusShare * static_cast<double>(o.height_px) / area.height, area);
-    }
+    // Following: the shell in the middle of the frame below the overlay, zoomed by the frame's height.
+    if (o.follow) return follow_framing(s.shell_centre_m, s.ramp_angle_deg, R, L.world, o.height_px);
     return whole_ramp_camera(s.ramp_length_m, s.ramp_angle_deg, 2.2 * R, L.world);
 }
 
@@ -59,7 +38,7 @@ DrawList build_frame(const Snapshot& s, const FrameOptions& o, const FontAtlas& 
     dl.atlas = &font;
     const Camera cam = main_camera(s, o, L);
     const PxRect full{0.0f, 0.0f, static_cast<float>(o.width_px), static_cast<float>(o.height_px)};
-    draw_world(s, cam, world_style(o, L, full), font, dl.new_layer());
+    draw_world(s, cam, frame_world_style(o, L, full), font, dl.new_layer());
     if (L.inset) draw_inset(s, o, L, font, cam, dl);
     Layer& overlay = dl.new_layer();
     draw_panel(s, o, L, font, overlay);

@@ -8,10 +8,9 @@
 
 #include "render/camera.h"
 #include "render/font.h"
+#include "render/view_style.h"
 
 namespace polyroll::render {
-
-enum class GrainColouring { material, speed };
 
 // What the user chooses about a frame.
 struct FrameOptions {
@@ -20,8 +19,8 @@ struct FrameOptions {
     bool follow = false;  // the camera follows the shell instead of showing the whole ramp
     GrainColouring grain_colouring = GrainColouring::material;
     double colour_speed_max_m_s = 1.0;  // grain speed at the top of the colour map
-    // The plot's axes: fixed when the run's extent is known in advance (a render), otherwise they
-    // grow with the data (the window).
+    // The plot's axes: fixed when the run's extent is known in advance (a render: options_for_run),
+    // otherwise they grow with the data as the sandbox's plots do (render/ticks.h).
     std::optional<double> plot_time_max_s;
     std::optional<double> plot_speed_min_m_s;
     std::optional<double> plot_speed_max_m_s;

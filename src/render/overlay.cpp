@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "render/ticks.h"
 #include "render/world_draw.h"
 
 namespace polyroll::render {
@@ -93,9 +94,11 @@ PlotAxes plot_axes(const Snapshot& s, const FrameOptions& o) {
         v_lo = std::min(v_lo, p.speed_m_s);
         v_hi = std::max(v_hi, p.speed_m_s);
     }
-    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : nice_ceil(std::max(1.0, t_hi));
-    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : nice_ceil(std::max(0.1, v_hi));
-    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : (v_lo < 0.0 ? -nice_ceil(-v_lo) : 0.0);
+    // Not fixed: grown as the window's plots grow (ticks.h).
+    const AxisRange v = growing_value_axis(v_lo, v_hi, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
+    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : growing_time_axis_s(t_hi);
+    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : v.hi;
+    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : v.lo;
     return a;
 }
 
@@ -119,28 +122,24 @@ void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, c
         return bottom - static_cast<float>((c - ax.speed_min_m_s) / v_span) * (bottom - top);
     };
     const float thin = std::max(1.0f, 1.2f * u);
-    // Grid and tick labels: about four intervals on each axis.
-    const double v_step = nice_ceil(v_span / 4.0);
-    // Integer tick counters: a floating-point counter would gather rounding error tick by tick.
-    const double v_first = std::ceil(ax.speed_min_m_s / v_step - 1e-9) * v_step;
-    const int v_ticks = static_cast<int>(std::floor((ax.speed_max_m_s + 1e-9 - v_first) / v_step)) + 1;
-    for (int k = 0; k < v_ticks; ++k) {
-        const double v = v_first + k * v_step;
+    // Grid and tick labels: about four intervals on the speed axis, five on the time axis.
+    const AxisTicks v_ticks = axis_ticks(ax.speed_min_m_s, ax.speed_max_m_s, 4.0);
+    for (int k = 0; k < v_ticks.count; ++k) {
+        const double v = v_ticks.at(k);
         const float y = Y(v);
         out.shapes.push_back(segment({left, y}, {right, y}, thin, palette::plot_grid, Tag::plot));
-        const std::string label = signed_fixed(std::fabs(v) < 1e-12 ? 0.0 : v, v_step < 0.1 ? 2 : 1);
+        const std::string label = signed_fixed(std::fabs(v) < 1e-12 ? 0.0 : v, v_ticks.step < 0.1 ? 2 : 1);
         const float tw = font.text_width(label, L.small);
         font.layout(label, L.small, {left - 8.0f * u - tw, y + font.ascent(L.small) * 0.35f}, palette::text_dim,
                     out.glyphs);
     }
-    const double t_step = nice_ceil(ax.time_max_s / 5.0);
-    const int t_ticks = static_cast<int>(std::floor((ax.time_max_s + 1e-9) / t_step)) + 1;
-    for (int k = 0; k < t_ticks; ++k) {
-        const double t = k * t_step;
+    const AxisTicks t_ticks = axis_ticks(0.0, ax.time_max_s, 5.0);
+    for (int k = 0; k < t_ticks.count; ++k) {
+        const double t = t_ticks.at(k);
         const float x = X(t);
         out.shapes.push_back(segment({x, top}, {x, bottom}, thin, palette::plot_grid, Tag::plot));
         // The unit rides on the last label, where a separate one would collide with it.
-        const bool last = k + 1 == t_ticks;
+        const bool last = k + 1 == t_ticks.count;
         const std::string label = fmt::format("{:g}{}", std::round(t * 1000.0) / 1000.0, last ? " s" : "");
         const float tw = font.text_width(last ? label.substr(0, label.size() - 2) : label, L.small);
         font.layout(label, L.small, {x - tw / 2.0f, bottom + 6.0f * u + font.ascent(L.small)}, palette::text_dim,

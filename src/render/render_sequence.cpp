@@ -17,7 +17,7 @@
 #include "render/gl_renderer.h"
 #include "render/offscreen_osmesa.h"
 #include "render/snapshot.h"
-#include "render/world_draw.h"
+#include "render/ticks.h"
 
 namespace polyroll::render {
 
@@ -26,11 +26,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // x rounded up to a multiple of a nice step about a fifth of it: 1.225 -> 1.5, 5.5 -> 6.
-double round_up_readable(double x) {
-    if (!(x > 0.0)) return 0.0;
-    const double step = nice_ceil(x / 5.0);
-    return std::ceil(x / step - 1e-9) * step;
-}
+double round_up_readable(double x) { return round_up_nice(x, 5.0); }
 
 }  // namespace
 

@@ -6,17 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "render/ticks.h"
+
 namespace polyroll::render {
 
 using geom::Vec2;
-
-double nice_ceil(double x) {
-    if (!(x > 0.0)) return 1.0;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= x * (1.0 - 1e-9)) return m * p;
-    return 10.0 * p;
-}
 
 std::vector<Vec2> shell_world_polygon(const Snapshot& s, bool outer) {
     const std::vector<Vec2>& local = outer ? s.outer_local_m : s.inner_local_m;
@@ -47,7 +41,7 @@ bool inside(Px p, const PxRect& r, float pad) {
 void draw_ramp(const Snapshot& s, const Camera& cam, const WorldStyle& st, const FontAtlas& font, Layer& out) {
     const double deg = s.ramp_angle_deg;
     const double L = s.ramp_length_m;
-    const double band_m = 18.0 * st.unit / cam.px_per_m;  // the body's thickness stays readable at any zoom
+    const double band_m = kRampBodyDesignPx * st.unit / cam.px_per_m;  // the body's thickness stays readable at any zoom
     auto P = [&](double x, double y) { return cam.to_px(ramp_to_world({x, y}, deg)); };
     const Px a = P(0, 0), b = P(L, 0), c = P(L, -band_m), d = P(0, -band_m);
     out.triangles.push_back({a, b, c, palette::ramp_body, Tag::ramp_body});

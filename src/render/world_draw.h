@@ -1,23 +1,15 @@
 // Draws the physical scene of a snapshot through a camera: the ramp at its angle with its length
-// scale, the shell (inside, walls, outline), the grains and the tracked lid dot.
+// scale, the shell (inside, walls, outline), the grains and the tracked lid dot, in a style from
+// view_style.h: the frames and the window draw their worlds with this one function.
 #pragma once
 
 #include "render/camera.h"
 #include "render/draw_list.h"
 #include "render/font.h"
-#include "render/frame_layout.h"
 #include "render/snapshot.h"
+#include "render/view_style.h"
 
 namespace polyroll::render {
-
-struct WorldStyle {
-    float unit = 1.0f;    // design pixel
-    float stroke = 2.5f;  // outline width
-    FontSpec scale_font;
-    PxRect visible;       // only ticks inside this rectangle are drawn
-    GrainColouring grain_colouring = GrainColouring::material;
-    double colour_speed_max_m_s = 1.0;
-};
 
 void draw_world(const Snapshot& s, const Camera& cam, const WorldStyle& style, const FontAtlas& font, Layer& out);
 
@@ -30,8 +22,5 @@ double outer_radius_m(const Snapshot& s);
 
 // The grain fill colour for a grain of the snapshot.
 Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, double speed_max_m_s);
-
-// A "nice" number (1, 2 or 5 times a power of ten) at least `x`.
-double nice_ceil(double x);
 
 }  // namespace polyroll::render
