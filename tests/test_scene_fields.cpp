@@ -59,6 +59,7 @@ TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scen
         if (f.sweep_axis > 0) axes.push_back(f.sweep_axis);
         CHECK(!f.help.empty());
         if (f.type == FieldType::preset) CHECK(f.kind.has_value());
+        if (f.type == FieldType::choice) CHECK((f.choice_names && f.choice_named));
     }
     std::sort(axes.begin(), axes.end());
     for (size_t i = 0; i < axes.size(); ++i) CHECK(axes[i] == static_cast<int>(i) + 1);

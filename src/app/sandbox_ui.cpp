@@ -190,7 +190,7 @@ bool names_combo(const char* label, const std::vector<std::string>& names, int& 
 void physics_controls(SandboxState& s, UiRequests& req) {
     SharedControls& c = s.shared;
     bool changed = preset_control(scene_field("ramp.preset"), c, c.ramp, set_ramp,
-                                  "All lanes roll on it (wooden ramp 1.21 m, air track 2.54 m).");
+                                  "All lanes roll on it.");
     const SceneField& pose = scene_field("release.pose");
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(std::string(pose.label).c_str());
@@ -213,7 +213,9 @@ void physics_controls(SandboxState& s, UiRequests& req) {
         set_model(c, model_from(models[static_cast<size_t>(m)]));
         changed = true;
     }
-    tip(field_tip(model, "The reduced models compute a whole run in under a millisecond and draw the shell only."));
+    tip(field_tip(model, "segments: the fill as rigid segments that re-level after each impact; rigid: the fill "
+                         "frozen as at release. The reduced models compute a whole run in under a millisecond and "
+                         "draw the shell only."));
     changed |= preset_control(scene_field("fidelity.preset"), c, c.fidelity, set_fidelity, "");
     if (changed) req.controls_changed = true;
 }

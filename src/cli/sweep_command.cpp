@@ -46,7 +46,7 @@ std::vector<const SceneField*> axis_fields() {
 
 std::string axis_help(const SceneField& f) {
     const bool listed = f.type == FieldType::preset || f.type == FieldType::choice;
-    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step, e.g. 1,2 or 0:1:0.25");
+    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step");
 }
 
 struct SweepArgs {

@@ -44,6 +44,16 @@ public:
         return *this;
     }
     Row& presets(assets::Kind kind) { f_.kind = kind; return *this; }
+    // An enumeration's names and lookup (scene_names.h).
+    template <const std::vector<std::string>& (*Names)(), auto Named>
+    Row& choices() {
+        f_.choice_names = Names;
+        f_.choice_named = [](std::string_view name) -> std::optional<FieldValue> {
+            if (auto v = Named(name)) return FieldValue(*v);
+            return std::nullopt;
+        };
+        return *this;
+    }
     Row& flag(std::string_view flag, int sweep_axis = 0) {
         f_.flag = flag;
         f_.sweep_axis = sweep_axis;
@@ -78,7 +88,7 @@ std::vector<SceneField> make_table() {
         // --- shell: the hollow polygon (assets/polygons.json)
         Row("shell.preset", T::preset, member<&Scene::shell, &ShellParams::preset>())
             .presets(Kind::polygon).flag("--polygon", 3).label("polygon")
-            .help("the experiment's polygon the shell is built from (size, wall, mass); 'polyroll presets' lists them"),
+            .help("polygon preset: the experiment's shell, its size, walls and mass"),
         Row("shell.sides", T::integer, member<&Scene::shell, &ShellParams::sides>())
             .range(3, 64).flag("--sides", 4).label("n (sides)")
             .help("n: the number of sides of the hollow polygon"),
@@ -100,10 +110,10 @@ std::vector<SceneField> make_table() {
         // --- fill: how much of the inside the grains fill, and the grains (assets/materials.json)
         Row("fill.ratio", T::number, member<&Scene::fill, &FillParams::ratio>())
             .range(0.0, 1.0).flag("--fill", 6).label("r (fill)")
-            .help("r: the share of the polygon's inside volume filled with grains (0 empty, 1 full), no unit"),
+            .help("r: the share of the inside volume filled with grains, no unit"),
         Row("fill.material.preset", T::preset, member<&Scene::fill, &FillParams::material, &MaterialParams::preset>())
             .presets(Kind::material).flag("--material", 5).label("material")
-            .help("the grains filling the polygon: their size, density, friction and restitution"),
+            .help("material preset: the grains' size, density, friction and restitution"),
         Row("fill.material.diameter_m", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::diameter_m>())
             .range(0.0005, 0.0)
@@ -127,7 +137,7 @@ std::vector<SceneField> make_table() {
 
         // --- ramp (assets/ramps.json)
         Row("ramp.preset", T::preset, member<&Scene::ramp, &RampParams::preset>())
-            .presets(Kind::ramp).flag("--ramp", 7).label("ramp").help("the ramp: its length, friction and restitution"),
+            .presets(Kind::ramp).flag("--ramp", 7).label("ramp").help("ramp preset: its length, friction and restitution"),
         Row("ramp.length_m", T::number, member<&Scene::ramp, &RampParams::length_m>())
             .range(0.0, 100.0)
             .min_of(min_ramp_length_m, {"shell.sides", "shell.inner_circumradius_m", "shell.wall_thickness_m"})
@@ -143,16 +153,16 @@ std::vector<SceneField> make_table() {
 
         // --- release
         Row("release.pose", T::choice, member<&Scene::release, &ReleaseParams::pose>())
-            .flag("--release", 9).label("release")
+            .choices<release_pose_names, release_pose_named>().flag("--release", 9).label("release")
             .help("release pose: held on a vertex with the centre above it, or set down on a face"),
         Row("release.tilt_deg", T::number, member<&Scene::release, &ReleaseParams::tilt_deg>())
             .range(0.0, 30.0).unit("degrees").flag("--tilt", 10)
-            .help("release tilt past balance (less than one face's turn)"),
+            .help("release tilt past balance"),
 
         // --- fidelity (assets/fidelity.json)
         Row("fidelity.preset", T::preset, member<&Scene::fidelity, &FidelityParams::preset>())
             .presets(Kind::fidelity).flag("--fidelity", 2).label("fidelity")
-            .help("time step and solver iterations: draft is fastest, reference the most accurate (and slowest)"),
+            .help("fidelity preset: time step and solver iterations, from draft (fastest) to reference (most accurate)"),
         Row("fidelity.step_hz", T::number, member<&Scene::fidelity, &FidelityParams::step_hz>())
             .range(30.0, 100000.0).unit("Hz").flag("--step-hz").help("tracker steps per simulated second"),
         Row("fidelity.substeps", T::integer, member<&Scene::fidelity, &FidelityParams::substeps>())
@@ -164,10 +174,9 @@ std::vector<SceneField> make_table() {
 
         // --- run
         Row("run.model", T::choice, member<&Scene::run, &RunParams::model>())
-            .flag("--model", 1).label("model")
-            .help("physics: grains (Box2D simulates the shell and every grain), or the experimenters' reduced models "
-                  "segments (the fill as rigid segments that re-level after each impact) and rigid (the fill frozen "
-                  "as at release)"),
+            .choices<model_names, model_named>().flag("--model", 1).label("model")
+            .help("physics: grains (Box2D simulates the shell and every grain) or one of the experimenters' reduced "
+                  "models"),
         Row("run.seed", T::seed, member<&Scene::run, &RunParams::seed>())
             .flag("--seed").help("random seed for the grain packing"),
         Row("run.time_limit_s", T::number, member<&Scene::run, &RunParams::time_limit_s>())
@@ -220,8 +229,7 @@ double field_max(const SceneField& f, const Scene& s) { return f.max_of ? f.max_
 
 std::vector<std::string> field_choices(const SceneField& f) {
     if (f.type == FieldType::preset && f.kind) return assets::preset_names(*f.kind);
-    if (f.path == "release.pose") return release_pose_names();
-    if (f.path == "run.model") return model_names();
+    if (f.type == FieldType::choice && f.choice_names) return f.choice_names();
     return {};
 }
 

@@ -61,6 +61,8 @@ struct SceneField {
     std::string_view unit;        // shown after the limits in messages: "m", "degrees"; "" for none
     std::string_view limit_note;  // shown after the unit, e.g. "(at most fidelity.step_hz)"
     std::optional<assets::Kind> kind;  // preset fields: which presets (assets/)
+    const std::vector<std::string>& (*choice_names)() = nullptr;           // choice fields: the names,
+    std::optional<FieldValue> (*choice_named)(std::string_view) = nullptr;  // and the value of a name
     std::string_view flag;        // command-line flag, e.g. "--angle"; "" for none
     int sweep_axis = 0;           // place among polyroll sweep's axis flags (1 = outermost); 0 = none
     std::string_view label;       // the sandbox panel's label for its control ("" = no control)

@@ -217,13 +217,8 @@ private:
 
     FieldValue choice(const SceneField& f, const json& v) const {
         const std::string field(f.path);
-        if (v.is_string()) {
-            const std::string name = v.get<std::string>();
-            if (field == "release.pose")
-                if (auto pose = release_pose_named(name)) return *pose;
-            if (field == "run.model")
-                if (auto model = model_named(name)) return *model;
-        }
+        if (v.is_string() && f.choice_named)
+            if (auto value = f.choice_named(v.get<std::string>())) return *value;
         throw InputError(fmt::format("{} = {}{} is not allowed (allowed: {})", field, shown(v), where(field),
                                      join(field_choices(f))));
     }

@@ -28,6 +28,7 @@ std::string name_of(const std::array<std::pair<E, std::string_view>, N>& table, 
 template <class E, std::size_t N>
 std::vector<std::string> names_of(const std::array<std::pair<E, std::string_view>, N>& table) {
     std::vector<std::string> names;
+    names.reserve(N);
     for (const auto& entry : table) names.emplace_back(entry.second);
     return names;
 }
