@@ -89,7 +89,7 @@ std::vector<std::string> field_choices(const SceneField& f);
 // What the field accepts, for help texts: "3 to 64", "from 0 to 89 degrees", "bb, rice, peas".
 std::string field_allowed(const SceneField& f);
 
-// The help text with what is allowed: "number of sides n of the hollow polygon, 3 to 64".
+// The help text with what is allowed: "n: the number of sides of the hollow polygon: 3 to 64".
 std::string field_help(const SceneField& f);
 
 }  // namespace polyroll
