@@ -28,6 +28,7 @@
 #include "render/world_draw.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/scene_fields.h"
 #include "sim/shell_properties.h"
 #include "sim/world_builder.h"
 #include "sim/scene_json.h"
@@ -198,9 +199,9 @@ TEST_CASE("panel values are clamped to their valid range and names are checked",
     LaneControls l = state_for_preset("default").lanes[0].controls;
     SharedControls s = state_for_preset("default").shared;
     set_sides(l, 1);
-    CHECK(l.sides == kSidesMin);
+    CHECK(l.sides == scene_field("shell.sides").min);
     set_sides(l, 1000);
-    CHECK(l.sides == kSidesMax);
+    CHECK(l.sides == scene_field("shell.sides").max);
     set_fill_ratio(l, -0.5);
     CHECK(l.fill_ratio == 0.0);
     set_fill_ratio(l, 1.7);
@@ -208,11 +209,11 @@ TEST_CASE("panel values are clamped to their valid range and names are checked",
     set_fill_ratio(l, std::numeric_limits<double>::quiet_NaN());
     CHECK(l.fill_ratio == 0.0);
     set_angle_deg(s, 95.0);
-    CHECK(s.angle_deg == kAngleMaxDeg);
+    CHECK(s.angle_deg == scene_field("ramp.angle_deg").max);
     set_angle_deg(s, -3.0);
     CHECK(s.angle_deg == 0.0);
     set_grain_friction(l, 5.0);
-    CHECK(l.grain_friction == kFrictionMax);
+    CHECK(l.grain_friction == scene_field("fill.material.friction").max);
     set_grain_restitution(l, -1.0);
     CHECK(l.grain_restitution == 0.0);
     set_ramp_friction(s, -2.0);

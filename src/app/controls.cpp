@@ -6,10 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "app/sandbox_settings.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/scene_fields.h"
 #include "sim/scene_json.h"
+#include "sim/scene_names.h"
 
 namespace polyroll::app {
 
@@ -22,6 +23,16 @@ double clamp_finite(double v, double lo, double hi) {
     return std::clamp(v, lo, hi);
 }
 
+// Clamps to the field's limits (sim/scene_fields.cpp): the panel's fields all have fixed, closed ones.
+double clamp_to_field(std::string_view path, double v) {
+    const SceneField& f = scene_field(path);
+    return clamp_finite(v, f.min, f.max);
+}
+int clamp_to_field(std::string_view path, int v) {
+    const SceneField& f = scene_field(path);
+    return std::clamp(v, static_cast<int>(f.min), static_cast<int>(f.max));
+}
+
 // The preset's values; throws InputError naming the choices for an unknown name.
 const json& values_of(assets::Kind kind, const std::string& name) { return assets::preset_values(kind, name); }
 
@@ -30,10 +41,10 @@ const json& values_of(assets::Kind kind, const std::string& name) { return asset
 void set_polygon(LaneControls& c, const std::string& preset) {
     const json& v = values_of(assets::Kind::polygon, preset);
     c.polygon = preset;
-    c.sides = std::clamp(v.at("sides").get<int>(), kSidesMin, kSidesMax);
+    c.sides = clamp_to_field("shell.sides", v.at("sides").get<int>());
 }
-void set_sides(LaneControls& c, int sides) { c.sides = std::clamp(sides, kSidesMin, kSidesMax); }
-void set_fill_ratio(LaneControls& c, double ratio) { c.fill_ratio = clamp_finite(ratio, kFillMin, kFillMax); }
+void set_sides(LaneControls& c, int sides) { c.sides = clamp_to_field("shell.sides", sides); }
+void set_fill_ratio(LaneControls& c, double ratio) { c.fill_ratio = clamp_to_field("fill.ratio", ratio); }
 void set_material(LaneControls& c, const std::string& preset) {
     const json& v = values_of(assets::Kind::material, preset);
     c.material = preset;
@@ -41,9 +52,9 @@ void set_material(LaneControls& c, const std::string& preset) {
     set_grain_friction(c, v.at("friction").get<double>());
     set_grain_restitution(c, v.at("restitution").get<double>());
 }
-void set_grain_friction(LaneControls& c, double f) { c.grain_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }
+void set_grain_friction(LaneControls& c, double f) { c.grain_friction = clamp_to_field("fill.material.friction", f); }
 void set_grain_restitution(LaneControls& c, double e) {
-    c.grain_restitution = clamp_finite(e, kRestitutionMin, kRestitutionMax);
+    c.grain_restitution = clamp_to_field("fill.material.restitution", e);
 }
 
 void set_ramp(SharedControls& c, const std::string& preset) {
@@ -52,10 +63,10 @@ void set_ramp(SharedControls& c, const std::string& preset) {
     set_ramp_friction(c, v.at("friction").get<double>());
     set_ramp_restitution(c, v.at("restitution").get<double>());
 }
-void set_angle_deg(SharedControls& c, double a) { c.angle_deg = clamp_finite(a, kAngleMinDeg, kAngleMaxDeg); }
-void set_ramp_friction(SharedControls& c, double f) { c.ramp_friction = clamp_finite(f, kFrictionMin, kFrictionMax); }
+void set_angle_deg(SharedControls& c, double a) { c.angle_deg = clamp_to_field("ramp.angle_deg", a); }
+void set_ramp_friction(SharedControls& c, double f) { c.ramp_friction = clamp_to_field("ramp.friction", f); }
 void set_ramp_restitution(SharedControls& c, double e) {
-    c.ramp_restitution = clamp_finite(e, kRestitutionMin, kRestitutionMax);
+    c.ramp_restitution = clamp_to_field("ramp.restitution", e);
 }
 void set_release_pose(SharedControls& c, ReleasePose pose) { c.pose = pose; }
 void set_model(SharedControls& c, Model model) { c.model = model; }
@@ -118,17 +129,22 @@ Scene lane_scene(const json& base, const LaneControls& lane, const SharedControl
     return resolve_scene({SceneLayer{base, "sandbox preset", {}}, SceneLayer{controls_layer(lane, shared), "panel", {}}});
 }
 
+namespace {
+std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+}  // namespace
+
 ReleasePose release_pose_from(const std::string& name) {
-    if (name == "vertex") return ReleasePose::vertex;
-    if (name == "face") return ReleasePose::face;
-    throw InputError(fmt::format("release pose '{}' is unknown (allowed: vertex, face)", name));
+    if (auto pose = release_pose_named(name)) return *pose;
+    throw InputError(fmt::format("release pose '{}' is unknown (allowed: {})", name, join(release_pose_names())));
 }
 
 Model model_from(const std::string& name) {
-    if (name == "grains") return Model::grains;
-    if (name == "segments") return Model::segments;
-    if (name == "rigid") return Model::rigid;
-    throw InputError(fmt::format("model '{}' is unknown (allowed: grains, segments, rigid)", name));
+    if (auto model = model_named(name)) return *model;
+    throw InputError(fmt::format("model '{}' is unknown (allowed: {})", name, join(model_names())));
 }
 
 }  // namespace polyroll::app

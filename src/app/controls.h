@@ -1,5 +1,5 @@
 // The panel's controls as plain data, and their mapping to scene parameters. Each setter changes
-// exactly the parameters its control names and clamps to the valid range (sandbox_settings.h); a
+// exactly the parameters its control names and clamps to the field's limits (sim/scene_fields.h); a
 // lane's scene is its preset document with the controls as one more layer, resolved by the core.
 // No GLFW or ImGui here: the mapping is unit-tested without a window.
 #pragma once

@@ -1,6 +1,8 @@
 // Sandbox presets from assets/sandbox-presets.json: see sandbox_presets.h.
 #include "app/sandbox_presets.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "app/sandbox_settings.h"
@@ -43,6 +45,25 @@ std::vector<Scene> resolve_preset(const SandboxPreset& preset) {
     for (const auto& doc : preset.lanes)
         scenes.push_back(resolve_scene({SceneLayer{doc, fmt::format("sandbox preset {} lane {}", preset.name, ++k), {}}}));
     return scenes;
+}
+
+PresetPanel preset_panel() {
+    PresetPanel panel;
+    for (const auto& [name, entry] : presets_json().items()) {
+        const SandboxPreset preset = sandbox_preset(name);
+        PresetButton button{name, name, fmt::format("Preset '{}': {}", name, preset.description)};
+        if (!entry.contains("row")) {
+            panel.others.push_back(button);
+            continue;
+        }
+        if (entry.contains("button")) button.label = entry.at("button").get<std::string>();
+        else button.label = assets::material_look(resolve_preset(preset).front().fill.material.preset).label;
+        const std::string row = entry.at("row").get<std::string>();
+        auto it = std::find_if(panel.rows.begin(), panel.rows.end(), [&](const PresetRow& r) { return r.label == row; });
+        if (it == panel.rows.end()) it = panel.rows.insert(panel.rows.end(), PresetRow{row, {}});
+        it->buttons.push_back(button);
+    }
+    return panel;
 }
 
 }  // namespace polyroll::app

@@ -26,6 +26,25 @@ SandboxPreset sandbox_preset(const std::string& name);
 // Each lane's document resolved over assets/defaults.json (throws InputError).
 std::vector<Scene> resolve_preset(const SandboxPreset& preset);
 
+// The panel's preset buttons (GL-free, so the tests check them): the presets with a "row" as a grid,
+// one row per row name in order of first appearance, each button labelled by its material's label
+// (assets/materials.json "look") or its own "button" text; the others as plain buttons.
+struct PresetButton {
+    std::string preset;   // the sandbox preset it loads
+    std::string label;    // the button's text
+    std::string tooltip;  // "Preset 'hexagon-bb': the hexagon (small) half full of BBs ..."
+};
+struct PresetRow {
+    std::string label;  // "hexagon"
+    std::vector<PresetButton> buttons;
+};
+struct PresetPanel {
+    std::vector<PresetRow> rows;
+    std::vector<PresetButton> others;
+};
+// Throws InputError for a preset that does not resolve.
+PresetPanel preset_panel();
+
 inline constexpr const char* kDefaultSandboxPreset = "default";
 
 }  // namespace polyroll::app

@@ -1,23 +1,20 @@
-// Every default and limit of the sandbox window's own settings, in one place: the ranges its
-// controls clamp to, the transport's speeds, the real-time cap, the window and the theme. Scene
-// values (polygons, materials, ramps) stay in assets/; these are the window's choices, each with
-// its reason.
+// Every default and limit of the sandbox window's own settings, in one place: its sliders' spans,
+// the transport's speeds, the real-time cap, the window and the theme. Scene values (polygons,
+// materials, ramps) stay in assets/ and the scene fields' limits in sim/scene_fields.cpp; these are
+// the window's choices, each with its reason.
 #pragma once
 
 #include <array>
 
 namespace polyroll::app {
 
-// --- Control ranges. Clamping keeps every scene the panel makes valid (scene_validate.cpp has the
-// same limits), so a slider can never produce a scene the core refuses.
-inline constexpr int kSidesMin = 3, kSidesMax = 64;          // validate_scene: shell.sides
-inline constexpr double kFillMin = 0.0, kFillMax = 1.0;      // r is a share of the inside volume
-inline constexpr double kAngleMinDeg = 0.0, kAngleMaxDeg = 89.0;  // validate_scene: ramp.angle_deg
-// The slider spans the angles a class will use (the experiment ran 5-25 degrees; above about 15 the
-// polygons hop); Ctrl+click types any value up to kAngleMaxDeg.
+// --- Control ranges. The limits of the scene fields the panel edits are the field table's
+// (sim/scene_fields.cpp): the controls clamp to them, so a slider never makes a scene the core refuses.
+// These are only the sliders' own spans, for the values a class will use; Ctrl+click types any value
+// up to the field's limit.
+inline constexpr int kSidesSliderMax = 24;  // 3 to 24 sides on the slider, up to 64 typed
+// The experiment ran 5-25 degrees; above about 15 the polygons hop.
 inline constexpr double kAngleSliderMaxDeg = 45.0;
-inline constexpr double kFrictionMin = 0.0, kFrictionMax = 2.0;        // validate_scene: *.friction
-inline constexpr double kRestitutionMin = 0.0, kRestitutionMax = 1.0;  // validate_scene: *.restitution
 inline constexpr int kMaxLanes = 4;  // the issue: up to four polygons racing
 
 // --- Transport. Slow motion halves the rate down to 1/16 (the issue's range).

@@ -2,8 +2,9 @@
 #include "app/sandbox_ui.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <map>
+#include <optional>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
@@ -16,7 +17,9 @@
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/scene_fields.h"
 #include "sim/scene_json.h"
+#include "sim/scene_names.h"
 
 namespace polyroll::app {
 
@@ -67,24 +70,35 @@ bool slider_double(const char* label, double& v, double lo, double hi, const cha
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format);
 }
 
+// A field's tooltip: its help and what it allows (sim/scene_fields.cpp), then what the panel adds.
+std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
+    std::string text = field_help(f);
+    if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+    return text + "." + (panel_note.empty() ? "" : " " + panel_note);
+}
+
 // The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
 // setter (controls.h), which checks the name or clamps the number: the panel never writes a value
-// the scene would refuse. Each shows its tooltip and returns true when the user changed the value.
+// the scene would refuse. Each is labelled by its field's row (sim/scene_fields.cpp), shows its
+// tooltip and returns true when the user changed the value.
 template <class Controls>
-bool preset_control(const char* label, assets::Kind kind, Controls& c, std::string value,
-                    void (*set)(Controls&, const std::string&), const std::string& help) {
-    const bool edited = preset_combo(label, kind, value);
+bool preset_control(const SceneField& f, Controls& c, std::string value, void (*set)(Controls&, const std::string&),
+                    const std::string& panel_note) {
+    const bool edited = preset_combo(std::string(f.label).c_str(), *f.kind, value);
     if (edited) set(c, value);
-    tip(help);
+    tip(field_tip(f, panel_note));
     return edited;
 }
 
+// A slider over the field's limits, or up to `slider_max` (Ctrl+click types up to the limit).
 template <class Controls>
-bool slider_control(const char* label, Controls& c, double value, double lo, double hi, const char* format,
-                    void (*set)(Controls&, double), const std::string& help) {
-    const bool edited = slider_double(label, value, lo, hi, format);
+bool slider_control(const SceneField& f, Controls& c, double value, const char* format,
+                    void (*set)(Controls&, double), const std::string& panel_note,
+                    std::optional<double> slider_max = std::nullopt) {
+    const bool edited =
+        slider_double(std::string(f.label).c_str(), value, f.min, slider_max.value_or(f.max), format);
     if (edited) set(c, value);
-    tip(help);
+    tip(field_tip(f, panel_note));
     return edited;
 }
 
@@ -94,95 +108,92 @@ void heading(const char* text) {
     ImGui::Separator();
 }
 
-// The presets as a grid: one row per polygon, one button per material; the rest as plain buttons.
+// The preset buttons: the rows (one per polygon, one button per material) and then the rest, as
+// assets/sandbox-presets.json lays them out (sandbox_presets.h).
 void preset_buttons(SandboxState& s, UiRequests& req) {
-    static const std::vector<std::pair<std::string, std::string>> materials = {{"bb", "BBs"}, {"rice", "rice"},
-                                                                               {"peas", "peas"}};
-    std::vector<std::string> rows, others;
-    std::map<std::string, std::vector<std::string>> by_row;
-    for (const std::string& name : sandbox_preset_names()) {
-        bool matched = false;
-        for (const auto& [m, label] : materials) {
-            const std::string suffix = "-" + m;
-            if (name.size() > suffix.size() && name.ends_with(suffix)) {
-                const std::string row = name.substr(0, name.size() - suffix.size());
-                if (!by_row.count(row)) rows.push_back(row);
-                by_row[row].push_back(name);
-                matched = true;
-            }
+    static std::string error;
+    static const PresetPanel panel = [] {
+        try {
+            return preset_panel();
+        } catch (const std::exception& e) {
+            error = e.what();
+            return PresetPanel{};
         }
-        if (!matched) others.push_back(name);
-    }
+    }();
+    if (!error.empty()) ImGui::TextWrapped("%s", error.c_str());
+    auto button = [&](const PresetButton& b) {
+        ImGui::PushID(b.preset.c_str());
+        const bool current = s.preset == b.preset;
+        if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        if (ImGui::Button(b.label.c_str())) req.load_preset = b.preset;
+        if (current) ImGui::PopStyleColor();
+        tip(b.tooltip);
+        ImGui::PopID();
+    };
     const float label_w = ImGui::GetFontSize() * 7.5f;
-    for (const std::string& row : rows) {
+    for (const PresetRow& row : panel.rows) {
         ImGui::AlignTextToFramePadding();
-        ImGui::TextUnformatted(row.c_str());
+        ImGui::TextUnformatted(row.label.c_str());
         bool first_in_row = true;
-        for (const auto& [m, label] : materials) {
-            const std::string name = row + "-" + m;
-            if (std::find(by_row[row].begin(), by_row[row].end(), name) == by_row[row].end()) continue;
+        for (const PresetButton& b : row.buttons) {
             // The first material button lines up in a column after the polygon names.
             if (first_in_row) ImGui::SameLine(label_w);
             else ImGui::SameLine();
             first_in_row = false;
-            ImGui::PushID(name.c_str());
-            const bool current = s.preset == name;
-            if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-            if (ImGui::Button(label.c_str())) req.load_preset = name;
-            if (current) ImGui::PopStyleColor();
-            tip(fmt::format("Preset '{}': {}", name, sandbox_preset(name).description));
-            ImGui::PopID();
+            button(b);
         }
     }
     bool first = true;
-    for (const std::string& name : others) {
+    for (const PresetButton& b : panel.others) {
         if (!first) ImGui::SameLine();
         first = false;
-        const bool current = s.preset == name;
-        if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(name.c_str())) req.load_preset = name;
-        if (current) ImGui::PopStyleColor();
-        tip(fmt::format("Preset '{}': {}", name, sandbox_preset(name).description));
+        button(b);
     }
 }
 
 void lane_controls(SandboxState& s, UiRequests& req) {
     LaneControls& c = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
-    bool changed = preset_control("polygon", assets::Kind::polygon, c, c.polygon, set_polygon,
-                                  "The experiment's polygon this lane's shell is built from (size, wall, mass); n "
-                                  "below can change its number of sides.");
+    bool changed = preset_control(scene_field("shell.preset"), c, c.polygon, set_polygon,
+                                  "This lane's shell; n below can change its number of sides.");
+    const SceneField& sides = scene_field("shell.sides");
     int n = c.sides;
-    if (ImGui::SliderInt("n (sides)", &n, kSidesMin, 24)) {
+    if (ImGui::SliderInt(std::string(sides.label).c_str(), &n, static_cast<int>(sides.min), kSidesSliderMax)) {
         set_sides(c, n);
         changed = true;
     }
-    tip(fmt::format("n: the number of sides of the hollow polygon, {} to {} (Ctrl+click to type more than 24).",
-                    kSidesMin, kSidesMax));
-    changed |= slider_control("r (fill)", c, c.fill_ratio, kFillMin, kFillMax, "%.2f", set_fill_ratio,
-                              "r: the share of the polygon's inside volume filled with grains, 0 (empty) to 1 "
-                              "(full). No unit.");
-    changed |= preset_control("material", assets::Kind::material, c, c.material, set_material,
-                              "The grains filling the polygon (their size, density, friction and restitution come "
-                              "from the preset; friction and restitution can be changed under Advanced).");
+    tip(field_tip(sides, fmt::format("Ctrl+click to type more than {}.", kSidesSliderMax)));
+    changed |= slider_control(scene_field("fill.ratio"), c, c.fill_ratio, "%.2f", set_fill_ratio, "");
+    changed |= preset_control(scene_field("fill.material.preset"), c, c.material, set_material,
+                              "Friction and restitution can be changed under Advanced.");
     if (changed) req.controls_changed = true;
 }
 
 void shared_controls(SandboxState& s, UiRequests& req) {
     SharedControls& c = s.shared;
-    if (slider_control("\u03B8 (angle)", c, c.angle_deg, kAngleMinDeg, kAngleSliderMaxDeg, "%.1f\u00B0", set_angle_deg,
-                       fmt::format("\u03B8: the ramp's angle from horizontal, in degrees (all lanes). Ctrl+click to "
-                                   "type up to {:g} degrees.",
-                                   kAngleMaxDeg)))
+    if (slider_control(scene_field("ramp.angle_deg"), c, c.angle_deg, "%.1f\u00B0", set_angle_deg,
+                       fmt::format("All lanes. Ctrl+click to type more than {:g} degrees.", kAngleSliderMaxDeg),
+                       kAngleSliderMaxDeg))
         req.controls_changed = true;
+}
+
+// A combo over an enumeration's names (sim/scene_names.h); true when the choice changed.
+bool names_combo(const char* label, const std::vector<std::string>& names, int& index) {
+    return ImGui::Combo(
+        label, &index,
+        [](void* data, int i, const char** out) {
+            *out = (*static_cast<const std::vector<std::string>*>(data))[static_cast<size_t>(i)].c_str();
+            return true;
+        },
+        const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
 }
 
 void physics_controls(SandboxState& s, UiRequests& req) {
     SharedControls& c = s.shared;
-    bool changed = preset_control("ramp", assets::Kind::ramp, c, c.ramp, set_ramp,
-                                  "The ramp all lanes roll on: its length, friction and restitution (wooden ramp "
-                                  "1.21 m, air track 2.54 m).");
+    bool changed = preset_control(scene_field("ramp.preset"), c, c.ramp, set_ramp,
+                                  "All lanes roll on it.");
+    const SceneField& pose = scene_field("release.pose");
     ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("release");
+    ImGui::TextUnformatted(std::string(pose.label).c_str());
     ImGui::SameLine();
     if (ImGui::RadioButton("on a vertex", c.pose == ReleasePose::vertex)) {
         set_release_pose(c, ReleasePose::vertex);
@@ -195,37 +206,31 @@ void physics_controls(SandboxState& s, UiRequests& req) {
         changed = true;
     }
     tip("Set down flat on a face, then let go.");
-    static const char* models[] = {"grains", "segments", "rigid"};
-    int m = static_cast<int>(c.model);
-    if (ImGui::Combo("model", &m, models, 3)) {
-        set_model(c, model_from(models[m]));
+    const SceneField& model = scene_field("run.model");
+    const std::vector<std::string>& models = model_names();
+    int m = static_cast<int>(std::find(models.begin(), models.end(), to_string(c.model)) - models.begin());
+    if (names_combo(std::string(model.label).c_str(), models, m)) {
+        set_model(c, model_from(models[static_cast<size_t>(m)]));
         changed = true;
     }
-    tip("How the physics is computed: grains (Box2D simulates the shell and every grain), segments (the fill as "
-        "rigid segments that re-level after each impact) or rigid (the fill frozen as at release). The reduced "
-        "models compute a whole run in under a millisecond and draw the shell only.");
-    changed |= preset_control("fidelity", assets::Kind::fidelity, c, c.fidelity, set_fidelity,
-                              "Time step and solver iterations: draft is fastest, reference the most accurate (and "
-                              "slowest).");
+    tip(field_tip(model, "segments: the fill as rigid segments that re-level after each impact; rigid: the fill "
+                         "frozen as at release. The reduced models compute a whole run in under a millisecond and "
+                         "draw the shell only."));
+    changed |= preset_control(scene_field("fidelity.preset"), c, c.fidelity, set_fidelity, "");
     if (changed) req.controls_changed = true;
 }
 
 void advanced_controls(SandboxState& s, UiRequests& req) {
     LaneControls& l = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
     SharedControls& c = s.shared;
-    bool changed = slider_control(
-        "grain friction", l, l.grain_friction, kFrictionMin, kFrictionMax, "%.2f", set_grain_friction,
-        "Friction coefficient between grains (this lane), 0 to 2, no unit. Choosing a material resets it.");
-    changed |= slider_control(
-        "grain restitution", l, l.grain_restitution, kRestitutionMin, kRestitutionMax, "%.2f", set_grain_restitution,
-        "Restitution of grain impacts (on grains and walls; this lane), 0 (no bounce) to 1 (elastic), no unit.");
-    changed |= slider_control("ramp friction", c, c.ramp_friction, kFrictionMin, kFrictionMax, "%.2f",
-                              set_ramp_friction,
-                              "Friction coefficient between the shell and the ramp (all lanes), 0 to 2, no unit. "
-                              "Choosing a ramp resets it.");
-    changed |= slider_control("ramp restitution", c, c.ramp_restitution, kRestitutionMin, kRestitutionMax, "%.2f",
-                              set_ramp_restitution,
-                              "Restitution of the shell's impacts on the ramp (all lanes), 0 to 1, no unit.");
+    bool changed = slider_control(scene_field("fill.material.friction"), l, l.grain_friction, "%.2f",
+                                  set_grain_friction, "This lane. Choosing a material resets it.");
+    changed |= slider_control(scene_field("fill.material.restitution"), l, l.grain_restitution, "%.2f",
+                              set_grain_restitution, "This lane. Choosing a material resets it.");
+    changed |= slider_control(scene_field("ramp.friction"), c, c.ramp_friction, "%.2f", set_ramp_friction,
+                              "All lanes. Choosing a ramp resets it.");
+    changed |= slider_control(scene_field("ramp.restitution"), c, c.ramp_restitution, "%.2f", set_ramp_restitution,
+                              "All lanes. Choosing a ramp resets it.");
     if (changed) req.controls_changed = true;
 }
 

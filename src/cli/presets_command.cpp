@@ -1,4 +1,5 @@
-// polyroll presets: the bundled polygons, materials, ramps and fidelity levels, from assets/.
+// polyroll presets: the bundled polygons, materials, ramps and fidelity levels, from assets/ (or the
+// folder POLYROLL_ASSETS names).
 #include <fmt/format.h>
 
 #include "cli/commands.h"
@@ -24,6 +25,8 @@ int list(bool as_json) {
         fmt::print("{}\n", out.dump(2));
         return kExitOk;
     }
+    if (const auto dir = assets::directory(); !dir.empty())
+        fmt::print("{}={}: its asset files replace the bundled ones\n\n", assets::kDirectoryVariable, dir.string());
     for (Kind k : kinds) {
         fmt::print("{}s (assets/{}):\n", assets::kind_label(k), assets::kind_file(k));
         for (const std::string& name : assets::preset_names(k)) {
@@ -46,6 +49,10 @@ int list(bool as_json) {
 Action add_presets_command(CLI::App& app) {
     auto as_json = std::make_shared<bool>(false);
     CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps and fidelity levels");
+    sub->footer(fmt::format("The presets are the files of assets/, compiled in. {}=DIR reads any of them from DIR "
+                            "instead (e.g. DIR/materials.json with a material of your own), for every command and "
+                            "polyroll-sandbox.",
+                            assets::kDirectoryVariable));
     sub->add_flag("--json", *as_json, "print them, with their sources, as JSON");
     return [as_json] { return list(*as_json); };
 }

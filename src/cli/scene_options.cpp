@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 
 namespace polyroll::cli {
@@ -30,26 +31,21 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
 void SceneOptions::add_to(CLI::App& app) {
     scene_option_ = app.add_option("--scene", scene_file_, "scene file (JSON); flags given too override it")
                         ->group("Scene");
-    add_flag<std::string>(app, "--model", "run.model",
-                          "physics: grains (Box2D shell and grains), segments or rigid (the experimenters' "
-                          "reduced models)");
-    add_flag<std::string>(app, "--polygon", "shell.preset",
-                          "polygon preset (see 'polyroll presets'), e.g. hexagon-large");
-    add_flag<int>(app, "--sides", "shell.sides", "number of sides n, 3 to 64");
-    add_flag<double>(app, "--fill", "fill.ratio", "fill ratio r, 0 to 1: share of the inside volume filled with grains");
-    add_flag<std::string>(app, "--material", "fill.material.preset", "fill material preset: bb, rice, peas");
-    add_flag<std::string>(app, "--ramp", "ramp.preset", "ramp preset: air-track, wooden");
-    add_flag<double>(app, "--angle", "ramp.angle_deg", "ramp angle theta in degrees from horizontal, 0 to 89");
-    add_flag<std::string>(app, "--release", "release.pose", "release pose: vertex (held on a vertex) or face");
-    add_flag<double>(app, "--tilt", "release.tilt_deg", "release tilt past balance, degrees");
-    add_flag<std::string>(app, "--fidelity", "fidelity.preset", "fidelity preset: draft, standard, precise, reference");
-    add_flag<double>(app, "--step-hz", "fidelity.step_hz", "tracker steps per simulated second");
-    add_flag<int>(app, "--substeps", "fidelity.substeps", "engine steps per tracker step");
-    add_flag<int>(app, "--velocity-iterations", "fidelity.velocity_iterations", "solver velocity iterations");
-    add_flag<int>(app, "--position-iterations", "fidelity.position_iterations", "solver position iterations");
-    add_flag<std::uint64_t>(app, "--seed", "run.seed", "random seed for the grain packing");
-    add_flag<double>(app, "--time-limit", "run.time_limit_s", "longest simulated time, s");
-    add_flag<double>(app, "--sample-hz", "run.sample_hz", "trajectory rows per simulated second (default 30)");
+    // One flag per field that has one (sim/scene_fields.cpp), in scene-file order.
+    std::vector<const SceneField*> fields;
+    for (const SceneField& f : scene_fields())
+        if (!f.flag.empty()) fields.push_back(&f);
+    for (const SceneField* f : fields) {
+        const std::string name(f->flag), field(f->path), help = field_help(*f);
+        switch (f->type) {
+            case FieldType::integer: add_flag<int>(app, name, field, help); break;
+            case FieldType::number:
+            case FieldType::optional_number: add_flag<double>(app, name, field, help); break;
+            case FieldType::seed: add_flag<std::uint64_t>(app, name, field, help); break;
+            case FieldType::preset:
+            case FieldType::choice: add_flag<std::string>(app, name, field, help); break;
+        }
+    }
 }
 
 Scene SceneOptions::resolve() const {

@@ -1,5 +1,6 @@
-// The command-line flags that describe a scene (--sides, --fill, ...), shared by every command that
-// runs one. They become the last layer over assets/defaults.json and any --scene file.
+// The command-line flags that describe a scene (--sides, --fill, ...): one per field with a flag in
+// sim/scene_fields.cpp, shared by every command that runs one. They become the last layer over
+// assets/defaults.json and any --scene file.
 #pragma once
 
 #include <functional>

@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
@@ -32,25 +33,21 @@ using json = nlohmann::ordered_json;
 // 128 + SIGINT, what shells report for a command stopped by Ctrl-C.
 constexpr int kExitInterrupted = 130;
 
-// The swept scene flags, in the plan's axis order (the last varies fastest; the seed comes last).
-struct AxisFlag {
-    const char* name;
-    const char* field;
-    const char* help;
-};
-const std::vector<AxisFlag> kAxisFlags = {
-    {"--model", "run.model", "physics: grains, segments, rigid"},
-    {"--fidelity", "fidelity.preset", "fidelity presets: draft, standard, precise, reference"},
-    {"--polygon", "shell.preset", "polygon presets, e.g. hexagon-small,hexagon-large"},
-    {"--sides", "shell.sides", "numbers of sides n, 3 to 64, e.g. 6,8 or 4:10:2"},
-    {"--material", "fill.material.preset", "fill materials: bb, rice, peas"},
-    {"--fill", "fill.ratio", "fill ratios r, 0 to 1, e.g. 0:1:0.125"},
-    {"--ramp", "ramp.preset", "ramp presets: air-track, wooden"},
-    {"--angle", "ramp.angle_deg", "ramp angles theta in degrees, 0 to 89, e.g. 5:30:1"},
-    {"--release", "release.pose", "release poses: vertex, face"},
-    {"--tilt", "release.tilt_deg", "release tilts past balance, degrees"},
-    {"--time-limit", "run.time_limit_s", "longest simulated times, s"},
-};
+// The swept scene flags: the fields with a sweep_axis in sim/scene_fields.cpp, in the plan's axis
+// order (the last varies fastest; the seed comes last).
+std::vector<const SceneField*> axis_fields() {
+    std::vector<const SceneField*> fields;
+    for (const SceneField& f : scene_fields())
+        if (f.sweep_axis > 0 && !f.flag.empty()) fields.push_back(&f);
+    std::stable_sort(fields.begin(), fields.end(),
+                     [](const SceneField* a, const SceneField* b) { return a->sweep_axis < b->sweep_axis; });
+    return fields;
+}
+
+std::string axis_help(const SceneField& f) {
+    const bool listed = f.type == FieldType::preset || f.type == FieldType::choice;
+    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step");
+}
 
 struct SweepArgs {
     std::map<std::string, std::string> axis_text;  // flag -> its text
@@ -82,10 +79,11 @@ sweep::SweepPlan plan_from_args(const SweepArgs& a) {
     if (!a.scene_file.empty()) base = read_scene_file(a.scene_file).doc;
     resolve_scene({SceneLayer{base, a.scene_file.empty() ? "defaults" : a.scene_file, {}}});  // a bad base fails now
     std::vector<sweep::SweepAxis> axes;
-    for (const AxisFlag& f : kAxisFlags) {
-        const auto it = a.axis_text.find(f.name);
+    for (const SceneField* f : axis_fields()) {
+        const std::string name(f->flag);
+        const auto it = a.axis_text.find(name);
         if (it == a.axis_text.end()) continue;
-        axes.push_back({f.field, f.name, sweep::parse_grid_values(f.name, it->second)});
+        axes.push_back({std::string(f->path), name, sweep::parse_grid_values(name, it->second)});
     }
     for (const std::string& s : a.sets) {
         const auto eq = s.find('=');
@@ -224,10 +222,11 @@ Action add_sweep_command(CLI::App& app) {
         "2 bad input, 130 interrupted (resume with the same command), 1 other failure or --merge with runs missing.");
     a->scene_options.push_back(
         sub->add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid")->group("Grid"));
-    for (const AxisFlag& f : kAxisFlags) {
+    for (const SceneField* f : axis_fields()) {
         CLI::Option* o = sub->add_option_function<std::string>(
-                                f.name, [a, name = std::string(f.name)](const std::string& v) { a->axis_text[name] = v; },
-                                f.help)
+                                std::string(f->flag),
+                                [a, name = std::string(f->flag)](const std::string& v) { a->axis_text[name] = v; },
+                                axis_help(*f))
                              ->group("Grid");
         a->scene_options.push_back(o);
     }

@@ -5,14 +5,13 @@
 #include <array>
 #include <cmath>
 
+#include "sim/assets.h"
+
 namespace polyroll::render {
 
 Rgba material_colour(const std::string& preset) {
-    // Close to the real things, and distinct from the blue shell and the light inside.
-    if (preset == "bb") return rgb8(236, 170, 30);    // yellow-orange plastic BBs
-    if (preset == "peas") return rgb8(96, 160, 50);   // green peas
-    if (preset == "rice") return rgb8(250, 246, 228); // white rice (dark outline keeps it visible)
-    return rgb8(170, 120, 200);
+    const std::array<int, 3> rgb = assets::material_look(preset).rgb;
+    return rgb8(rgb[0], rgb[1], rgb[2]);
 }
 
 Rgba speed_colour(double t) {

@@ -40,7 +40,8 @@ inline constexpr Rgba inset_border = rgb8(60, 62, 66);
 inline constexpr Rgba inset_marker = rgb8(200, 40, 40);
 }  // namespace palette
 
-// Grain fill colour for a material preset (bb, peas, rice); a neutral colour for anything else.
+// Grain fill colour for a material preset: its "look" in assets/materials.json (the file's custom
+// colour for grains that are no preset).
 Rgba material_colour(const std::string& preset);
 
 // A perceptually ordered map from dark violet (0) through teal to yellow (1); t is clamped.

@@ -8,14 +8,11 @@
 
 #include "render/ticks.h"
 #include "render/world_draw.h"
+#include "sim/assets.h"
 
 namespace polyroll::render {
 
-std::string material_label(const std::string& preset) {
-    if (preset == "bb") return "BBs";
-    if (preset.empty()) return "custom grains";
-    return preset;
-}
+std::string material_label(const std::string& preset) { return assets::material_look(preset).label; }
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 namespace polyroll::render {
 
-// How the panel names a material preset ("BBs", "peas", ...).
+// How the panel names a material preset ("BBs", "peas", ...): its "look" in assets/materials.json.
 std::string material_label(const std::string& preset);
 
 void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out);

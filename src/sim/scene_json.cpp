@@ -15,6 +15,8 @@
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
+#include "sim/scene_fields.h"
+#include "sim/scene_names.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll {
@@ -22,73 +24,58 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-// Each section's numeric fields, in output order: one table serves reading, writing and the list
-// of allowed keys. Fields with their own form (preset names, release.pose, run.model, run.seed)
-// are handled by name.
-template <class S>
-struct Field {
-    const char* key;
-    std::variant<double S::*, int S::*, std::optional<double> S::*> member;
+
+// The sections of a scene file, from the field table: their paths, preset kinds and keys.
+struct Section {
+    std::string path;                  // "shell", "fill", "fill.material"
+    std::optional<assets::Kind> kind;  // sections that may name a preset
+    std::vector<std::string> keys;     // field keys and subsection names, in file order (not "preset")
 };
-const std::vector<Field<ShellParams>> kShellFields = {
-    {"sides", &ShellParams::sides},
-    {"inner_circumradius_m", &ShellParams::inner_circumradius_m},
-    {"wall_thickness_m", &ShellParams::wall_thickness_m},
-    {"depth_m", &ShellParams::depth_m},
-    {"lid_thickness_m", &ShellParams::lid_thickness_m},
-    {"mass_kg", &ShellParams::mass_kg},
-    {"lid_mass_fraction", &ShellParams::lid_mass_fraction}};
-const std::vector<Field<MaterialParams>> kMaterialFields = {
-    {"diameter_m", &MaterialParams::diameter_m},
-    {"diameter_spread", &MaterialParams::diameter_spread},
-    {"bulk_density_kg_m3", &MaterialParams::bulk_density_kg_m3},
-    {"friction", &MaterialParams::friction},
-    {"wall_friction", &MaterialParams::wall_friction},
-    {"restitution", &MaterialParams::restitution}};
-const std::vector<Field<RampParams>> kRampFields = {{"length_m", &RampParams::length_m},
-                                                   {"friction", &RampParams::friction},
-                                                   {"restitution", &RampParams::restitution},
-                                                   {"angle_deg", &RampParams::angle_deg}};
-const std::vector<Field<ReleaseParams>> kReleaseFields = {{"tilt_deg", &ReleaseParams::tilt_deg}};
-const std::vector<Field<FidelityParams>> kFidelityFields = {
-    {"step_hz", &FidelityParams::step_hz},
-    {"substeps", &FidelityParams::substeps},
-    {"velocity_iterations", &FidelityParams::velocity_iterations},
-    {"position_iterations", &FidelityParams::position_iterations}};
-const std::vector<Field<RunParams>> kRunFields = {{"time_limit_s", &RunParams::time_limit_s},
-                                                  {"sample_hz", &RunParams::sample_hz},
-                                                  {"gravity_m_s2", &RunParams::gravity_m_s2},
-                                                  {"settle_time_s", &RunParams::settle_time_s},
-                                                  {"rest_speed_m_s", &RunParams::rest_speed_m_s},
-                                                  {"rest_time_s", &RunParams::rest_time_s}};
 
-template <class S>
-std::vector<std::string> keys_of(const std::vector<Field<S>>& fields, std::vector<std::string> extra = {}) {
-    for (const auto& f : fields) extra.emplace_back(f.key);
-    return extra;
-}
-const std::vector<std::string> kShellKeys = keys_of(kShellFields);
-const std::vector<std::string> kMaterialKeys = keys_of(kMaterialFields);
-const std::vector<std::string> kRampKeys = keys_of(kRampFields);
-const std::vector<std::string> kReleaseKeys = keys_of(kReleaseFields, {"pose"});
-const std::vector<std::string> kFidelityKeys = keys_of(kFidelityFields);
-const std::vector<std::string> kRunKeys = keys_of(kRunFields, {"model", "seed"});
-
-template <class S>
-void write_fields(json& out, const S& params, const std::vector<Field<S>>& fields) {
-    for (const auto& f : fields) {
-        std::visit(
-            [&](auto member) {
-                const auto& v = params.*member;
-                if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::optional<double>>)
-                    out[f.key] = v ? json(*v) : json(nullptr);
-                else
-                    out[f.key] = v;
-            },
-            f.member);
+std::vector<Section> make_sections() {
+    std::vector<Section> sections;
+    auto find = [&](std::string_view path) -> Section& {
+        for (Section& sec : sections)
+            if (sec.path == path) return sec;
+        sections.push_back({std::string(path), std::nullopt, {}});
+        // A subsection is a key of its parent.
+        if (const std::string_view parent = section_of(path); !parent.empty()) {
+            Section* p = nullptr;
+            for (Section& sec : sections)
+                if (sec.path == parent) p = &sec;
+            if (p == nullptr) throw std::logic_error("scene fields: a subsection before its section");
+            p->keys.emplace_back(key_of(path));
+        }
+        return sections.back();
+    };
+    for (const SceneField& f : scene_fields()) {
+        const std::string_view parent = section_of(f.path);
+        if (const std::string_view grand = section_of(parent); !grand.empty()) find(grand);
+        Section& sec = find(parent);
+        if (f.type == FieldType::preset) sec.kind = f.kind;
+        else sec.keys.emplace_back(key_of(f.path));
     }
+    return sections;
 }
-const std::vector<std::string> kSections = {"shell", "fill", "ramp", "release", "fidelity", "run"};
+
+const std::vector<Section>& sections() {
+    static const std::vector<Section> all = make_sections();
+    return all;
+}
+
+const Section* section_at(std::string_view path) {
+    for (const Section& sec : sections())
+        if (sec.path == path) return &sec;
+    return nullptr;
+}
+
+// The top-level sections, in file order: shell, fill, ramp, release, fidelity, run.
+std::vector<std::string> top_sections() {
+    std::vector<std::string> top;
+    for (const Section& sec : sections())
+        if (section_of(sec.path).empty()) top.push_back(sec.path);
+    return top;
+}
 
 // A value as it appears in a message: JSON text, short, and never throwing on strings that are not
 // UTF-8 (a command-line flag can hold any bytes; dump() would throw on them).
@@ -112,6 +99,7 @@ using Origins = std::map<std::string, std::string>;
 class Resolver {
 public:
     Resolver() {
+        for (const Section& sec : sections()) values_[sec.path] = json::object();
         const SceneLayer defaults{assets::default_scene_json(), "assets/defaults.json", {}};
         apply(defaults);
         layer_ = nullptr;  // `defaults` dies here: no pointer to it may outlive the constructor
@@ -121,96 +109,29 @@ public:
         layer_ = &layer;
         if (!layer.doc.is_object())
             throw InputError(fmt::format("{}: a scene must be a JSON object", layer.origin));
+        const std::vector<std::string> top = top_sections();
         for (const auto& [key, value] : layer.doc.items()) {
             if (key == "description") continue;  // free text for the file's author
             if (key == "scene" || key == "results")
                 throw InputError(fmt::format(
                     "{}: unknown key '{}' (a summary.json is not a scene; use its \"scene\" object as the file)",
                     layer.origin, key));
-            if (std::find(kSections.begin(), kSections.end(), key) == kSections.end())
-                throw InputError(fmt::format("{}: unknown key '{}' (allowed: {}, description)", layer.origin, key,
-                                             join(kSections)));
+            if (std::find(top.begin(), top.end(), key) == top.end())
+                throw InputError(
+                    fmt::format("{}: unknown key '{}' (allowed: {}, description)", layer.origin, key, join(top)));
         }
-        section(layer.doc, "shell", assets::Kind::polygon, kShellKeys, shell_);
-        section(layer.doc, "ramp", assets::Kind::ramp, kRampKeys, ramp_);
-        section(layer.doc, "fidelity", assets::Kind::fidelity, kFidelityKeys, fidelity_);
-        section(layer.doc, "release", std::nullopt, kReleaseKeys, release_);
-        section(layer.doc, "run", std::nullopt, kRunKeys, run_);
-        if (layer.doc.contains("fill")) {
-            const json& fill = layer.doc.at("fill");
-            if (!fill.is_object())
-                throw InputError(fmt::format("{}: fill must be an object with keys ratio, material, got {}",
-                                             layer.origin, shown(fill)));
-            for (const auto& [key, value] : fill.items()) {
-                if (key == "ratio") {
-                    fill_ratio_ = value;
-                    origins_["fill.ratio"] = label("fill.ratio");
-                } else if (key == "material") {
-                    section(fill, "material", assets::Kind::material, kMaterialKeys, material_, "fill.");
-                } else {
-                    throw InputError(
-                        fmt::format("{}: unknown key 'fill.{}' (allowed: ratio, material)", layer.origin, key));
-                }
-            }
-        }
+        for (const std::string& name : top)
+            if (layer.doc.contains(name)) section(layer.doc.at(name), *section_at(name));
     }
 
     Scene scene() const {
         Scene s;
-        s.shell.preset = shell_.value("preset", "");
-        read_fields(shell_, "shell", s.shell, kShellFields);
-        s.fill.ratio = number_value(fill_ratio_, "fill.ratio");
-        s.fill.material.preset = material_.value("preset", "");
-        read_fields(material_, "fill.material", s.fill.material, kMaterialFields);
-        s.ramp.preset = ramp_.value("preset", "");
-        read_fields(ramp_, "ramp", s.ramp, kRampFields);
-        read_fields(release_, "release", s.release, kReleaseFields);
-        s.fidelity.preset = fidelity_.value("preset", "");
-        read_fields(fidelity_, "fidelity", s.fidelity, kFidelityFields);
-        read_fields(run_, "run", s.run, kRunFields);
-
-        const json& pose = release_.at("pose");
-        if (pose == "vertex") s.release.pose = ReleasePose::vertex;
-        else if (pose == "face") s.release.pose = ReleasePose::face;
-        else throw InputError(fmt::format("release.pose = {}{} is not allowed (allowed: vertex, face)",
-                                          shown(pose), where("release.pose")));
-
-        const json& model = run_.at("model");
-        if (model == "grains") s.run.model = Model::grains;
-        else if (model == "segments") s.run.model = Model::segments;
-        else if (model == "rigid") s.run.model = Model::rigid;
-        else throw InputError(fmt::format("run.model = {}{} is not allowed (allowed: grains, segments, rigid)",
-                                          shown(model), where("run.model")));
-
-        const json& seed = run_.at("seed");
-        if (!seed.is_number_unsigned())
-            throw InputError(fmt::format("run.seed = {}{} must be a whole number from 0 to 2^64-1", shown(seed),
-                                         where("run.seed")));
-        s.run.seed = seed.get<std::uint64_t>();
-
+        for (const SceneField& f : scene_fields()) f.access.set(s, value_of(f));
         validate_scene(s, [this](const std::string& field) { return where(field); });
         return s;
     }
 
 private:
-    template <class S>
-    void read_fields(const json& sec, const std::string& path, S& out, const std::vector<Field<S>>& fields) const {
-        for (const auto& f : fields) {
-            std::visit(
-                [&](auto member) {
-                    auto& target = out.*member;
-                    using T = std::decay_t<decltype(target)>;
-                    if constexpr (std::is_same_v<T, int>)
-                        target = integer(sec, path, f.key);
-                    else if constexpr (std::is_same_v<T, std::optional<double>>)
-                        target = sec.at(f.key).is_null() ? std::nullopt : std::optional(number(sec, path, f.key));
-                    else
-                        target = number(sec, path, f.key);
-                },
-                f.member);
-        }
-    }
-
     std::string label(const std::string& field) const {
         for (const auto& [f, flag] : layer_->field_labels)
             if (f == field) return flag;
@@ -223,29 +144,33 @@ private:
         return fmt::format(" (from {})", it->second);
     }
 
-    // Applies doc[name] (a preset name, or an object with an optional "preset" and overrides).
-    void section(const json& doc, const std::string& name, std::optional<assets::Kind> kind,
-                 const std::vector<std::string>& keys, json& out, const std::string& prefix = "") {
-        if (!doc.contains(name)) return;
-        const std::string path = prefix + name;
-        json value = doc.at(name);
-        if (value.is_string() && kind) value = json{{"preset", value}};
-        if (!value.is_object())
-            throw InputError(fmt::format("{}: {} must be {}an object, got {}", layer_->origin, path,
-                                         kind ? "a preset name or " : "", shown(value)));
+    // Applies one section's value: a preset name, or an object with an optional "preset", its
+    // fields' values and its subsections.
+    void section(const json& given, const Section& sec) {
+        const std::string& path = sec.path;
+        json value = given;
+        if (value.is_string() && sec.kind) value = json{{"preset", value}};
+        if (!value.is_object()) {
+            // A section without presets says which keys it holds (fill: ratio, material).
+            throw InputError(fmt::format("{}: {} must be {}, got {}", layer_->origin, path,
+                                         sec.kind ? "a preset name or an object"
+                                                  : fmt::format("an object with keys {}", join(sec.keys)),
+                                         shown(value)));
+        }
+        json& out = values_.at(path);
         if (value.contains("preset")) {
-            if (!kind)
+            if (!sec.kind)
                 throw InputError(fmt::format("{}: unknown key '{}.preset' (allowed: {})", layer_->origin, path,
-                                             join(keys)));
+                                             join(sec.keys)));
             const json& p = value.at("preset");
             if (!p.is_string())
                 throw InputError(fmt::format("{}: {}.preset must be a preset name, got {}", layer_->origin, path,
                                              shown(p)));
             const std::string preset = p.get<std::string>();
             try {
-                for (const auto& [k, v] : assets::preset_values(*kind, preset).items()) {
+                for (const auto& [k, v] : assets::preset_values(*sec.kind, preset).items()) {
                     out[k] = v;
-                    origins_[path + "." + k] = fmt::format("{} preset '{}'", assets::kind_label(*kind), preset);
+                    origins_[path + "." + k] = fmt::format("{} preset '{}'", assets::kind_label(*sec.kind), preset);
                 }
             } catch (const InputError& e) {
                 throw InputError(fmt::format("{}: {}", label(path + ".preset"), e.what()));
@@ -254,15 +179,51 @@ private:
         }
         for (const auto& [k, v] : value.items()) {
             if (k == "preset") continue;
-            if (std::find(keys.begin(), keys.end(), k) == keys.end())
+            if (std::find(sec.keys.begin(), sec.keys.end(), k) == sec.keys.end())
                 throw InputError(fmt::format("{}: unknown key '{}.{}' (allowed: {}{})", layer_->origin, path, k,
-                                             kind ? "preset, " : "", join(keys)));
+                                             sec.kind ? "preset, " : "", join(sec.keys)));
+            if (const Section* sub = section_at(path + "." + k)) {
+                section(v, *sub);
+                continue;
+            }
             out[k] = v;
             origins_[path + "." + k] = label(path + "." + k);
         }
     }
 
-    double number_value(const json& v, const std::string& field) const {
+    // The field's resolved value, checked for its type (its range is validate_scene's).
+    FieldValue value_of(const SceneField& f) const {
+        const std::string field(f.path);
+        const json& sec = values_.at(std::string(section_of(f.path)));
+        const std::string key(key_of(f.path));
+        if (f.type == FieldType::preset) return sec.value("preset", "");
+        if (!sec.contains(key))  // only when a replaced assets/defaults.json leaves a field out
+            throw InputError(fmt::format("{} is not set (assets/defaults.json must give every field)", field));
+        const json& v = sec.at(key);
+        switch (f.type) {
+            case FieldType::integer: return integer(v, field);
+            case FieldType::number: return number(v, field);
+            case FieldType::optional_number: return v.is_null() ? std::nullopt : std::optional(number(v, field));
+            case FieldType::seed:
+                if (!v.is_number_unsigned())
+                    throw InputError(fmt::format("{} = {}{} must be a whole number from 0 to 2^64-1", field, shown(v),
+                                                 where(field)));
+                return v.get<std::uint64_t>();
+            case FieldType::choice: return choice(f, v);
+            case FieldType::preset: break;
+        }
+        return {};
+    }
+
+    FieldValue choice(const SceneField& f, const json& v) const {
+        const std::string field(f.path);
+        if (v.is_string() && f.choice_named)
+            if (auto value = f.choice_named(v.get<std::string>())) return *value;
+        throw InputError(fmt::format("{} = {}{} is not allowed (allowed: {})", field, shown(v), where(field),
+                                     join(field_choices(f))));
+    }
+
+    double number(const json& v, const std::string& field) const {
         if (!v.is_number())
             throw InputError(fmt::format("{} = {}{} must be a number", field, shown(v), where(field)));
         const double d = v.get<double>();
@@ -270,12 +231,7 @@ private:
             throw InputError(fmt::format("{} = {}{} must be a finite number", field, shown(v), where(field)));
         return d;
     }
-    double number(const json& sec, const std::string& path, const std::string& key) const {
-        return number_value(sec.at(key), path + "." + key);
-    }
-    int integer(const json& sec, const std::string& path, const std::string& key) const {
-        const json& v = sec.at(key);
-        const std::string field = path + "." + key;
+    int integer(const json& v, const std::string& field) const {
         if (!v.is_number_integer())
             throw InputError(fmt::format("{} = {}{} must be a whole number", field, shown(v), where(field)));
         const auto i = v.get<std::int64_t>();
@@ -285,9 +241,7 @@ private:
     }
 
     const SceneLayer* layer_ = nullptr;
-    json shell_ = json::object(), ramp_ = json::object(), fidelity_ = json::object();
-    json release_ = json::object(), run_ = json::object(), material_ = json::object();
-    json fill_ratio_;
+    std::map<std::string, json> values_;  // each section's resolved values, by its path
     Origins origins_;
 };
 
@@ -372,42 +326,34 @@ Scene resolve_scene(const std::vector<SceneLayer>& layers) {
     return r.scene();
 }
 
-std::string to_string(ReleasePose pose) { return pose == ReleasePose::vertex ? "vertex" : "face"; }
-
-std::string to_string(Model model) {
-    switch (model) {
-        case Model::grains: return "grains";
-        case Model::segments: return "segments";
-        case Model::rigid: return "rigid";
-    }
-    return "unknown";
-}
-
 nlohmann::ordered_json scene_to_json(const Scene& s) {
-    auto section = [](const std::string& preset) {
-        json sec = json::object();
-        if (!preset.empty()) sec["preset"] = preset;
-        return sec;
-    };
-    json j;
-    json shell = section(s.shell.preset);
-    write_fields(shell, s.shell, kShellFields);
-    j["shell"] = shell;
-    json material = section(s.fill.material.preset);
-    write_fields(material, s.fill.material, kMaterialFields);
-    j["fill"] = json{{"ratio", s.fill.ratio}, {"material", material}};
-    json ramp = section(s.ramp.preset);
-    write_fields(ramp, s.ramp, kRampFields);
-    j["ramp"] = ramp;
-    json release = json{{"pose", to_string(s.release.pose)}};
-    write_fields(release, s.release, kReleaseFields);
-    j["release"] = release;
-    json fidelity = section(s.fidelity.preset);
-    write_fields(fidelity, s.fidelity, kFidelityFields);
-    j["fidelity"] = fidelity;
-    json run = json{{"model", to_string(s.run.model)}, {"seed", s.run.seed}};
-    write_fields(run, s.run, kRunFields);
-    j["run"] = run;
+    json j = json::object();
+    for (const SceneField& f : scene_fields()) {
+        // "a.b.c" -> j["a"]["b"]["c"]; sections appear in the table's order.
+        json* node = &j;
+        const std::string_view sec = section_of(f.path);
+        size_t start = 0;
+        for (size_t dot = sec.find('.'); start <= sec.size(); dot = sec.find('.', start)) {
+            if (dot == std::string_view::npos) dot = sec.size();
+            node = &(*node)[std::string(sec.substr(start, dot - start))];
+            start = dot + 1;
+        }
+        const std::string key(key_of(f.path));
+        std::visit(
+            [&](const auto& v) {
+                using V = std::decay_t<decltype(v)>;
+                if constexpr (std::is_same_v<V, std::string>) {
+                    if (!v.empty()) (*node)[key] = v;  // a preset name only when there is one
+                } else if constexpr (std::is_same_v<V, std::optional<double>>) {
+                    (*node)[key] = v ? json(*v) : json(nullptr);
+                } else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model>) {
+                    (*node)[key] = to_string(v);
+                } else {
+                    (*node)[key] = v;
+                }
+            },
+            f.access.get(s));
+    }
     return j;
 }
 

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/scene.h"
+#include "sim/scene_names.h"  // to_string of the enums, for the files that name them
 
 namespace polyroll {
 
@@ -38,8 +39,5 @@ Scene resolve_scene(const std::vector<SceneLayer>& layers);
 
 // The fully resolved scene in the same format: feeding it back resolves to the same Scene.
 nlohmann::ordered_json scene_to_json(const Scene& scene);
-
-std::string to_string(ReleasePose pose);
-std::string to_string(Model model);
 
 }  // namespace polyroll

@@ -1,5 +1,5 @@
-// Range checks for a resolved scene. Every limit lives here, and every message names the field, the
-// bad value and the allowed range.
+// Range checks for a resolved scene. The limits are the rows of scene_fields.h; every message names the
+// field, the bad value and the allowed range.
 #pragma once
 
 #include <functional>

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/assets.h"
 #include "sim/scene_json.h"
 #include "sim/shell_properties.h"
 #include "sweep/grid_values.h"
@@ -28,7 +29,10 @@ const std::vector<std::pair<double, std::string>> kFills = {{0.0, "bb"}, {0.5, "
 // docs/sweeps.md). Plus the third behaviour's scene, the half-full BB hexagon at 20 degrees.
 const std::vector<double> kAngles = {12.0, 24.0};
 const std::vector<std::string> kPresets = {"draft", "standard", "precise", "reference"};
-const std::map<std::string, double> kDiameters = {{"bb", 0.006}, {"rice", 0.0034}};  // assets/materials.json
+// A material preset's grain diameter, as assets/materials.json gives it.
+double diameter_m(const std::string& material) {
+    return assets::preset_values(assets::Kind::material, material).at("diameter_m").get<double>();
+}
 
 struct Variant {
     std::string model, preset, kind;  // kind: "", "halved", "coarse x1.5", "coarse x2", "seed 2"
@@ -89,7 +93,7 @@ SweepPlan tradeoff_plan() {
             // The same fill mass (r x volume x bulk density) in fewer, larger grains.
             for (double k : {1.5, 2.0})
                 with({{"run.model", "grains"}, {"fidelity.preset", "standard"},
-                      {"fill.material.diameter_m", kDiameters.at(material) * k}, {"run.seed", 1u}});
+                      {"fill.material.diameter_m", diameter_m(material) * k}, {"run.seed", 1u}});
         }
         // The reduced models integrate to rounding error: the fidelity preset does not change them.
         for (const char* model : {"rigid", "segments"})
@@ -113,7 +117,7 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
         if (p.contains("fidelity.substeps")) row.v.kind = "halved";
         if (p.contains("fill.material.diameter_m")) {
             const double k = p.at("fill.material.diameter_m").get<double>() /
-                             kDiameters.at(p.at("fill.material.preset").get<std::string>());
+                             diameter_m(p.at("fill.material.preset").get<std::string>());
             row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
         }
         if (p.at("run.seed") != 1) row.v.kind = "seed " + p.at("run.seed").dump();

@@ -1,0 +1,60 @@
+// The scene's enumeration names: see scene_names.h.
+#include "sim/scene_names.h"
+
+#include <array>
+#include <utility>
+
+namespace polyroll {
+namespace {
+
+// Each enum value beside its name; the lists below and the lookups are built from these alone.
+constexpr std::array<std::pair<ReleasePose, std::string_view>, 2> kPoses = {{
+    {ReleasePose::vertex, "vertex"},
+    {ReleasePose::face, "face"},
+}};
+constexpr std::array<std::pair<Model, std::string_view>, 3> kModels = {{
+    {Model::grains, "grains"},
+    {Model::segments, "segments"},
+    {Model::rigid, "rigid"},
+}};
+
+template <class E, std::size_t N>
+std::string name_of(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
+    for (const auto& [v, name] : table)
+        if (v == value) return std::string(name);
+    return "unknown";
+}
+
+template <class E, std::size_t N>
+std::vector<std::string> names_of(const std::array<std::pair<E, std::string_view>, N>& table) {
+    std::vector<std::string> names;
+    names.reserve(N);
+    for (const auto& entry : table) names.emplace_back(entry.second);
+    return names;
+}
+
+template <class E, std::size_t N>
+std::optional<E> value_named(const std::array<std::pair<E, std::string_view>, N>& table, std::string_view name) {
+    for (const auto& [v, n] : table)
+        if (n == name) return v;
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string to_string(ReleasePose pose) { return name_of(kPoses, pose); }
+std::string to_string(Model model) { return name_of(kModels, model); }
+
+const std::vector<std::string>& release_pose_names() {
+    static const std::vector<std::string> names = names_of(kPoses);
+    return names;
+}
+const std::vector<std::string>& model_names() {
+    static const std::vector<std::string> names = names_of(kModels);
+    return names;
+}
+
+std::optional<ReleasePose> release_pose_named(std::string_view name) { return value_named(kPoses, name); }
+std::optional<Model> model_named(std::string_view name) { return value_named(kModels, name); }
+
+}  // namespace polyroll

@@ -1,0 +1,25 @@
+// The names of the scene's enumerations, as scene files, flags, tables and the panel write them: one
+// list per enum, in the enum's order, so no other file keeps an array that must match an enum.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/scene.h"
+
+namespace polyroll {
+
+std::string to_string(ReleasePose pose);
+std::string to_string(Model model);
+
+// Every value's name, in the enum's order: "vertex", "face" / "grains", "segments", "rigid".
+const std::vector<std::string>& release_pose_names();
+const std::vector<std::string>& model_names();
+
+// The value named `name`, or nothing for a name not in the list.
+std::optional<ReleasePose> release_pose_named(std::string_view name);
+std::optional<Model> model_named(std::string_view name);
+
+}  // namespace polyroll

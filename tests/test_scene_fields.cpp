@@ -1,0 +1,102 @@
+// The scene field table (sim/scene_fields.h): it names every field the scene files hold, in their
+// order; its limits give the messages validation has always given; its flags are unique.
+#include <catch2/catch.hpp>
+
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/errors.h"
+#include "sim/scene_fields.h"
+#include "sim/scene_json.h"
+#include "sim/scene_names.h"
+#include "test_helpers.h"
+
+using namespace polyroll;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+void leaf_paths(const json& j, const std::string& prefix, std::vector<std::string>& out) {
+    for (const auto& [k, v] : j.items()) {
+        const std::string path = prefix.empty() ? k : prefix + "." + k;
+        if (v.is_object()) leaf_paths(v, path, out);
+        else out.push_back(path);
+    }
+}
+
+std::string error_of(const std::string& doc) {
+    try {
+        test::scene_with(json::parse(doc));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("the field table holds every field of a scene file, in its order", "[scene][fields]") {
+    std::vector<std::string> written;
+    leaf_paths(scene_to_json(resolve_scene({})), "", written);
+    std::vector<std::string> table;
+    for (const SceneField& f : scene_fields()) table.emplace_back(f.path);
+    CHECK(written == table);
+    // Each field round-trips through its accessor.
+    const Scene s = resolve_scene({});
+    for (const SceneField& f : scene_fields()) {
+        Scene copy;
+        f.access.set(copy, f.access.get(s));
+        CHECK(f.access.get(copy) == f.access.get(s));
+    }
+}
+
+TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scene][fields]") {
+    std::set<std::string_view> flags;
+    std::vector<int> axes;
+    for (const SceneField& f : scene_fields()) {
+        if (!f.flag.empty()) CHECK(flags.insert(f.flag).second);
+        if (f.sweep_axis > 0) axes.push_back(f.sweep_axis);
+        CHECK(!f.help.empty());
+        if (f.type == FieldType::preset) CHECK(f.kind.has_value());
+        if (f.type == FieldType::choice) CHECK((f.choice_names && f.choice_named));
+    }
+    std::sort(axes.begin(), axes.end());
+    for (size_t i = 0; i < axes.size(); ++i) CHECK(axes[i] == static_cast<int>(i) + 1);
+    CHECK(scene_field("run.model").sweep_axis == 1);
+    CHECK(field_help(scene_field("shell.sides")).find("3 to 64") != std::string::npos);
+    CHECK(field_help(scene_field("fill.material.preset")).find("bb, rice, peas") != std::string::npos);
+    CHECK(field_help(scene_field("run.model")).find("grains, segments, rigid") != std::string::npos);
+}
+
+TEST_CASE("the enumerations' names, one list each", "[scene][fields]") {
+    CHECK(model_names() == std::vector<std::string>{"grains", "segments", "rigid"});
+    CHECK(release_pose_names() == std::vector<std::string>{"vertex", "face"});
+    for (const std::string& n : model_names()) CHECK(to_string(*model_named(n)) == n);
+    for (const std::string& n : release_pose_names()) CHECK(to_string(*release_pose_named(n)) == n);
+    CHECK(!model_named("fluid"));
+}
+
+TEST_CASE("validation messages from the table are the ones the code always gave", "[scene][fields][bad-input]") {
+    CHECK(error_of(R"({"shell": {"sides": 2}})") == "shell.sides = 2 (from test) is out of range (allowed: 3 to 64)");
+    CHECK(error_of(R"({"fill": {"ratio": 1.5}})") == "fill.ratio = 1.5 (from test) is out of range (allowed: from 0 to 1)");
+    CHECK(error_of(R"({"ramp": {"angle_deg": 90}})") ==
+          "ramp.angle_deg = 90 (from test) is out of range (allowed: from 0 to 89 degrees)");
+    CHECK(error_of(R"({"shell": {"wall_thickness_m": 0}})") ==
+          "shell.wall_thickness_m = 0 (from test) is out of range (allowed: above 0 to 0.0168 m)");
+    CHECK(error_of(R"({"shell": {"lid_mass_fraction": 1}})") ==
+          "shell.lid_mass_fraction = 1 (from test) is out of range (allowed: from 0 to 1, exclusive)");
+    CHECK(error_of(R"({"run": {"sample_hz": 5000}})") ==
+          "run.sample_hz = 5000 (from test) is out of range (allowed: above 0 to 1000 Hz (at most fidelity.step_hz))");
+    CHECK(error_of(R"({"ramp": {"length_m": 0.1}})").starts_with("ramp.length_m = 0.1 (from test) is out of range (allowed: from 0.1"));
+    // A limit that reads another field comes after it: a bad spread is named, not the diameter.
+    CHECK(error_of(R"({"fill": {"material": {"diameter_spread": -5}}})") ==
+          "fill.material.diameter_spread = -5 (from test) is out of range (allowed: from 0 to 0.5)");
+    // The checks across fields, after their section.
+    CHECK(error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})")
+              .starts_with("release.tilt_deg = 10 (from test) is too large for n = 64 at 20 degrees"));
+    CHECK(error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face)");
+    CHECK(error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, got 5");
+    CHECK(error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material)");
+    CHECK(error_of(R"({"shell": {"sidez": 6}})").starts_with("test: unknown key 'shell.sidez' (allowed: preset, sides, "));
+}
