@@ -92,7 +92,7 @@ TEST_CASE("a headless render writes the expected PNG frames with the shell where
     Simulation sim(scene);
     while (sim.step()) {
     }
-    const Snapshot snap = take_snapshot(sim);
+    const Snapshot snap = sim.snapshot();
     const FrameOptions options = options_for_run(st.frame, res.run);
     const FontAtlas font(find_font_dir(), frame_fonts(options));
     const DrawList dl = build_frame(snap, options, font);

@@ -3,6 +3,7 @@
 // gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "sim/fill_plan.h"
 #include "sim/geometry.h"
 #include "sim/scene.h"
+#include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
 namespace polyroll {
@@ -28,6 +30,12 @@ private:
 };
 
 enum class BodyKind : uintptr_t { ramp = 1, shell = 2, grain = 3 };
+
+struct SimWorld;
+// Called before every engine step (fidelity.substeps per tracker step, settling included) with the
+// engine step in seconds: where forces the contacts do not give (for example grain friction on the
+// lids) are applied to the bodies.
+using ForceHook = std::function<void(SimWorld& world, double engine_step_s)>;
 
 struct SimWorld {
     Scene scene;
@@ -48,20 +56,20 @@ struct SimWorld {
     b2Body* ramp = nullptr;
     b2Body* shell = nullptr;
     std::vector<b2Body*> grains;
+    std::vector<ForceHook> force_hooks;
 
-    // One tracker step: fidelity.substeps engine steps.
+    // One tracker step: fidelity.substeps engine steps, each after the force hooks.
     void step();
 };
 
-// The release pose of the shell: its angle (rad, counter-clockwise; rolling down is clockwise) and
-// the position of its centre, in metres, in the ramp frame.
-struct Pose {
-    double angle_rad = 0.0;
-    geom::Vec2 centre_m;
-};
-Pose release_pose(const Scene& scene, const ShellProperties& shell);
+// Builds the world, settles the grains with the shell held, then frees the shell (at rest). The
+// hooks act from the first settling step on.
+std::unique_ptr<SimWorld> build_world(const Scene& scene, std::vector<ForceHook> hooks = {});
 
-// Builds the world, settles the grains with the shell held, then frees the shell (at rest).
-std::unique_ptr<SimWorld> build_world(const Scene& scene);
+// The world of a run another model began: the shell in `shell`'s pose and moving with it, the grains
+// (if any) poured unsettled in its frame and moving with it; positions are measured from the release
+// centre `start_centre_x_m`.
+std::unique_ptr<SimWorld> build_world_from(const Scene& scene, const ShellState& shell, double start_centre_x_m,
+                                           std::vector<ForceHook> hooks = {});
 
 }  // namespace polyroll
