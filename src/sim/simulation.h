@@ -3,10 +3,10 @@
 // tracker(), which only sim/ and the tests look into.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <vector>
 
+#include "sim/force_hook.h"
 #include "sim/model_run.h"
 #include "sim/run_result.h"
 #include "sim/scene.h"
@@ -15,7 +15,6 @@ namespace polyroll {
 
 struct SimWorld;
 class Tracker;
-using ForceHook = std::function<void(SimWorld& world, double engine_step_s)>;
 
 class Simulation final : public ModelRun {
 public:

@@ -3,7 +3,6 @@
 // gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -11,6 +10,7 @@
 
 #include "sim/engine_units.h"
 #include "sim/fill_plan.h"
+#include "sim/force_hook.h"
 #include "sim/geometry.h"
 #include "sim/scene.h"
 #include "sim/shell_pose.h"
@@ -31,11 +31,6 @@ private:
 
 enum class BodyKind : uintptr_t { ramp = 1, shell = 2, grain = 3 };
 
-struct SimWorld;
-// Called before every engine step (fidelity.substeps per tracker step, settling included) with the
-// engine step in seconds: where forces the contacts do not give (for example grain friction on the
-// lids) are applied to the bodies.
-using ForceHook = std::function<void(SimWorld& world, double engine_step_s)>;
 
 struct SimWorld {
     Scene scene;
