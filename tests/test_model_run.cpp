@@ -184,3 +184,22 @@ TEST_CASE("a reduced model cannot yet carry on another model's run", "[models][h
     a->step();
     CHECK_THROWS_AS(continue_run(with_model(s, Model::rigid), a->hand_over()), InputError);
 }
+
+TEST_CASE("a filled shell handed over from the rigid model pours its grains moving with the shell", "[runs][handover]") {
+    // The grains are poured unsettled in the shell's frame at the hand-over pose, moving with it as
+    // one rigid body (the rigid model's frozen fill); they settle as the run goes on.
+    const Scene grains = test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.8}}}});
+    const Scene rigid = with_model(grains, Model::rigid);
+    std::unique_ptr<ModelRun> a = start_run(rigid);
+    while (a->steps() < 500 && a->step()) {
+    }
+    REQUIRE(a->steps() == 500);
+    std::unique_ptr<ModelRun> b = continue_run(grains, a->hand_over());
+    REQUIRE(b->grains() > 0);
+    const RunSnapshot s = b->snapshot();
+    CHECK(s.now.speed_m_s == Approx(a->snapshot().now.speed_m_s).margin(1e-4));
+    while (b->step()) {
+    }
+    CHECK(b->measured().behaviour != Behaviour::diverged);
+    CHECK(b->measured().grains_inside == b->grains());
+}
