@@ -1,6 +1,8 @@
 // Builds the Box2D world of a scene: the ramp, the shell and its grains, settled in the release pose
-// and ready to let go. The engine works in the ramp's frame: x down the slope, y along its normal,
-// gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
+// and ready to let go (or, for a run handed over from another model, moving as that model left it),
+// from the parts in world_parts.h. The engine works in the ramp's frame: x down the slope, y along its
+// normal, gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
+// Internal to sim/: outside it, runs are ModelRuns (model_run.h) and nothing names a Box2D type.
 #pragma once
 
 #include <memory>
