@@ -30,8 +30,8 @@
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
 #include "sim/shell_properties.h"
-#include "sim/world_builder.h"
 #include "sim/scene_json.h"
+#include "sim/shell_pose.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -331,7 +331,7 @@ TEST_CASE("lanes build in the background, start together and step together withi
 TEST_CASE("a reduced model's playback turns the polygon on its lowest vertex", "[app]") {
     const Scene s = test::scene_with(json::parse(R"({"run": {"model": "rigid"}})"));
     const ShellPose p0 = rolling_pose(s, 0.0, 0.0);
-    const Pose release = release_pose(s, shell_properties(s.shell));
+    const ShellPose release = release_pose(s, shell_properties(s.shell));
     CHECK(p0.angle_rad == Approx(release.angle_rad));
     CHECK(p0.centre_m.x == Approx(release.centre_m.x));
     CHECK(p0.centre_m.y == Approx(release.centre_m.y).margin(1e-9));

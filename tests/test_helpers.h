@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/model_registry.h"
 #include "sim/scene.h"
 #include "sim/scene_json.h"
 #include "sim/simulation.h"

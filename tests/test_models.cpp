@@ -12,7 +12,7 @@
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
 #include "sim/shell_properties.h"
-#include "sim/simulation.h"
+#include "sim/model_registry.h"
 #include "sim/world_builder.h"
 
 using namespace polyroll;
@@ -289,7 +289,7 @@ TEST_CASE("the reduced models start where the grain simulation's shell starts", 
             const Scene s = scene_with({{"shell", {{"sides", n}}}, {"release", {{"pose", pose}, {"tilt_deg", 2.0}}},
                                         {"run", {{"model", "rigid"}}}});
             const ShellProperties sp = shell_properties(s.shell);
-            const Pose p = release_pose(s, sp);
+            const ShellPose p = release_pose(s, sp);
             // The rigid model measures from the release centre: reconstruct it from its own geometry.
             const models::RollingTrack t = models::rolling_track(s);
             CHECK(t.start_rotation_rad == Approx(-p.angle_rad));

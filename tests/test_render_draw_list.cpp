@@ -15,6 +15,7 @@
 #include "render/world_draw.h"
 #include "sim/geometry.h"
 #include "sim/simulation.h"
+#include "sim/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -277,7 +278,7 @@ TEST_CASE("a snapshot copies the simulation's state in metres", "[render]") {
     Simulation sim(scene);
     while (sim.step()) {
     }
-    const Snapshot s = take_snapshot(sim);
+    const Snapshot s = sim.snapshot();
     const SimWorld& w = sim.world();
     CHECK(s.sides == scene.shell.sides);
     CHECK(s.grains.size() == w.grains.size());

@@ -19,6 +19,7 @@
 #include "render/png_writer.h"
 #include "render/render_sequence.h"
 #include "render/snapshot.h"
+#include "sim/shell_pose.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -92,7 +93,7 @@ TEST_CASE("a headless render writes the expected PNG frames with the shell where
     Simulation sim(scene);
     while (sim.step()) {
     }
-    const Snapshot snap = take_snapshot(sim);
+    const Snapshot snap = sim.snapshot();
     const FrameOptions options = options_for_run(st.frame, res.run);
     const FontAtlas font(find_font_dir(), frame_fonts(options));
     const DrawList dl = build_frame(snap, options, font);
@@ -247,4 +248,34 @@ TEST_CASE("render with --video but no ffmpeg says how to get it and still writes
     CHECK(fs::exists(base / "f" / frame_file_name(1)));
     CHECK(fs::exists(base / "f" / "summary.json"));
     CHECK(!fs::exists(base / "v.mp4"));
+}
+
+TEST_CASE("polyroll render plays every model: the reduced models' frames turn the polygon as they compute", "[render][cli][models]") {
+    const fs::path base = scratch("models");
+    for (const char* model : {"segments", "rigid"}) {
+        INFO(model);
+        const std::string scene = std::string("--time-limit 1 --model ") + model;
+        const fs::path run_dir = base / (std::string(model) + "-run"), frames = base / model;
+        REQUIRE(run_cli("run " + scene + " --out " + run_dir.string()).exit_code == 0);
+        const Cli render = run_cli("render " + scene + " --size 160x90 --fps 10 --hold 0 --out " + frames.string());
+        INFO(render.out);
+        REQUIRE(render.exit_code == 0);
+        // 1 s at 10 frames/s: frames at 0, 0.1, ..., 1 s.
+        CHECK(fs::exists(frames / frame_file_name(11)));
+        CHECK(!fs::exists(frames / frame_file_name(12)));
+        for (const char* f : {"trajectory.csv", "impacts.csv"})
+            CHECK(polyroll::test::read_file(run_dir / f) == polyroll::test::read_file(frames / f));
+        // The polygon moves between the first frame and the last.
+        CHECK(polyroll::test::read_file(frames / frame_file_name(1)) != polyroll::test::read_file(frames / frame_file_name(11)));
+    }
+    // The frame shows the shell where the model puts it: the snapshot's pose is the rolling pose.
+    Scene s = test::scene_with({{"run", {{"model", "segments"}, {"time_limit_s", 1.0}}}});
+    std::unique_ptr<ModelRun> run = start_run(s);
+    while (run->step()) {
+    }
+    const Snapshot snap = run->snapshot();
+    const ShellPose pose = rolling_pose(s, snap.now.position_m, snap.now.angle_deg);
+    CHECK(snap.shell_centre_m.x == Approx(pose.centre_m.x));
+    CHECK(snap.shell_angle_rad == Approx(pose.angle_rad));
+    CHECK(snap.now.position_m == Approx(run->measured().distance_m));
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.h"
+#include "sim/run_result.h"
 
 namespace polyroll::app {
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "app/divergence.h"
+#include "sim/model_registry.h"
 
 namespace polyroll::app {
 
@@ -18,7 +19,7 @@ void LaneSet::rebuild(const std::vector<Scene>& scenes) {
     build_error_.clear();
     trouble_.reset();
     for (const Scene& s : scenes)
-        pending_.push_back(std::async(std::launch::async, [s] { return make_lane_run(s); }));
+        pending_.push_back(std::async(std::launch::async, [s] { return start_run(s); }));
 }
 
 void LaneSet::wait_until_built() {
@@ -32,7 +33,7 @@ bool LaneSet::poll() {
     for (auto& f : pending_)
         if (f.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
     // All built: the lanes start together.
-    std::vector<std::unique_ptr<LaneRun>> built;
+    std::vector<std::unique_ptr<ModelRun>> built;
     for (auto& f : pending_) {
         try {
             built.push_back(f.get());

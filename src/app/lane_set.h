@@ -1,6 +1,7 @@
-// The lanes of the sandbox: one to four runs built on worker threads (thousands of grains take
-// seconds to pour and settle, and the window must keep answering), started together once all are
-// built, and stepped together in fixed steps up to the clock's target within a wall-time budget.
+// The lanes of the sandbox: one to four runs of any model (ModelRun, from the model registry) built
+// on worker threads (thousands of grains take seconds to pour and settle, and the window must keep
+// answering), started together once all are built, and stepped together in fixed steps up to the
+// clock's target within a wall-time budget.
 // Numerical trouble in any lane (the tracker's divergence, or a non-finite state) stops them all
 // with a message and a suggestion.
 #pragma once
@@ -12,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "app/lane_run.h"
+#include "sim/model_run.h"
 #include "sim/scene.h"
 
 namespace polyroll::app {
@@ -39,8 +40,8 @@ public:
     const std::string& build_error() const { return build_error_; }
 
     size_t size() const { return lanes_.size(); }
-    LaneRun& lane(size_t i) { return *lanes_[i]; }
-    const LaneRun& lane(size_t i) const { return *lanes_[i]; }
+    ModelRun& lane(size_t i) { return *lanes_[i]; }
+    const ModelRun& lane(size_t i) const { return *lanes_[i]; }
 
     // Steps every unfinished lane until it reaches target_s, round robin so that all move together,
     // stopping early when now() - start passes budget_s. Does nothing while troubled.
@@ -58,10 +59,10 @@ public:
     void report_non_finite(size_t i);
 
 private:
-    std::vector<std::unique_ptr<LaneRun>> lanes_;
-    std::vector<std::future<std::unique_ptr<LaneRun>>> pending_;
+    std::vector<std::unique_ptr<ModelRun>> lanes_;
+    std::vector<std::future<std::unique_ptr<ModelRun>>> pending_;
     // Builds overtaken by a newer rebuild: kept until they finish so no thread is left behind.
-    std::vector<std::future<std::unique_ptr<LaneRun>>> abandoned_;
+    std::vector<std::future<std::unique_ptr<ModelRun>>> abandoned_;
     std::string build_error_;
     std::optional<std::string> trouble_;
 };

@@ -10,7 +10,8 @@
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/assets.h"
-#include "sim/simulation.h"
+#include "sim/bare_engine.h"
+#include "sim/model_registry.h"
 
 namespace polyroll::cli {
 
@@ -43,6 +44,7 @@ int bench(const BenchOptions& o) {
     std::optional<double> grain_run_s;  // at the scene's own fidelity, for the reduced models' speed-up
     for (const std::string& name : presets) {
         Scene s = base;
+        s.run.model = reference_model();  // fidelity is the engine's: the grain simulation's
         // The preset's values replace the fidelity; everything else stays.
         const auto& v = assets::preset_values(assets::Kind::fidelity, name);
         s.fidelity.preset = name;
@@ -55,20 +57,16 @@ int bench(const BenchOptions& o) {
         RunResult last;
         for (int rep = 0; rep < o.repeats; ++rep) {
             auto t0 = Clock::now();
-            Simulation sim(s);
+            const std::unique_ptr<ModelRun> run = start_run(s);
             best_build = std::min(best_build, seconds_since(t0));
             t0 = Clock::now();
-            while (sim.step()) {
-            }
+            run->run_to_end();
             best_run = std::min(best_run, seconds_since(t0));
-            steps = sim.steps();
-            last = sim.result();
+            steps = run->steps();
+            last = run->result();
 
             // The same bodies, stepped the same number of times with nothing watching.
-            std::unique_ptr<SimWorld> bare = build_world(s);
-            t0 = Clock::now();
-            for (long i = 0; i < steps; ++i) bare->step();
-            best_bare = std::min(best_bare, seconds_since(t0));
+            best_bare = std::min(best_bare, time_bare_engine_s(s, steps));
         }
         const double sim_s = static_cast<double>(steps) / s.fidelity.step_hz;
         if (name == base.fidelity.preset) grain_run_s = best_build + best_run;

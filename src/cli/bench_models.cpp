@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "sim/scene_json.h"
-#include "sim/simulation.h"
+#include "sim/model_registry.h"
 
 namespace polyroll::cli {
 
@@ -41,7 +41,7 @@ Timing time_model(const Scene& scene, int min_runs, double min_total_s) {
 
 void bench_models(const Scene& base, int repeats, std::optional<double> grain_run_s) {
     Scene grains = base;
-    grains.run.model = Model::grains;
+    grains.run.model = reference_model();
     Timing g;
     if (grain_run_s) {
         g.best_s = g.mean_s = *grain_run_s;
@@ -62,8 +62,9 @@ void bench_models(const Scene& base, int repeats, std::optional<double> grain_ru
                    to_string(t.last.measured.behaviour), t.last.model_valid ? "" : " (model invalid: would hop)");
         std::fflush(stdout);
     };
-    row("grains", g);
-    for (Model m : {Model::segments, Model::rigid}) {
+    row(to_string(grains.run.model).c_str(), g);
+    for (Model m : all_models()) {
+        if (m == grains.run.model) continue;
         Scene s = base;
         s.run.model = m;
         row(to_string(m).c_str(), time_model(s, kMinRuns, kMinTotalS));

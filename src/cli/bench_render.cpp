@@ -15,8 +15,7 @@
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/render_sequence.h"
-#include "render/snapshot.h"
-#include "sim/simulation.h"
+#include "sim/model_registry.h"
 
 namespace polyroll::cli {
 
@@ -32,10 +31,6 @@ constexpr double kFps = 30.0;
 }  // namespace
 
 void bench_rendering(const Scene& scene, int repeats) {
-    if (scene.run.model != Model::grains) {
-        fmt::print("rendering: skipped (only the grains model renders)\n");
-        return;
-    }
     render::SequenceSettings st;
     st.frame.width_px = kWidth;
     st.frame.height_px = kHeight;
@@ -48,22 +43,24 @@ void bench_rendering(const Scene& scene, int repeats) {
 
     // The stages alone, on this thread.
     {
-        const RunResult data = run_scene(scene);
+        std::unique_ptr<ModelRun> data_run = start_run(scene);
+        data_run->run_to_end();
+        const RunResult data = data_run->result();
         const render::FrameSchedule sched{kFps, kSlow, scene.fidelity.step_hz, 0.0};
-        const long frames = sched.run_frames(data.steps);
+        const long frames = sched.run_frames(data_run->steps());
         const render::FrameOptions options = render::options_for_run(st.frame, data);
         const render::FontAtlas font(render::find_font_dir(), render::frame_fonts(options));
         double best_sim = 1e300, best_list = 1e300;
         for (int rep = 0; rep < repeats; ++rep) {
-            Simulation sim(scene);
+            const std::unique_ptr<ModelRun> run = start_run(scene);
             double sim_s = 0.0, list_s = 0.0;
             for (long k = 0; k < frames; ++k) {
                 auto t0 = Clock::now();
-                while (sim.steps() < sched.step_for_frame(k) && sim.step()) {
+                while (run->steps() < sched.step_for_frame(k) && run->step()) {
                 }
                 sim_s += seconds_since(t0);
                 t0 = Clock::now();
-                const render::DrawList dl = render::build_frame(render::take_snapshot(sim), options, font);
+                const render::DrawList dl = render::build_frame(run->snapshot(), options, font);
                 list_s += seconds_since(t0);
             }
             best_sim = std::min(best_sim, sim_s);

@@ -12,8 +12,8 @@
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
 #include "sim/results_io.h"
+#include "sim/model_registry.h"
 #include "sim/scene_json.h"
-#include "sim/simulation.h"
 
 namespace polyroll::cli {
 
@@ -24,9 +24,6 @@ struct CompareOptions {
     std::string out;
     bool force = false;
 };
-
-// The grain simulation first: it is the reference the others are timed against.
-constexpr Model kModels[] = {Model::grains, Model::segments, Model::rigid};
 
 std::string optional_number(const std::optional<double>& v, const char* format) {
     return v ? fmt::format(fmt::runtime(format), *v) : std::string("-");
@@ -85,7 +82,7 @@ int compare(const CompareOptions& o) {
     if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
     std::vector<RunResult> runs;
     try {
-        for (Model model : kModels) {
+        for (Model model : all_models()) {  // the reference (grains) first: the others are timed against it
             Scene s = base;
             s.run.model = model;
             runs.push_back(run_scene(s));

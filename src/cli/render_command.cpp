@@ -190,9 +190,6 @@ int render(const RenderOptions& o) {
         ffmpeg = find_on_path("ffmpeg");
     }
     const Scene scene = o.scene.resolve();
-    if (scene.run.model != Model::grains)
-        throw InputError(fmt::format("--model {}: only the grains model can be rendered (allowed: grains)",
-                                     to_string(scene.run.model)));
     const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);
     if (!o.video.empty() && ffmpeg.empty())
         fmt::print(stderr, "polyroll: note: ffmpeg is not installed: the frames will be written, but no video (how "

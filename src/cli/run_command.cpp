@@ -6,9 +6,9 @@
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
+#include "sim/model_registry.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
-#include "sim/simulation.h"
 
 namespace polyroll::cli {
 
@@ -23,7 +23,7 @@ struct RunOptions {
 
 std::string describe_scene(const Scene& s) {
     // Fidelity means the engine's step and iterations: only the grain model has them.
-    const std::string physics = s.run.model == Model::grains
+    const std::string physics = model_traits(s.run.model).engine
                                     ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
                                     : to_string(s.run.model) + " model";
     return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {}",
@@ -61,7 +61,7 @@ void print_summary(const RunResult& r, const std::string& out) {
                    r.fill_mass_kg);
     else if (r.fill_mass_kg > 0.0)
         fmt::print("  fill               {:.4f} kg as {} (no grains in the {} model)\n", r.fill_mass_kg,
-                   r.scene.run.model == Model::segments ? "segments re-levelled at each impact" : "a frozen rigid body",
+                   model_traits(r.scene.run.model).fill_description,
                    to_string(r.scene.run.model));
     else
         fmt::print("  grains             none (empty shell)\n");

@@ -18,6 +18,8 @@
 #include "render/offscreen_osmesa.h"
 #include "render/snapshot.h"
 #include "render/ticks.h"
+#include "render/world_draw.h"
+#include "sim/model_registry.h"
 
 namespace polyroll::render {
 
@@ -47,11 +49,20 @@ FrameOptions options_for_run(FrameOptions o, const RunResult& run) {
 SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, const std::filesystem::path& dir,
                                const std::function<void(const SequenceProgress&)>& progress) {
     SequenceResult result;
-    result.run = run_scene(scene);  // the same function `polyroll run` uses: the same files
+    // The data run, as `polyroll run` runs it: the same files.
+    const auto data_start = Clock::now();
+    long data_steps = 0;  // tracker steps (a reduced model's RunResult counts its integrator's)
+    {
+        std::unique_ptr<ModelRun> data_run = start_run(scene);
+        data_run->run_to_end();
+        data_steps = data_run->steps();
+        result.run = data_run->result();
+    }
+    result.run.wall_time_s = std::chrono::duration<double>(Clock::now() - data_start).count();
     const RunResult& data = result.run;
 
     const FrameSchedule sched{st.fps, st.slow, scene.fidelity.step_hz, st.hold_s};
-    result.run_frames = sched.run_frames(data.steps);
+    result.run_frames = sched.run_frames(data_steps);
     result.hold_frames = sched.hold_frames();
     const long expected = result.run_frames + result.hold_frames;
 
@@ -85,25 +96,25 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
         if (progress) progress({done, expected, std::chrono::duration<double>(Clock::now() - start).count()});
     };
 
-    Simulation sim(scene);
+    const std::unique_ptr<ModelRun> run = start_run(scene);
     for (long k = 0; k < result.run_frames; ++k) {
         const long target = sched.step_for_frame(k);
-        while (sim.steps() < target && sim.step()) {
+        while (run->steps() < target && run->step()) {
         }
-        if (sim.steps() != target)
+        if (run->steps() != target)
             throw std::logic_error(fmt::format("the render run ended at step {} but the data run went on to step {}: "
                                                "the simulation is not deterministic",
-                                               sim.steps(), data.steps));
-        emit(take_snapshot(sim), 1);
+                                               run->steps(), data_steps));
+        emit(run->snapshot(), 1);
     }
-    while (sim.step()) {
+    while (run->step()) {
     }
-    if (sim.steps() != data.steps)
+    if (run->steps() != data_steps)
         throw std::logic_error(fmt::format("the render run ended at step {}, the data run at step {}: the simulation "
                                            "is not deterministic",
-                                           sim.steps(), data.steps));
+                                           run->steps(), data_steps));
     // The final state, held: drawn and encoded once, written as many times as it is shown.
-    if (result.hold_frames > 0) emit(take_snapshot(sim), static_cast<int>(result.hold_frames));
+    if (result.hold_frames > 0) emit(run->snapshot(), static_cast<int>(result.hold_frames));
     if (encoder) {
         encoder->finish();
         result.png_bytes = encoder->bytes_written();

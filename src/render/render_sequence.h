@@ -1,4 +1,4 @@
-// Renders a scene headless to a PNG frame sequence: a data run first (the results files and the
+// Renders a scene headless to a PNG frame sequence, whatever its model: a data run first (the results files and the
 // exact frame count, so the progress and the plot's axes are known from the first frame), then the
 // same run again, deterministic, stepped frame by frame while an OSMesa context draws each frame
 // and a pool of encoder threads writes the PNGs (frame_encoder.h).
@@ -10,7 +10,8 @@
 #include <string>
 
 #include "render/frame_layout.h"
-#include "sim/simulation.h"
+#include "sim/run_result.h"
+#include "sim/scene.h"
 
 namespace polyroll::render {
 

@@ -1,53 +1,13 @@
-// A snapshot: the state of a run at one instant, copied out of the simulation in SI units (metres in
-// the ramp frame: x down the slope, y along its normal, surface at y = 0). It is all a frame needs, so
-// drawing never touches Box2D and a snapshot can be built by hand in tests.
+// A snapshot: the state of a run at one instant in SI units, all a frame needs. It is built by the run
+// itself, whatever the model (sim/run_snapshot.h, ModelRun::snapshot); render keeps its own names.
 #pragma once
 
-#include <string>
-#include <vector>
-
-#include "sim/geometry.h"
-#include "sim/measurements.h"
-
-namespace polyroll {
-class Simulation;
-}
+#include "sim/run_snapshot.h"
 
 namespace polyroll::render {
 
-struct GrainState {
-    geom::Vec2 position_m;
-    double radius_m = 0.0;
-    double speed_m_s = 0.0;
-};
-
-// One point of the speed-versus-time plot.
-struct SpeedPoint {
-    double time_s = 0.0;
-    double speed_m_s = 0.0;
-};
-
-struct Snapshot {
-    // The scene's parameters, for the layout and the overlay.
-    int sides = 0;
-    double fill_ratio = 0.0;
-    double ramp_angle_deg = 0.0;
-    double ramp_length_m = 0.0;
-    std::string material;  // preset name ("" for a custom material)
-    std::string ramp;      // preset name
-    std::vector<geom::Vec2> outer_local_m;  // the shell's polygons in its own frame
-    std::vector<geom::Vec2> inner_local_m;
-
-    // The state.
-    double time_s = 0.0;  // since release
-    geom::Vec2 shell_centre_m;
-    double shell_angle_rad = 0.0;  // counter-clockwise in the ramp frame
-    std::vector<GrainState> grains;
-    TrajectorySample now;  // the tracker's latest measurement (position, speed)
-    int impacts = 0;
-    std::vector<SpeedPoint> speed_history;  // the tracker's samples so far
-};
-
-Snapshot take_snapshot(const Simulation& sim);
+using GrainState = polyroll::GrainState;
+using SpeedPoint = polyroll::SpeedPoint;
+using Snapshot = polyroll::RunSnapshot;
 
 }  // namespace polyroll::render

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "sim/atomic_file.h"
+#include "sim/model_registry.h"
 #include "sim/scene_json.h"
 
 namespace polyroll {
@@ -63,7 +64,7 @@ json summary_json(const RunResult& r) {
     out["results"] = results;
     out["shell"] = shell;
     // Box2D's units and step mean nothing to the reduced models, which integrate their own equations.
-    if (r.scene.run.model == Model::grains) out["engine"] = engine;
+    if (model_traits(r.scene.run.model).engine) out["engine"] = engine;
     return out;
 }
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/simulation.h"
+#include "sim/run_result.h"
 
 namespace polyroll {
 

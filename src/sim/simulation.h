@@ -1,54 +1,46 @@
-// One run of a scene: the world, its tracker and the clock, stepped one tracker step at a time.
-// The CLI runs it to the end; a window or renderer can step it and read the state between steps.
+// The grain model's run: the Box2D world of a scene (world_builder.h), its tracker and the clock,
+// stepped one tracker step at a time. Box2D-free header: the engine stays behind world() and
+// tracker(), which only sim/ and the tests look into.
 #pragma once
 
 #include <memory>
-#include <optional>
+#include <vector>
 
-#include "sim/measurements.h"
+#include "sim/force_hook.h"
+#include "sim/model_run.h"
+#include "sim/run_result.h"
 #include "sim/scene.h"
-#include "sim/tracker.h"
-#include "sim/world_builder.h"
 
 namespace polyroll {
 
-struct RunResult {
-    Scene scene;
-    ShellProperties shell;
-    EngineUnits units;
-    Measurements measured;
-    int grains = 0;
-    double fill_mass_kg = 0.0;
-    double settle_time_s = 0.0;
-    bool settled = true;
-    double balance_correction_deg = 0.0;  // see balance_on_pivot in world_builder.cpp
-    long steps = 0;
-    double wall_time_s = 0.0;  // building, settling and running, measured by the caller's clock
-    // The reduced models assume the polygon stays on the ramp; false once the normal force they need
-    // turns negative (the real polygon hops), from model_invalid_time_s on. Always true for grains.
-    bool model_valid = true;
-    std::optional<double> model_invalid_time_s;
-};
+struct SimWorld;
+class Tracker;
 
-class Simulation {
+class Simulation final : public ModelRun {
 public:
-    explicit Simulation(const Scene& scene);  // builds and settles; the scene must be validated
-    bool step();                              // one tracker step; false once the run has ended
-    bool finished() const;
-    double time_s() const { return static_cast<double>(steps_) / world_->scene.fidelity.step_hz; }
-    long steps() const { return steps_; }
+    // Builds and settles; the scene must be validated. The hooks act before every engine step.
+    explicit Simulation(const Scene& scene, std::vector<ForceHook> hooks = {});
+    // Carries on a run another model began (see HandOver); the grains, if any, are poured unsettled.
+    Simulation(const Scene& scene, const HandOver& from, std::vector<ForceHook> hooks = {});
+    ~Simulation() override;
+
+    bool step() override;
+    bool finished() const override;
+    long steps() const override { return steps_; }
+    const Scene& scene() const override;
+    RunSnapshot snapshot() const override;
+    const Measurements& measured() const override;
+    RunResult result() const override;
+    int grains() const override;
+    HandOver hand_over() const override;
 
     const SimWorld& world() const { return *world_; }
     const Tracker& tracker() const { return *tracker_; }
-    RunResult result() const;  // wall_time_s left 0
 
 private:
     std::unique_ptr<SimWorld> world_;
     std::unique_ptr<Tracker> tracker_;
     long steps_ = 0;
 };
-
-// Runs a validated scene to its end and times it.
-RunResult run_scene(const Scene& scene);
 
 }  // namespace polyroll

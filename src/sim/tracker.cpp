@@ -55,6 +55,24 @@ Tracker::Tracker(const SimWorld& w) : w_(w) {
     potential_at_release_J_ = sample(0.0).potential_J;
 }
 
+void Tracker::continue_from(const HandOver& from) {
+    m_ = from.measured;
+    m_.behaviour = Behaviour::running;
+    m_.grains_inside = static_cast<int>(w_.grains.size());
+    start_angle_rad_ = from.release.angle_rad;
+    landed_vertex_ = from.landed_vertex;
+    samples_taken_ = static_cast<long>(m_.trajectory.size());
+    next_sample_step_ = static_cast<long>(
+        std::ceil(static_cast<double>(samples_taken_) * w_.scene.fidelity.step_hz / w_.scene.run.sample_hz - 1e-9));
+    // The potential is booked from the release the first model saw: offset so that it reads now what
+    // that model read (the fill's mass may be spread differently in the two models).
+    const double t = static_cast<double>(from.steps) * step_dt_s_;
+    potential_at_release_J_ = 0.0;
+    potential_at_release_J_ = sample(t).potential_J - from.potential_J;
+    now_ = sample(t);
+    previous_kinetic_J_ = now_.kinetic_J;
+}
+
 TrajectorySample Tracker::sample(double time_s) const {
     TrajectorySample s;
     s.time_s = time_s;

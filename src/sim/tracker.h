@@ -6,6 +6,7 @@
 #pragma once
 
 #include "sim/measurements.h"
+#include "sim/model_run.h"
 #include "sim/world_builder.h"
 
 namespace polyroll {
@@ -14,6 +15,10 @@ class Tracker {
 public:
     explicit Tracker(const SimWorld& world);
 
+    // Carries on the records of a run another model began, handed over at step from.steps: positions
+    // and angles from its release, its energy books, its trajectory, impacts and sample times.
+    void continue_from(const HandOver& from);
+
     // Call after each step with the step count since release. Returns false once the run has ended.
     bool observe(long step);
 
@@ -21,6 +26,8 @@ public:
     Measurements& measurements() { return m_; }
     // The latest state, for displays.
     const TrajectorySample& current() const { return now_; }
+    long landed_vertex() const { return landed_vertex_; }
+    double start_angle_rad() const { return start_angle_rad_; }
 
     // Counts grains whose centre lies inside the shell's inner polygon (with a small tolerance).
     int count_grains_inside() const;

@@ -1,6 +1,8 @@
 // Builds the Box2D world of a scene: the ramp, the shell and its grains, settled in the release pose
-// and ready to let go. The engine works in the ramp's frame: x down the slope, y along its normal,
-// gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
+// and ready to let go (or, for a run handed over from another model, moving as that model left it),
+// from the parts in world_parts.h. The engine works in the ramp's frame: x down the slope, y along its
+// normal, gravity tilted by the ramp angle, the ramp's surface at y = 0 from x = 0 (top) to x = length.
+// Internal to sim/: outside it, runs are ModelRuns (model_run.h) and nothing names a Box2D type.
 #pragma once
 
 #include <memory>
@@ -10,8 +12,10 @@
 
 #include "sim/engine_units.h"
 #include "sim/fill_plan.h"
+#include "sim/force_hook.h"
 #include "sim/geometry.h"
 #include "sim/scene.h"
+#include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
 namespace polyroll {
@@ -28,6 +32,7 @@ private:
 };
 
 enum class BodyKind : uintptr_t { ramp = 1, shell = 2, grain = 3 };
+
 
 struct SimWorld {
     Scene scene;
@@ -48,20 +53,20 @@ struct SimWorld {
     b2Body* ramp = nullptr;
     b2Body* shell = nullptr;
     std::vector<b2Body*> grains;
+    std::vector<ForceHook> force_hooks;
 
-    // One tracker step: fidelity.substeps engine steps.
+    // One tracker step: fidelity.substeps engine steps, each after the force hooks.
     void step();
 };
 
-// The release pose of the shell: its angle (rad, counter-clockwise; rolling down is clockwise) and
-// the position of its centre, in metres, in the ramp frame.
-struct Pose {
-    double angle_rad = 0.0;
-    geom::Vec2 centre_m;
-};
-Pose release_pose(const Scene& scene, const ShellProperties& shell);
+// Builds the world, settles the grains with the shell held, then frees the shell (at rest). The
+// hooks act from the first settling step on.
+std::unique_ptr<SimWorld> build_world(const Scene& scene, std::vector<ForceHook> hooks = {});
 
-// Builds the world, settles the grains with the shell held, then frees the shell (at rest).
-std::unique_ptr<SimWorld> build_world(const Scene& scene);
+// The world of a run another model began: the shell in `shell`'s pose and moving with it, the grains
+// (if any) poured unsettled in its frame and moving with it; positions are measured from the release
+// centre `start_centre_x_m`.
+std::unique_ptr<SimWorld> build_world_from(const Scene& scene, const ShellState& shell, double start_centre_x_m,
+                                           std::vector<ForceHook> hooks = {});
 
 }  // namespace polyroll

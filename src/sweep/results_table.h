@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.h"
+#include "sim/run_result.h"
 #include "sweep/sweep_plan.h"
 
 namespace polyroll::sweep {

@@ -12,6 +12,7 @@
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/model_registry.h"
 #include "sim/results_io.h"
 #include "sweep/merge.h"
 #include "sweep/progress.h"

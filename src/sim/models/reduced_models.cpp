@@ -3,10 +3,9 @@
 
 #include <chrono>
 
-#include "sim/errors.h"
 #include "sim/fill_plan.h"
 #include "sim/shell_properties.h"
-#include "sim/world_builder.h"
+#include "sim/shell_pose.h"
 
 namespace polyroll::models {
 
@@ -39,10 +38,8 @@ RollingTrack rolling_track(const Scene& scene) {
     return t;
 }
 
-RunResult run_reduced_model(const Scene& scene) {
-    if (scene.run.model == Model::grains) throw InputError("run_reduced_model: run.model is grains");
+RunResult run_reduced_model(const Scene& scene, FillMotion motion) {
     const auto start = std::chrono::steady_clock::now();
-    const FillMotion motion = scene.run.model == Model::rigid ? FillMotion::frozen : FillMotion::relevel;
     const RollingRun run = roll(rolling_body(scene), motion, rolling_track(scene));
     RunResult r;
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "sim/models/rolling_polygon.h"
+#include "sim/run_result.h"
 #include "sim/scene.h"
-#include "sim/simulation.h"
 
 namespace polyroll::models {
 
@@ -15,10 +15,11 @@ namespace polyroll::models {
 // spread uniformly over the inside's cross-section.
 RollingBody rolling_body(const Scene& scene);
 
-// The scene's ramp, release pose (release_pose() of world_builder.h) and run rules.
+// The scene's ramp, release pose (release_pose() of shell_pose.h) and run rules.
 RollingTrack rolling_track(const Scene& scene);
 
-// Runs a validated scene whose run.model is rigid or segments, and times it.
-RunResult run_reduced_model(const Scene& scene);
+// Runs a validated scene with the fill moving as `fill` says (frozen: the rigid model; relevel: the
+// segment model), and times it.
+RunResult run_reduced_model(const Scene& scene, FillMotion fill);
 
 }  // namespace polyroll::models

@@ -1,0 +1,82 @@
+// The model registry: see model_registry.h.
+#include "sim/model_registry.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "sim/errors.h"
+#include "sim/models/reduced_run.h"
+#include "sim/scene_json.h"
+#include "sim/simulation.h"
+
+namespace polyroll {
+
+namespace {
+
+struct ModelRow {
+    ModelTraits traits;
+    std::unique_ptr<ModelRun> (*start)(const Scene& scene);
+    std::unique_ptr<ModelRun> (*carry_on)(const Scene& scene, const HandOver& from);  // null: cannot
+};
+
+std::unique_ptr<ModelRun> start_grains(const Scene& s) { return std::make_unique<Simulation>(s); }
+std::unique_ptr<ModelRun> carry_on_grains(const Scene& s, const HandOver& from) {
+    return std::make_unique<Simulation>(s, from);
+}
+std::unique_ptr<ModelRun> start_segments(const Scene& s) {
+    return std::make_unique<models::ReducedRun>(s, models::FillMotion::relevel);
+}
+std::unique_ptr<ModelRun> start_rigid(const Scene& s) {
+    return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen);
+}
+
+const std::vector<ModelRow>& rows() {
+    static const std::vector<ModelRow> table = {
+        {{Model::grains, true, true, "", true}, start_grains, carry_on_grains},
+        {{Model::segments, false, false, "segments re-levelled at each impact", false}, start_segments, nullptr},
+        {{Model::rigid, false, false, "a frozen rigid body", false}, start_rigid, nullptr},
+    };
+    return table;
+}
+
+const ModelRow& row(Model model) {
+    for (const ModelRow& r : rows())
+        if (r.traits.model == model) return r;
+    throw InputError(fmt::format("model {}: not in the model registry", static_cast<int>(model)));
+}
+
+}  // namespace
+
+const std::vector<Model>& all_models() {
+    static const std::vector<Model> models = [] {
+        std::vector<Model> m;
+        for (const ModelRow& r : rows()) m.push_back(r.traits.model);
+        return m;
+    }();
+    return models;
+}
+
+Model reference_model() { return all_models().front(); }
+
+const ModelTraits& model_traits(Model model) { return row(model).traits; }
+
+std::unique_ptr<ModelRun> start_run(const Scene& scene) { return row(scene.run.model).start(scene); }
+
+std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from) {
+    const ModelRow& r = row(scene.run.model);
+    if (!r.carry_on)
+        throw InputError(fmt::format("the {} model cannot carry on a run another model began", to_string(scene.run.model)));
+    return r.carry_on(scene, from);
+}
+
+RunResult run_scene(const Scene& scene) {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<ModelRun> run = start_run(scene);
+    run->run_to_end();
+    RunResult r = run->result();
+    r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return r;
+}
+
+}  // namespace polyroll

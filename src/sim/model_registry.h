@@ -1,0 +1,45 @@
+// The models a scene can run with, one row each: what it is called in the run printout, what its
+// files hold, and how to start it or continue another model's run with it. The only place that asks
+// which model a scene names; everything else starts runs here and reads the traits.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/model_run.h"
+#include "sim/run_result.h"
+#include "sim/scene.h"
+
+namespace polyroll {
+
+struct ModelTraits {
+    Model model = Model::grains;
+    // Box2D computes it: the fidelity (step, iterations) means something, and summary.json has an
+    // "engine" block with the engine's units and step.
+    bool engine = false;
+    bool has_grains = false;  // the fill as grains; otherwise as a continuum without grains
+    // What the run printout says the fill is, for a model without grains ("" for grains).
+    std::string fill_description;
+    // Can carry on a run another model began (continue_run).
+    bool continues_hand_over = false;
+};
+
+// Every model, in the order `compare` and `bench` list them: the grain simulation first, the
+// reference the others are timed against.
+const std::vector<Model>& all_models();
+// The grain simulation: the reference the reduced models are compared with and timed against.
+Model reference_model();
+const ModelTraits& model_traits(Model model);
+
+// Builds (for grains: pours and settles) a run of the scene's model; the scene must be validated.
+std::unique_ptr<ModelRun> start_run(const Scene& scene);
+
+// Continues with the scene's model the run `from` was handed over from (ModelRun::hand_over).
+// Throws InputError if that model cannot take a run over.
+std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from);
+
+// Runs a validated scene to its end with its model, and times it (wall_time_s).
+RunResult run_scene(const Scene& scene);
+
+}  // namespace polyroll

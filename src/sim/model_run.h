@@ -1,0 +1,50 @@
+// One run of a scene, whatever the model computes it: built from the scene (model_registry.h picks
+// the model), stepped in the tracker's fixed steps (1 / fidelity.step_hz), and read between steps as
+// a snapshot to draw, the measurements so far and the RunResult `polyroll run` writes. A run can
+// hand over to another model: hand_over() gives the shell's state and the records so far, and the
+// registry's continue_run() builds the next model's run from them, its measurements carrying on.
+#pragma once
+
+#include "sim/measurements.h"
+#include "sim/run_result.h"
+#include "sim/run_snapshot.h"
+#include "sim/scene.h"
+#include "sim/shell_pose.h"
+
+namespace polyroll {
+
+// What a run hands to the model that continues it, at a tracker step.
+struct HandOver {
+    long steps = 0;            // tracker steps since release
+    ShellState shell;          // now, in the ramp frame
+    ShellPose release;         // at release: position and angle are measured from it
+    Measurements measured;     // so far (behaviour running): the trajectory and impacts carry on
+    long landed_vertex = 1;    // the highest vertex landed, unwrapped (1: the pivot at release)
+    double potential_J = 0.0;  // the potential energy now, relative to release, as the run booked it
+};
+
+class ModelRun {
+public:
+    virtual ~ModelRun() = default;
+    virtual bool step() = 0;  // one tracker step; false once the run has ended
+    virtual bool finished() const = 0;
+    virtual long steps() const = 0;  // tracker steps since release
+    double time_s() const { return static_cast<double>(steps()) / scene().fidelity.step_hz; }
+    double step_s() const { return 1.0 / scene().fidelity.step_hz; }
+    virtual const Scene& scene() const = 0;
+    virtual RunSnapshot snapshot() const = 0;
+    // What has been measured up to now (the behaviour stays "running" until the run has ended).
+    virtual const Measurements& measured() const = 0;
+    // The files `polyroll run` would write for this run, as far as it has gone (wall_time_s left 0).
+    virtual RunResult result() const = 0;
+    virtual int grains() const = 0;
+    // The state another model continues from (registry: continue_run).
+    virtual HandOver hand_over() const = 0;
+    // Steps to the end (a model that knows its whole run may jump there).
+    virtual void run_to_end() {
+        while (step()) {
+        }
+    }
+};
+
+}  // namespace polyroll

@@ -1,0 +1,113 @@
+// A reduced model's run, revealed step by step: see reduced_run.h.
+#include "sim/models/reduced_run.h"
+
+#include <algorithm>
+
+#include "sim/fill_plan.h"
+#include "sim/models/reduced_models.h"
+#include "sim/shell_pose.h"
+
+namespace polyroll::models {
+
+namespace {
+
+TrajectorySample sample_at(const std::vector<TrajectorySample>& track, double t) {
+    if (track.empty()) return {};
+    auto it = std::lower_bound(track.begin(), track.end(), t,
+                               [](const TrajectorySample& a, double v) { return a.time_s < v; });
+    if (it == track.begin()) return track.front();
+    if (it == track.end()) return track.back();
+    const TrajectorySample& b = *it;
+    const TrajectorySample& a = *(it - 1);
+    const double f = b.time_s > a.time_s ? (t - a.time_s) / (b.time_s - a.time_s) : 1.0;
+    auto mix = [f](double x, double y) { return x + f * (y - x); };
+    TrajectorySample s;
+    s.time_s = t;
+    s.position_m = mix(a.position_m, b.position_m);
+    s.speed_m_s = mix(a.speed_m_s, b.speed_m_s);
+    s.angle_deg = mix(a.angle_deg, b.angle_deg);
+    s.kinetic_J = mix(a.kinetic_J, b.kinetic_J);
+    s.potential_J = mix(a.potential_J, b.potential_J);
+    s.dissipated_J = mix(a.dissipated_J, b.dissipated_J);
+    return s;
+}
+
+}  // namespace
+
+ReducedRun::ReducedRun(const Scene& scene, FillMotion fill)
+    : scene_(scene), fill_(fill), full_(run_reduced_model(scene, fill)) {
+    outer_ = shell_outer_polygon_m(scene.shell);
+    inner_ = shell_inner_polygon_m(scene.shell);
+    shown_.behaviour = Behaviour::running;
+    reveal();
+}
+
+const std::vector<TrajectorySample>& ReducedRun::pose_track() const {
+    std::call_once(pose_once_, [this] {
+        Scene fine = scene_;
+        fine.run.sample_hz = scene_.fidelity.step_hz;
+        pose_track_ = run_reduced_model(fine, fill_).measured.trajectory;
+    });
+    return pose_track_;
+}
+
+bool ReducedRun::finished() const { return time_s() >= full_.measured.end_time_s - 1e-12; }
+
+bool ReducedRun::step() {
+    if (finished()) return false;
+    ++steps_;
+    reveal();
+    return !finished();
+}
+
+void ReducedRun::run_to_end() {
+    while (!finished()) ++steps_;
+    reveal();
+}
+
+TrajectorySample ReducedRun::now() const {
+    return sample_at(pose_track(), std::min(time_s(), full_.measured.end_time_s));
+}
+
+RunSnapshot ReducedRun::snapshot() const {
+    RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
+    s.time_s = std::min(time_s(), full_.measured.end_time_s);
+    const TrajectorySample now = sample_at(pose_track(), s.time_s);
+    const ShellPose pose = rolling_pose(scene_, now.position_m, now.angle_deg);
+    s.shell_centre_m = pose.centre_m;
+    s.shell_angle_rad = pose.angle_rad;
+    set_measured(s, now, shown_);
+    return s;
+}
+
+HandOver ReducedRun::hand_over() const {
+    HandOver h;
+    h.steps = steps_;
+    const TrajectorySample n = now();
+    h.shell = rolling_state(scene_, n);
+    h.release = release_pose(scene_, full_.shell);
+    h.measured = shown_;
+    h.measured.behaviour = Behaviour::running;
+    // The model lands each vertex in turn and counts an impact only for a new highest one.
+    h.landed_vertex = 1 + static_cast<long>(shown_.impacts.size());
+    h.potential_J = n.potential_J;
+    return h;
+}
+
+// Moves what has happened by now from the full run into the shown measurements.
+void ReducedRun::reveal() {
+    const Measurements& m = full_.measured;
+    const double t = time_s() + 1e-12;
+    while (shown_.trajectory.size() < m.trajectory.size() && m.trajectory[shown_.trajectory.size()].time_s <= t)
+        shown_.trajectory.push_back(m.trajectory[shown_.trajectory.size()]);
+    while (shown_.impacts.size() < m.impacts.size() && m.impacts[shown_.impacts.size()].time_s <= t)
+        shown_.impacts.push_back(m.impacts[shown_.impacts.size()]);
+    if (finished()) {
+        shown_ = m;  // the behaviour, distance and terminal velocity are known once it has ended
+    } else if (!shown_.trajectory.empty()) {
+        shown_.distance_m = shown_.trajectory.back().position_m;
+        shown_.end_time_s = time_s();
+    }
+}
+
+}  // namespace polyroll::models

@@ -1,0 +1,33 @@
+// What a whole run gives back, whatever the model: the scene, the shell's derived properties, the
+// engine units (meaningful for Box2D runs only) and the measurements. Box2D-free, so results I/O,
+// the sweep table and the sandbox's export can name a result without pulling in the engine.
+#pragma once
+
+#include <optional>
+
+#include "sim/engine_units.h"
+#include "sim/measurements.h"
+#include "sim/scene.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll {
+
+struct RunResult {
+    Scene scene;
+    ShellProperties shell;
+    EngineUnits units;
+    Measurements measured;
+    int grains = 0;
+    double fill_mass_kg = 0.0;
+    double settle_time_s = 0.0;
+    bool settled = true;
+    double balance_correction_deg = 0.0;  // see balance_on_pivot in world_fill.cpp
+    long steps = 0;  // the model's own steps (tracker steps for Box2D, integrator steps for the reduced models)
+    double wall_time_s = 0.0;  // building, settling and running, measured by the caller's clock
+    // The reduced models assume the polygon stays on the ramp; false once the normal force they need
+    // turns negative (the real polygon hops), from model_invalid_time_s on. Always true for grains.
+    bool model_valid = true;
+    std::optional<double> model_invalid_time_s;
+};
+
+}  // namespace polyroll

@@ -1,0 +1,34 @@
+// The steps build_world takes, one function each: an empty world in the ramp frame, the ramp, the
+// shell held in a pose, the grains poured into it and settled, and the shell let go. Internal to
+// sim/ (Box2D types); world_builder.h is the way in.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sim/world_builder.h"
+
+namespace polyroll::world_parts {
+
+// The engine's world with the scene's units, gravity tilted into the ramp frame, the contact
+// materials, the shell's polygons and where the run ends; no bodies yet.
+std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook> hooks);
+
+// A thick static box whose top face is y = 0, reaching past both ends.
+void add_ramp(SimWorld& w);
+
+// The shell, static (held) in `pose`, its lowest point touching the ramp.
+void add_shell(SimWorld& w, const ShellPose& pose);
+
+// The fill planned in the shell's frame with gravity as seen from `pose`, as dynamic grains.
+void pour_grains(SimWorld& w, const ShellPose& pose);
+
+// The hand holds the polygon while the pile comes to rest; then, released on a vertex, the whole
+// thing is turned to balance on it (balance_on_pivot in world_fill.cpp).
+void settle_grains(SimWorld& w);
+
+// Lets go: the shell becomes dynamic with the real box's mass and inertia, moving
+// (its pose is not changed) with the given velocities; the grains wake.
+void release_shell(SimWorld& w, geom::Vec2 velocity_m_s, double angular_velocity_rad_s);
+
+}  // namespace polyroll::world_parts

@@ -1,0 +1,76 @@
+// The ramp and the shell, held and let go: see world_parts.h.
+#include "sim/world_parts.h"
+
+namespace polyroll::world_parts {
+
+namespace {
+b2Vec2 to_b2(geom::Vec2 v_m, const EngineUnits& u) {
+    return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
+}
+}  // namespace
+
+void add_ramp(SimWorld& w) {
+    // Reaching past both ends so a polygon at the end still has a surface under it until the run
+    // stops it.
+    const Scene& scene = w.scene;
+    const EngineUnits& u = w.units;
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    def.userData.pointer = static_cast<uintptr_t>(BodyKind::ramp);
+    w.ramp = w.world->CreateBody(&def);
+    const double margin_m = 4.0 * w.shell_props.outer_circumradius_m;
+    const double half_len_m = scene.ramp.length_m / 2.0 + margin_m;
+    const double half_thick_m = 0.025;
+    b2PolygonShape box;
+    box.SetAsBox(static_cast<float>(u.to_units(half_len_m)), static_cast<float>(u.to_units(half_thick_m)),
+                 to_b2({scene.ramp.length_m / 2.0, -half_thick_m}, u), 0.0f);
+    b2FixtureDef fd;
+    fd.shape = &box;
+    fd.friction = static_cast<float>(scene.ramp.friction);
+    fd.restitution = static_cast<float>(scene.ramp.restitution);
+    w.ramp->CreateFixture(&fd);
+}
+
+void add_shell(SimWorld& w, const ShellPose& pose) {
+    // One trapezoid per side between the inner and outer polygons, so the corners are closed
+    // (rectangles leave notches a squeezed pile leaks through).
+    const EngineUnits& u = w.units;
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    def.userData.pointer = static_cast<uintptr_t>(BodyKind::shell);
+    // Lift by the two shapes' skins so the shell starts touching, not overlapping, the ramp.
+    def.position = to_b2(pose.centre_m, u) + b2Vec2(0.0f, 2.0f * b2_polygonRadius);
+    def.angle = static_cast<float>(pose.angle_rad);
+    w.shell = w.world->CreateBody(&def);
+    const int n = w.scene.shell.sides;
+    for (int i = 0; i < n; ++i) {
+        const int j = (i + 1) % n;
+        b2Vec2 quad[4] = {to_b2(w.inner_local_m[i], u), to_b2(w.outer_local_m[i], u), to_b2(w.outer_local_m[j], u),
+                          to_b2(w.inner_local_m[j], u)};
+        b2PolygonShape shape;
+        shape.Set(quad, 4);
+        b2FixtureDef fd;
+        fd.shape = &shape;
+        fd.density = 1.0f;  // replaced by the real mass data on release
+        fd.friction = static_cast<float>(w.scene.ramp.friction);
+        fd.restitution = 0.0f;
+        w.shell->CreateFixture(&fd);
+    }
+}
+
+void release_shell(SimWorld& w, geom::Vec2 velocity_m_s, double angular_velocity_rad_s) {
+    // SetType recomputes mass from the fixtures, so the mass data comes after it.
+    const EngineUnits& u = w.units;
+    w.shell->SetType(b2_dynamicBody);
+    b2MassData md;
+    md.mass = static_cast<float>(w.shell_props.mass_kg);
+    md.center = b2Vec2_zero;
+    md.I = static_cast<float>(w.shell_props.inertia_kg_m2 * u.units_per_m * u.units_per_m);
+    w.shell->SetMassData(&md);
+    w.shell->SetLinearVelocity(to_b2(velocity_m_s, u));
+    w.shell->SetAngularVelocity(static_cast<float>(angular_velocity_rad_s));
+    w.shell->SetAwake(true);
+    for (b2Body* b : w.grains) b->SetAwake(true);
+}
+
+}  // namespace polyroll::world_parts
