@@ -36,9 +36,9 @@ json bundled(std::string_view name) {
 }
 
 // A scratch asset folder: materials.json with red lentils added, sandbox-presets.json with a
-// hexagon of them in the hexagon row.
-fs::path lentil_assets() {
-    const fs::path dir = test::scratch_dir("asset-folder", true);
+// hexagon of them in the hexagon row. Each test case names its own folder: ctest runs them at once.
+fs::path lentil_assets(const std::string& name) {
+    const fs::path dir = test::scratch_dir("asset-folder-" + name, true);
     json materials = bundled("materials.json");
     materials["presets"]["lentils"] = json::parse(R"({
         "description": "red lentils: small flat discs",
@@ -120,7 +120,7 @@ TEST_CASE("the panel's preset rows: one per polygon, a button per material, then
 }
 
 TEST_CASE("a fourth material in a scratch asset folder shows in the CLI", "[assets][cli]") {
-    const fs::path dir = lentil_assets();
+    const fs::path dir = lentil_assets("cli");
     const test::CommandResult presets = polyroll_with(dir, "presets");
     CHECK(presets.exit_code == 0);
     CHECK(presets.out.find("lentils") != std::string::npos);
@@ -157,7 +157,7 @@ TEST_CASE("a replacement asset file that is not JSON is one line naming it, exit
 }
 
 TEST_CASE("a fourth material in a scratch asset folder shows in the frames", "[assets][render]") {
-    const fs::path dir = lentil_assets();
+    const fs::path dir = lentil_assets("frames");
     const UsingAssets using_them(dir);
     CHECK(render::material_label("lentils") == "red lentils");
     CHECK(render::material_colour("lentils") == render::rgb8(200, 90, 40));
@@ -189,7 +189,7 @@ TEST_CASE("a fourth material in a scratch asset folder shows in the frames", "[a
 }
 
 TEST_CASE("a fourth material in a scratch asset folder shows on the sandbox panel", "[assets][app]") {
-    const fs::path dir = lentil_assets();
+    const fs::path dir = lentil_assets("panel");
     const UsingAssets using_them(dir);
     // The material combo's choices.
     const std::vector<std::string> materials = assets::preset_names(assets::Kind::material);
