@@ -1,4 +1,4 @@
-// The reduced models (shared/physics.md): triangle formulas, the level fill region, the rigid impact
+// The reduced models (docs/physics.md): triangle formulas, the level fill region, the rigid impact
 // model's closed forms, energy books, and the cross-check against the grain simulation.
 #include <catch2/catch.hpp>
 
@@ -165,7 +165,7 @@ TEST_CASE("the clipped fill region holds area fraction r within 1e-9", "[models]
 }
 
 TEST_CASE("solid polygons lose the brief's share of energy at each impact", "[models]") {
-    // physics.md: Q_4 = 0.0625 and Q_6 = 0.4187 for uniform solid polygons.
+    // docs/physics.md: Q_4 = 0.0625 and Q_6 = 0.4187 for uniform solid polygons.
     struct Case {
         int n;
         double angle_deg;

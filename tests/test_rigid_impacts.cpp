@@ -1,4 +1,4 @@
-// The grain simulation of an empty shell against the rigid impact model (shared/physics.md): each
+// The grain simulation of an empty shell against the rigid impact model (docs/physics.md): each
 // face impact should keep the share of kinetic energy the model predicts from the shell's mass,
 // moment of inertia and pivot radius, wherever the model's assumption (no hopping) holds.
 #include <catch2/catch.hpp>
@@ -59,7 +59,7 @@ TEST_CASE("empty shells lose the rigid model's share of energy per impact (n = 6
 }
 
 TEST_CASE("where the shell hops, the measured impacts leave the rigid model", "[physics][rigid]") {
-    // n = 18 hops above about 8 degrees (shared/design.md): faces are skipped, energy is kept.
+    // n = 18 hops above about 8 degrees (docs/design.md): faces are skipped, energy is kept.
     const Check c = rolling_check(18, 10.0, "standard");
     INFO("impacts " << c.impacts << " over " << c.faces_travelled << " faces");
     CHECK(static_cast<double>(c.impacts) < c.faces_travelled - 3.0);

@@ -2,7 +2,7 @@
 // same code for the window and the offscreen (OSMesa) context. Triangles as they are; discs,
 // capsules and rounded boxes as instanced quads whose fragment shader antialiases the edge by
 // distance (far cheaper than multisampling under llvmpipe); glyphs as instanced textured quads.
-// Links no GL itself: the executable brings exactly one GL provider (design.md).
+// Links no GL itself: the executable brings exactly one GL provider (docs/design.md, "Rendering").
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // A headless GL 3.3 core context from OSMesa (Mesa's llvmpipe on the CPU): no display, no X server,
 // no GPU. Its framebuffer is plain memory we own, read back after glFinish. Only executables that
-// link libOSMesa (and not libGL: both export the GL API, design.md) may use this.
+// link libOSMesa (and not libGL: both export the GL API: docs/design.md) may use this.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// What a run measures, as the experiment did (shared/physics.md, last section), in SI units.
+// What a run measures, as the experiment did (docs/physics.md, "What a run measures"), in SI units.
 #pragma once
 
 #include <optional>

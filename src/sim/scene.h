@@ -65,7 +65,7 @@ struct FidelityParams {
 };
 
 // Which physics computes the run: the grain simulation, or one of the experimenters' reduced models
-// (shared/physics.md), which treat the polygon and its fill as one rigid body between impacts.
+// (docs/physics.md), which treat the polygon and its fill as one rigid body between impacts.
 enum class Model { grains, segments, rigid };
 
 struct RunParams {

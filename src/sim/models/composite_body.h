@@ -1,4 +1,4 @@
-// The bodies of the reduced models (shared/physics.md): mass properties in the polygon's own frame,
+// The bodies of the reduced models (docs/physics.md): mass properties in the polygon's own frame,
 // the fill as triangular segments of uniform density below a level free surface, and the shell and
 // segments combined with the parallel-axis theorem. Pure geometry, no engine.
 #pragma once
@@ -45,7 +45,7 @@ struct FillSegments {
 };
 
 // Clips `inner` (convex, counter-clockwise) at the level holding `fraction` of its area, splits the
-// region into triangles and sums their mass properties (physics.md's triangle formulas).
+// region into triangles and sums their mass properties (docs/physics.md's triangle formulas).
 FillSegments fill_segments(const std::vector<geom::Vec2>& inner, geom::Vec2 up, double fraction,
                            double areal_density_kg_m2);
 

@@ -1,4 +1,4 @@
-// The experimenters' reduced models (shared/physics.md) as runs of a scene: the rigid impact model
+// The experimenters' reduced models (docs/physics.md) as runs of a scene: the rigid impact model
 // (shell and fill one rigid body, the fill frozen as it lay at release) and the composite segment
 // model (the fill re-levels after every impact). Both return the grain simulation's RunResult, with
 // the same measurements, so every output and downstream tool works on all three models.

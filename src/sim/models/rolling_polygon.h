@@ -1,4 +1,4 @@
-// The event-driven core of both reduced models (shared/physics.md): a rigid body with a regular
+// The event-driven core of both reduced models (docs/physics.md): a rigid body with a regular
 // polygonal outline rolls without slipping down the ramp, turning about one vertex between face
 // impacts (pivot_motion.h); at each impact the angular momentum about the new pivot is conserved.
 // The fill either stays frozen as it was at release (the rigid impact model) or re-levels after every
