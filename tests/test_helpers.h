@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/errors.h"
 #include "sim/model_registry.h"
 #include "sim/scene.h"
 #include "sim/scene_json.h"
@@ -23,6 +24,16 @@ namespace polyroll::test {
 // The default scene with `overrides` (a scene document) on top, resolved and validated.
 inline Scene scene_with(const nlohmann::ordered_json& overrides) {
     return resolve_scene({SceneLayer{overrides, "test", {}}});
+}
+
+// The message a scene document (JSON text) is refused with; "" if it resolves.
+inline std::string scene_error_of(const std::string& doc) {
+    try {
+        scene_with(nlohmann::ordered_json::parse(doc));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
 }
 
 // What a command printed (stdout and stderr together) and how it exited, for the tests that run

@@ -25,14 +25,6 @@ void leaf_paths(const json& j, const std::string& prefix, std::vector<std::strin
     }
 }
 
-std::string error_of(const std::string& doc) {
-    try {
-        test::scene_with(json::parse(doc));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
 
 }  // namespace
 
@@ -78,25 +70,25 @@ TEST_CASE("the enumerations' names, one list each", "[scene][fields]") {
 }
 
 TEST_CASE("validation messages from the table are the ones the code always gave", "[scene][fields][bad-input]") {
-    CHECK(error_of(R"({"shell": {"sides": 2}})") == "shell.sides = 2 (from test) is out of range (allowed: 3 to 64)");
-    CHECK(error_of(R"({"fill": {"ratio": 1.5}})") == "fill.ratio = 1.5 (from test) is out of range (allowed: from 0 to 1)");
-    CHECK(error_of(R"({"ramp": {"angle_deg": 90}})") ==
+    CHECK(test::scene_error_of(R"({"shell": {"sides": 2}})") == "shell.sides = 2 (from test) is out of range (allowed: 3 to 64)");
+    CHECK(test::scene_error_of(R"({"fill": {"ratio": 1.5}})") == "fill.ratio = 1.5 (from test) is out of range (allowed: from 0 to 1)");
+    CHECK(test::scene_error_of(R"({"ramp": {"angle_deg": 90}})") ==
           "ramp.angle_deg = 90 (from test) is out of range (allowed: from 0 to 89 degrees)");
-    CHECK(error_of(R"({"shell": {"wall_thickness_m": 0}})") ==
+    CHECK(test::scene_error_of(R"({"shell": {"wall_thickness_m": 0}})") ==
           "shell.wall_thickness_m = 0 (from test) is out of range (allowed: above 0 to 0.0168 m)");
-    CHECK(error_of(R"({"shell": {"lid_mass_fraction": 1}})") ==
+    CHECK(test::scene_error_of(R"({"shell": {"lid_mass_fraction": 1}})") ==
           "shell.lid_mass_fraction = 1 (from test) is out of range (allowed: from 0 to 1, exclusive)");
-    CHECK(error_of(R"({"run": {"sample_hz": 5000}})") ==
+    CHECK(test::scene_error_of(R"({"run": {"sample_hz": 5000}})") ==
           "run.sample_hz = 5000 (from test) is out of range (allowed: above 0 to 1000 Hz (at most fidelity.step_hz))");
-    CHECK(error_of(R"({"ramp": {"length_m": 0.1}})").starts_with("ramp.length_m = 0.1 (from test) is out of range (allowed: from 0.1"));
+    CHECK(test::scene_error_of(R"({"ramp": {"length_m": 0.1}})").starts_with("ramp.length_m = 0.1 (from test) is out of range (allowed: from 0.1"));
     // A limit that reads another field comes after it: a bad spread is named, not the diameter.
-    CHECK(error_of(R"({"fill": {"material": {"diameter_spread": -5}}})") ==
+    CHECK(test::scene_error_of(R"({"fill": {"material": {"diameter_spread": -5}}})") ==
           "fill.material.diameter_spread = -5 (from test) is out of range (allowed: from 0 to 0.5)");
     // The checks across fields, after their section.
-    CHECK(error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})")
+    CHECK(test::scene_error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})")
               .starts_with("release.tilt_deg = 10 (from test) is too large for n = 64 at 20 degrees"));
-    CHECK(error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face)");
-    CHECK(error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, got 5");
-    CHECK(error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material)");
-    CHECK(error_of(R"({"shell": {"sidez": 6}})").starts_with("test: unknown key 'shell.sidez' (allowed: preset, sides, "));
+    CHECK(test::scene_error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face)");
+    CHECK(test::scene_error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, got 5");
+    CHECK(test::scene_error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material)");
+    CHECK(test::scene_error_of(R"({"shell": {"sidez": 6}})").starts_with("test: unknown key 'shell.sidez' (allowed: preset, sides, "));
 }

@@ -45,17 +45,6 @@ TEST_CASE("the resolved scene round-trips through JSON", "[scene]") {
     CHECK(once.at("release").at("pose") == "face");
 }
 
-namespace {
-std::string error_of(const std::string& doc) {
-    try {
-        test::scene_with(json::parse(doc));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-}  // namespace
-
 TEST_CASE("bad scene values are named with what is allowed", "[scene][bad-input]") {
     struct Case {
         const char* doc;
@@ -83,7 +72,7 @@ TEST_CASE("bad scene values are named with what is allowed", "[scene][bad-input]
         {R"({"run": {"model": "fluid"}})", {"run.model", "grains, segments, rigid"}},
     };
     for (const Case& c : cases) {
-        const std::string msg = error_of(c.doc);
+        const std::string msg = test::scene_error_of(c.doc);
         INFO("scene " << c.doc << " -> " << msg);
         REQUIRE(!msg.empty());
         CHECK(msg.find('\n') == std::string::npos);
@@ -92,7 +81,7 @@ TEST_CASE("bad scene values are named with what is allowed", "[scene][bad-input]
 }
 
 TEST_CASE("too many grains are refused before anything is built", "[scene][bad-input]") {
-    const std::string msg = error_of(R"({"shell": "hexagon-large", "fill": {"ratio": 1, "material": {"preset": "rice", "diameter_m": 0.0006}}})");
+    const std::string msg = test::scene_error_of(R"({"shell": "hexagon-large", "fill": {"ratio": 1, "material": {"preset": "rice", "diameter_m": 0.0006}}})");
     CHECK(msg.find("too many") != std::string::npos);
     CHECK(msg.find("20000") != std::string::npos);
 }
@@ -114,8 +103,8 @@ TEST_CASE("scene files: malformed JSON, a directory, a missing file", "[scene][b
 
 TEST_CASE("a release tilt past one face's turn is refused", "[scene][bad-input]") {
     // A 64-gon turns 5.6 degrees per face; a 10 degree tilt would start its next vertex in the ramp.
-    const std::string msg = error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})");
+    const std::string msg = test::scene_error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})");
     CHECK(msg.find("release.tilt_deg = 10") != std::string::npos);
     CHECK(msg.find("n = 64") != std::string::npos);
-    CHECK(error_of(R"({"shell": {"sides": 6}, "release": {"tilt_deg": 10}})").empty());
+    CHECK(test::scene_error_of(R"({"shell": {"sides": 6}, "release": {"tilt_deg": 10}})").empty());
 }
