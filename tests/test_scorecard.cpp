@@ -62,7 +62,7 @@ TEST_CASE("scorecard: a behaviour share agrees at the needed count and not one b
     ObservationScore s = score_observation(ob, runs);
     REQUIRE(s.checks.size() == 1);
     CHECK(s.agree);
-    CHECK(s.checks[0].simulation == "4 of 5 runs rolled_to_end (others: 1 stopped_at_first_impact)");
+    CHECK(s.checks[0].simulation == "4 of 5 seeds rolled_to_end (others: 1 stopped_at_first_impact)");
     CHECK(s.checks[0].by == "needs 4 of 5: 0 to spare");
     CHECK(*s.checks[0].difference == Approx(0.0).margin(1e-12));
 
@@ -75,12 +75,24 @@ TEST_CASE("scorecard: a behaviour share agrees at the needed count and not one b
 
 TEST_CASE("scorecard: failed runs count against a share and are named", "[scorecard]") {
     std::vector<ScoredRun> runs(2, run("stopped_at_first_impact"));
-    runs.push_back(ScoredRun{});  // failed or missing
-    runs.push_back(ScoredRun{});
+    ScoredRun failed;  // failed or missing
+    failed.label = "p";
+    runs.push_back(failed);
+    runs.push_back(failed);
     const ObservationScore s = score_observation(share_observation("stopped_at_first_impact", 0.5), runs);
     CHECK(s.agree);  // 2 of 4 is half: "at least" the share
-    CHECK(s.checks[0].simulation == "2 of 4 runs stopped_at_first_impact (others: 2 failed)");
+    CHECK(s.checks[0].simulation == "2 of 4 seeds stopped_at_first_impact (others: 2 failed)");
     CHECK(s.details["failed_runs"] == 2);
+}
+
+TEST_CASE("scorecard: a grid's share names its least agreeing point", "[scorecard]") {
+    std::vector<ScoredRun> runs = {run("rolled_to_end"), run("rolled_to_end"), run("stopped"), run("rolled_to_end")};
+    runs[2].label = runs[3].label = "q";
+    const ObservationScore s = score_observation(share_observation("rolled_to_end", 0.5), runs);
+    CHECK(s.agree);
+    CHECK(s.checks[0].simulation ==
+          "3 of 4 runs rolled_to_end (others: 1 stopped); least agreeing point q: 1 of 2 seeds rolled_to_end");
+    CHECK(s.details["per_point"].size() == 2);
 }
 
 TEST_CASE("scorecard: a behaviour never seen agrees only when no run shows it", "[scorecard]") {
@@ -91,11 +103,11 @@ TEST_CASE("scorecard: a behaviour never seen agrees only when no run shows it", 
     std::vector<ScoredRun> runs = {run("rolled_to_end"), run("stopped_at_first_impact"), run("rolled_to_end")};
     ObservationScore s = score_observation(ob, runs);
     CHECK(s.agree);
-    CHECK(s.checks[0].simulation == "0 of 3 runs stopped");
+    CHECK(s.checks[0].simulation == "0 of 3 seeds stopped");
     runs[1] = run("stopped", 0.4);
     s = score_observation(ob, runs);
     CHECK_FALSE(s.agree);
-    CHECK(s.checks[0].simulation == "1 of 3 runs stopped");
+    CHECK(s.checks[0].simulation == "1 of 3 seeds stopped");
     CHECK(s.details["runs_showing"].size() == 1);
 }
 
@@ -108,6 +120,7 @@ TEST_CASE("scorecard: the band and D's slope agree when simulated as the paper s
     CHECK(s.checks[0].simulation == "11 deg (3 of 3 seeds stopped)");
     CHECK(*s.checks[0].difference == Approx(0.0));
     CHECK(*s.checks[1].difference == Approx(-0.2));
+    CHECK(scorecard_csv({s}).find(",-0.2,deg,") != std::string::npos);  // rounded, not -0.1999...
     CHECK(*s.checks[2].difference == Approx(-0.05).margin(1e-9));
     CHECK(s.details["fit"]["slope_m_per_deg"].get<double>() == Approx(0.55));
 }
@@ -166,7 +179,7 @@ TEST_CASE("scorecard: files have one CSV row per check", "[scorecard]") {
     const ObservationScore s = score_observation(share_observation("rolled_to_end", 0.5), {run("rolled_to_end")});
     const std::string csv = scorecard_csv({s});
     CHECK(csv == "observation,check,experiment,simulation,agree,difference,unit,by\n"
-                 "share,behaviour share,rolled_to_end in at least 50% of runs,1 of 1 runs rolled_to_end,yes,0.5,share,"
+                 "share,behaviour share,rolled_to_end in at least 50% of runs,1 of 1 seeds rolled_to_end,yes,0.5,share,"
                  "needs 1 of 1: 0 to spare\n");
     const auto doc = scorecard_json({s}, {{"seeds", 1}});
     CHECK(doc["format"] == "polyroll-scorecard-1");

@@ -81,19 +81,34 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
         std::count_if(runs.begin(), runs.end(), [&](const ScoredRun& r) { return r.ok && r.behaviour == b; }));
     const std::size_t good = negative ? n - shown : shown;  // runs that agree with the experiment
     const std::size_t need = needed_count(ob.behaviour_share, n);
+    const json points = per_point(runs, b);
+    // One scene: the runs are its seeds. A grid: the point furthest from the experiment shows the spread.
+    const std::string unit = points.size() == 1 ? "seeds" : "runs";
     ScoreCheck c;
     c.unit = "share";
     if (negative) {
         c.check = "never " + b;
         c.experiment = ob.behaviour_share >= 1.0 ? fmt::format("no run {}", b)
                                                  : fmt::format("at least {:g}% of runs not {}", 100 * ob.behaviour_share, b);
-        c.simulation = fmt::format("{} of {} runs {}", shown, n, b);
+        c.simulation = fmt::format("{} of {} {} {}", shown, n, unit, b);
     } else {
         c.check = "behaviour share";
         c.experiment = fmt::format("{} in at least {:g}% of runs", b, 100 * ob.behaviour_share);
-        c.simulation = fmt::format("{} of {} runs {}", shown, n, b);
+        c.simulation = fmt::format("{} of {} {} {}", shown, n, unit, b);
         const std::string others = others_text(runs, b);
         if (!others.empty()) c.simulation += " (others: " + others + ")";
+    }
+    if (points.size() > 1) {
+        // The point whose seeds agree least: most showing a forbidden behaviour, fewest showing the one seen.
+        const json* worst = nullptr;
+        auto agreeing = [&](const json& p) {
+            const double k = p["showed"].get<double>(), m = p["runs"].get<double>();
+            return negative ? (m - k) / m : k / m;
+        };
+        for (const json& p : points)
+            if (!worst || agreeing(p) < agreeing(*worst)) worst = &p;
+        c.simulation += fmt::format("; least agreeing point {}: {} of {} seeds {}", worst->at("point").get<std::string>(),
+                                    worst->at("showed").get<int>(), worst->at("runs").get<int>(), b);
     }
     c.agree = n > 0 && good >= need;
     if (n > 0) c.difference = static_cast<double>(good) / static_cast<double>(n) - ob.behaviour_share;
@@ -103,7 +118,7 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
         c.by = fmt::format("needs {} of {}: {} to spare", need, n, good - need);
     else
         c.by = fmt::format("needs {} of {}: {} short", need, n, need - good);
-    s.details["per_point"] = per_point(runs, b);
+    s.details["per_point"] = points;
     if (negative) {
         json where = json::array();
         for (const ScoredRun& r : runs)
@@ -234,7 +249,10 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
     if (ob.linear_fit) s.checks.push_back(slope);
 }
 
-std::string difference_cell(const ScoreCheck& c) { return c.difference ? number_cell(*c.difference) : ""; }
+// Rounded to 1e-9, so 14 - 15.2 is written -1.2 and not -1.1999999999999993.
+double rounded(double v) { return std::round(v * 1e9) / 1e9; }
+
+std::string difference_cell(const ScoreCheck& c) { return c.difference ? number_cell(rounded(*c.difference)) : ""; }
 
 }  // namespace
 
@@ -294,7 +312,7 @@ json scorecard_json(const std::vector<ObservationScore>& scores, const json& abo
         json checks = json::array();
         for (const ScoreCheck& c : s.checks)
             checks.push_back(json{{"check", c.check}, {"experiment", c.experiment}, {"simulation", c.simulation},
-                                  {"agree", c.agree}, {"difference", c.difference ? json(*c.difference) : json()},
+                                  {"agree", c.agree}, {"difference", c.difference ? json(rounded(*c.difference)) : json()},
                                   {"unit", c.unit}, {"by", c.by}});
         obs.push_back(json{{"id", s.id}, {"source", s.source}, {"agree", s.agree}, {"checks", checks},
                            {"details", s.details}});
