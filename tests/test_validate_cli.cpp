@@ -73,6 +73,35 @@ TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[val
                                    "--time-limit 1.5 -q --out " + out.string());
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds a different validation"));
+    CHECK(read_file(out / "scorecard.csv") == csv);
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("validate: shards run slices, the command without --shard scores them; --force starts over",
+          "[validate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("validate-shards", true);
+    const fs::path obs = write_observations(scratch, kTinyObservations), out = scratch / "out";
+    const std::string cmd = exe + " validate --observations " + obs.string() + " --seeds 2 --fidelity draft " +
+                            "--time-limit 1.5 --jobs 1 -q --out " + out.string();
+    for (const char* k : {"1/2", "2/2"}) {
+        const auto r = run_command(cmd + " --shard " + k);
+        INFO(r.out);
+        REQUIRE(r.exit_code == 0);
+        CHECK_THAT(r.out, Catch::Contains("without --shard to score"));
+    }
+    CHECK_FALSE(fs::exists(out / "scorecard.csv"));
+    const auto all = run_command(cmd);
+    INFO(all.out);
+    REQUIRE(all.exit_code == 0);
+    CHECK_THAT(all.out, Catch::Contains("0 run now") && Catch::Contains("6 found done before"));
+    CHECK(fs::exists(out / "scorecard.csv"));
+    CHECK(nlohmann::json::parse(read_file(out / "observations.json"))["observations"].size() == 2);
+
+    const auto forced = run_command(exe + " validate --observations " + obs.string() + " --seeds 1 --fidelity draft "
+                                    "--time-limit 1.5 -q --force --out " + out.string());
+    INFO(forced.out);
+    CHECK(forced.exit_code == 0);
+    CHECK_THAT(forced.out, Catch::Contains("3 runs (1 seed each): 3 run now"));
     fs::remove_all(scratch);
 }
 

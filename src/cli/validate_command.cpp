@@ -54,7 +54,8 @@ std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
 
 // The folder's validation files, removed by --force when the folder holds another validation.
 void remove_old_validation(const fs::path& dir) {
-    for (const char* name : {"plan.json", "results.csv", "shards", "runs", "scorecard.csv", "scorecard.json"})
+    for (const char* name : {"plan.json", "results.csv", "shards", "runs", "scorecard.csv", "scorecard.json",
+                             "observations.json"})
         fs::remove_all(dir / name);
 }
 
@@ -115,15 +116,15 @@ int run(const ValidateArgs& a) {
                                          "command {}); allowed: a new folder, the same command to resume, or --force "
                                          "to start over",
                                          a.out, existing.runs.size(), vp.plan.runs.size()));
+        else
+            remove_old_validation(dir);  // its tables and runs are of another plan: never mixed with this one's
     }
     if (fresh) {
-        // A shard may find the folder made by another shard of the same command.
         prepare_output_dir(dir, a.force);
-        if (a.force) remove_old_validation(dir);
         sweep::write_plan(dir, vp.plan);
-        write_file_atomic(dir / "observations.json",
-                          json{{"origin", file.origin}, {"seeds", a.seeds}}.dump(1) + "\n");
     }
+    // The observations as read: what the scorecard in this folder was scored against.
+    write_file_atomic(dir / "observations.json", file.doc.dump(2) + "\n");
 
     sweep::SweepOptions o;
     o.dir = dir;
@@ -143,9 +144,9 @@ int run(const ValidateArgs& a) {
     }
     std::signal(SIGINT, old_int);
     std::signal(SIGTERM, old_term);
-    fmt::print("polyroll validate: {} observations, {} runs ({} seeds each): {} run now ({} failed), {} found done "
+    fmt::print("polyroll validate: {} observations, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
                "before, {}\n",
-               file.observations.size(), vp.plan.runs.size(), a.seeds, r.ran, r.failed, r.already,
+               file.observations.size(), vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
                r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s));
     if (r.interrupted) {
         fmt::print("  interrupted: run the same command again to resume\n");

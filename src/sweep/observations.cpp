@@ -248,6 +248,7 @@ ObservationFile parse_observations(const json& doc, const std::string& origin) {
     if (!list.is_array() || list.empty()) w.fail("observations", list, "a non-empty list of observations");
     ObservationFile file;
     file.origin = origin;
+    file.doc = doc;
     std::set<std::string> ids;
     for (std::size_t i = 0; i < list.size(); ++i) {
         Observation ob = read_observation(origin, list[i], i);

@@ -43,6 +43,7 @@ struct Observation {
 
 struct ObservationFile {
     std::string origin;  // the file name, or "experiment.json (bundled)"
+    nlohmann::ordered_json doc;  // the file as read, for the validation folder's copy
     std::vector<Observation> observations;
 };
 
