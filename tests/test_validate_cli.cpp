@@ -120,6 +120,8 @@ TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing wri
         {"--seed 3", {"--seed"}},
         {"--fidelity nonsense", {"nonsense", "draft"}},
         {"--angle 12", {"ramp.angle_deg"}},  // the bundled file sweeps the angle
+        {"--set fill.material.stickiness=1", {"stickiness", "not a scene field"}},
+        {"--set fill.material.wall_friction=-1", {"wall_friction", "-1"}},
     };
     for (const Case& c : cases) {
         const auto r = run_command(exe + " validate " + c.args + " -q --out " + out.string());

@@ -32,6 +32,7 @@ struct ValidateArgs {
     std::string observations, out = "runs/validate", shard;
     int seeds = 5, jobs = 0;
     bool force = false, quiet = false;
+    std::vector<std::string> sets;  // FIELD=VALUE
     std::map<std::string, std::pair<std::string, CLI::Option*>> scene_text;  // field path -> flag text, its option
 };
 
@@ -48,6 +49,18 @@ std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
         const std::vector<json> v = sweep::parse_grid_values(flag, it->second.first);
         if (v.size() != 1) throw InputError(fmt::format("{} {}: one value (allowed: a single value, applied to every observation)", flag, it->second.first));
         out.emplace_back(std::string(f.path), v.front());
+    }
+    for (const std::string& s : a.sets) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
+        const std::string field = s.substr(0, eq), flag = "--set " + field;
+        sweep::check_scene_field(field, flag);
+        if (field == "run.seed") throw InputError("--set run.seed: not allowed (--seeds N gives the seeds)");
+        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
+        if (v.size() != 1) throw InputError(fmt::format("{}: one value (allowed: a single value, applied to every observation)", flag));
+        out.erase(std::remove_if(out.begin(), out.end(), [&](const auto& o) { return o.first == field; }), out.end());
+        out.emplace_back(field, v.front());
     }
     return out;
 }
@@ -195,6 +208,9 @@ Action add_validate_command(CLI::App& app) {
     sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
                                        "replaced)")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
+    sub->add_option("--set,--param", a->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
+                                              "--set fill.material.wall_friction=0.05 (repeatable)")
+        ->group("Scene");
     // Every scene flag but the seed (--seeds gives those), from the field table.
     for (const SceneField& f : scene_fields()) {
         if (f.flag.empty() || f.type == FieldType::seed) continue;

@@ -315,7 +315,8 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
                 if (ob.angle_range_deg) p["ramp.angle_deg"] = angle;
                 // Resolved now, so a bad value fails before anything is written.
                 try {
-                    SceneLayer layer{json::object(), "observation", {}};
+                    SceneLayer layer{json::object(), "the observation", {}};
+                    for (const auto& [f, v] : overrides) layer.field_labels.emplace_back(f, "the command line");
                     for (const auto& [f, v] : p.items()) {
                         json* node = &layer.doc;
                         std::size_t start = 0;
