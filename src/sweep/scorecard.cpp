@@ -107,8 +107,10 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
         };
         for (const json& p : points)
             if (!worst || agreeing(p) < agreeing(*worst)) worst = &p;
-        c.simulation += fmt::format("; least agreeing point {}: {} of {} seeds {}", worst->at("point").get<std::string>(),
-                                    worst->at("showed").get<int>(), worst->at("runs").get<int>(), b);
+        if (agreeing(*worst) < 1.0)  // every point agreeing fully has no spread worth a word
+            c.simulation += fmt::format("; least agreeing point {}: {} of {} seeds {}",
+                                        worst->at("point").get<std::string>(), worst->at("showed").get<int>(),
+                                        worst->at("runs").get<int>(), b);
     }
     c.agree = n > 0 && good >= need;
     if (n > 0) c.difference = static_cast<double>(good) / static_cast<double>(n) - ob.behaviour_share;
