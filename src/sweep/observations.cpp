@@ -259,7 +259,14 @@ ObservationFile parse_observations(const json& doc, const std::string& origin) {
 }
 
 ObservationFile read_observations(const std::string& path) {
-    if (path.empty()) return parse_observations(assets::file("experiment.json"), "experiment.json (bundled)");
+    if (path.empty()) {
+        // POLYROLL_ASSETS may replace the bundled file: messages name the one read.
+        std::error_code ec;
+        const std::filesystem::path replaced = assets::directory() / "experiment.json";
+        const bool is_replaced = !assets::directory().empty() && std::filesystem::is_regular_file(replaced, ec);
+        return parse_observations(assets::file("experiment.json"),
+                                  is_replaced ? replaced.string() : "experiment.json (bundled)");
+    }
     std::ifstream in(path, std::ios::binary);
     std::error_code ec;
     if (!in || std::filesystem::is_directory(path, ec))
