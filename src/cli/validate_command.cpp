@@ -1,0 +1,228 @@
+// polyroll validate: every observation of an observations file run over seeds on the sweep engine,
+// then scored against the experiment (scorecard.csv, scorecard.json and a table on the terminal).
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "sim/atomic_file.h"
+#include "sim/errors.h"
+#include "sim/scene_fields.h"
+#include "sweep/grid_values.h"
+#include "sweep/observations.h"
+#include "sweep/progress.h"
+#include "sweep/results_table.h"
+#include "sweep/scorecard.h"
+#include "sweep/sweep_runner.h"
+
+namespace polyroll::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+constexpr int kExitInterrupted = 130;
+
+struct ValidateArgs {
+    std::string observations, out = "runs/validate", shard;
+    int seeds = 5, jobs = 0;
+    bool force = false, quiet = false;
+    std::vector<std::string> sets;  // FIELD=VALUE
+    std::map<std::string, std::pair<std::string, CLI::Option*>> scene_text;  // field path -> flag text, its option
+};
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_validate_signal(int) { g_stop = true; }
+
+// The command line's scene flags, as field values put on top of every observation.
+std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
+    std::vector<std::pair<std::string, json>> out;
+    for (const SceneField& f : scene_fields()) {
+        const auto it = a.scene_text.find(std::string(f.path));
+        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
+        const std::string flag = it->second.second->get_name();
+        const std::vector<json> v = sweep::parse_grid_values(flag, it->second.first);
+        if (v.size() != 1) throw InputError(fmt::format("{} {}: one value (allowed: a single value, applied to every observation)", flag, it->second.first));
+        out.emplace_back(std::string(f.path), v.front());
+    }
+    for (const std::string& s : a.sets) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
+        const std::string field = s.substr(0, eq), flag = "--set " + field;
+        sweep::check_scene_field(field, flag);
+        if (field == "run.seed") throw InputError("--set run.seed: not allowed (--seeds N gives the seeds)");
+        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
+        if (v.size() != 1) throw InputError(fmt::format("{}: one value (allowed: a single value, applied to every observation)", flag));
+        out.erase(std::remove_if(out.begin(), out.end(), [&](const auto& o) { return o.first == field; }), out.end());
+        out.emplace_back(field, v.front());
+    }
+    return out;
+}
+
+// The folder's validation files, removed by --force when the folder holds another validation.
+void remove_old_validation(const fs::path& dir) {
+    for (const char* name : {"plan.json", "results.csv", "shards", "runs", "scorecard.csv", "scorecard.json",
+                             "observations.json"})
+        fs::remove_all(dir / name);
+}
+
+std::vector<sweep::ObservationScore> score(const sweep::ObservationFile& file, const sweep::ValidationPlan& vp,
+                                           const fs::path& dir) {
+    const sweep::TableFile t = sweep::read_table(dir / "results.csv");
+    auto col = [&](const std::string& name) {
+        const auto it = std::find(t.header.begin(), t.header.end(), name);
+        if (it == t.header.end()) throw std::runtime_error((dir / "results.csv").string() + ": no column " + name);
+        return static_cast<std::size_t>(it - t.header.begin());
+    };
+    const std::size_t c_index = col("index"), c_id = col("run_id"), c_status = col("status"),
+                      c_behaviour = col("behaviour"), c_distance = col("distance_m"),
+                      c_terminal = col("terminal_velocity_m_s");
+    std::map<std::size_t, const std::vector<std::string>*> rows;
+    for (const auto& r : t.rows) {
+        const std::size_t i = std::stoull(r.at(c_index));
+        if (i < vp.plan.runs.size() && vp.plan.runs[i].id == r.at(c_id)) rows[i] = &r;
+    }
+    std::vector<std::vector<sweep::ScoredRun>> per(file.observations.size());
+    for (const sweep::RunPlace& p : vp.places) {
+        sweep::ScoredRun s;
+        s.angle_deg = p.angle_deg;
+        s.seed = p.seed;
+        s.label = p.label;
+        if (const auto it = rows.find(p.run); it != rows.end()) {
+            const auto& r = *it->second;
+            s.ok = r.at(c_status) == "ok";
+            s.behaviour = r.at(c_behaviour);
+            if (!r.at(c_distance).empty()) s.distance_m = std::stod(r.at(c_distance));
+            if (!r.at(c_terminal).empty()) s.terminal_velocity_m_s = std::stod(r.at(c_terminal));
+        }
+        per[p.observation].push_back(s);
+    }
+    std::vector<sweep::ObservationScore> scores;
+    for (std::size_t i = 0; i < file.observations.size(); ++i)
+        scores.push_back(sweep::score_observation(file.observations[i], per[i]));
+    return scores;
+}
+
+int run(const ValidateArgs& a) {
+    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
+    std::optional<std::pair<int, int>> shard;
+    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
+    const sweep::ObservationFile file = sweep::read_observations(a.observations);
+    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, overrides_of(a));
+
+    const fs::path dir = a.out;
+    std::error_code ec;
+    bool fresh = true;
+    if (fs::exists(sweep::plan_path(dir), ec)) {
+        // Resuming: the folder's plan must be this command's (or --force starts over).
+        const sweep::SweepPlan existing = sweep::read_plan(dir);
+        if (sweep::plan_to_json(existing) == sweep::plan_to_json(vp.plan))
+            fresh = false;
+        else if (!a.force)
+            throw InputError(fmt::format("--out {}: holds a different validation (its plan.json has {} runs, this "
+                                         "command {}); allowed: a new folder, the same command to resume, or --force "
+                                         "to start over",
+                                         a.out, existing.runs.size(), vp.plan.runs.size()));
+        else
+            remove_old_validation(dir);  // its tables and runs are of another plan: never mixed with this one's
+    }
+    if (fresh) {
+        prepare_output_dir(dir, a.force);
+        sweep::write_plan(dir, vp.plan);
+    }
+    // The observations as read: what the scorecard in this folder was scored against.
+    write_file_atomic(dir / "observations.json", file.doc.dump(2) + "\n");
+
+    sweep::SweepOptions o;
+    o.dir = dir;
+    o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    o.shard = shard;
+    o.quiet = a.quiet;
+    g_stop = false;
+    auto old_int = std::signal(SIGINT, on_validate_signal);
+    auto old_term = std::signal(SIGTERM, on_validate_signal);
+    sweep::SweepReport r;
+    try {
+        r = sweep::run_sweep(vp.plan, o, &g_stop);
+    } catch (...) {
+        std::signal(SIGINT, old_int);
+        std::signal(SIGTERM, old_term);
+        throw;
+    }
+    std::signal(SIGINT, old_int);
+    std::signal(SIGTERM, old_term);
+    fmt::print("polyroll validate: {} observations, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
+               "before, {}\n",
+               file.observations.size(), vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
+               r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s));
+    if (r.interrupted) {
+        fmt::print("  interrupted: run the same command again to resume\n");
+        return kExitInterrupted;
+    }
+    if (shard) {
+        fmt::print("  shard {}/{} done; when every shard is, run the same command without --shard to score\n",
+                   shard->first, shard->second);
+        return kExitOk;
+    }
+    const std::vector<sweep::ObservationScore> scores = score(file, vp, dir);
+    const json about = {{"observations_file", file.origin}, {"seeds", a.seeds}, {"runs", vp.plan.runs.size()},
+                        {"overrides", [&] {
+                             json o2 = json::object();
+                             for (const auto& [f, v] : overrides_of(a)) o2[f] = v;
+                             return o2;
+                         }()}};
+    write_file_atomic(dir / "scorecard.csv", sweep::scorecard_csv(scores));
+    write_file_atomic(dir / "scorecard.json", sweep::scorecard_json(scores, about).dump(1) + "\n");
+    fmt::print("\n{}", sweep::scorecard_text(scores));
+    fmt::print("  scorecard  {}  {}\n", (dir / "scorecard.csv").string(), (dir / "scorecard.json").string());
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_validate_command(CLI::App& app) {
+    auto a = std::make_shared<ValidateArgs>();
+    CLI::App* sub = app.add_subcommand("validate", "run the experiment's observations over seeds and score the "
+                                                   "simulation against them");
+    sub->footer(
+        "Observations: assets/experiment.json (bundled) or --observations FILE of the same form (its \"format\"\n"
+        "block describes every key). Scene flags apply on top of every observation.\n"
+        "Examples:\n"
+        "  polyroll validate --seeds 3 --out runs/validate\n"
+        "  polyroll validate --observations my-lab.json --fidelity draft --jobs 2\n"
+        "  polyroll validate ... --shard 2/4    # one slice; then the same command without --shard scores\n"
+        "The same command resumes. Exit codes: 0 ran (agreement or not is in the scorecard), 2 bad input,\n"
+        "130 interrupted (resume with the same command), 1 other failure.");
+    sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
+    sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json "
+                                     "(default runs/validate); the same command there resumes");
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    sub->add_option("--shard", a->shard, "run slice K of N only (runs whose index is K-1 modulo N)")->group("Running");
+    sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
+                                       "replaced)")->group("Running");
+    sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
+    sub->add_option("--set,--param", a->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
+                                              "--set fill.material.wall_friction=0.05 (repeatable)")
+        ->group("Scene");
+    // Every scene flag but the seed (--seeds gives those), from the field table.
+    for (const SceneField& f : scene_fields()) {
+        if (f.flag.empty() || f.type == FieldType::seed) continue;
+        const std::string path(f.path);
+        CLI::Option* o = sub->add_option_function<std::string>(
+                                std::string(f.flag),
+                                [a, path](const std::string& v) { a->scene_text[path].first = v; },
+                                field_help(f) + " (on top of every observation)")
+                             ->group("Scene");
+        a->scene_text[path] = {"", o};
+    }
+    return [a] { return run(*a); };
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,377 @@
+// Reading observations files and expanding them into one sweep plan: see observations.h.
+#include "sweep/observations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "sim/assets.h"
+#include "sim/errors.h"
+#include "sim/message_text.h"
+#include "sim/scene_fields.h"
+#include "sim/scene_json.h"
+#include "sweep/grid_values.h"
+
+namespace polyroll::sweep {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Observations files are small; the cap keeps a wrong path (a log, /dev/zero) from filling memory.
+constexpr std::size_t kMaxObservationFileBytes = 4 << 20;
+
+const std::vector<std::string> kBehaviours = {"stopped_at_first_impact", "stopped", "rolled_to_end"};
+
+// Builds the one-line messages: "FILE: observation 'ID': KEY = VALUE is not allowed (allowed: ...)".
+struct Where {
+    std::string origin, id;
+    [[noreturn]] void fail(const std::string& key, const json& value, const std::string& allowed) const {
+        const std::string who = id.empty() ? origin : fmt::format("{}: observation '{}'", origin, id);
+        throw InputError(fmt::format("{}: {} = {} is not allowed (allowed: {})", who, key,
+                                     printable_line(value.dump()), allowed));
+    }
+    [[noreturn]] void missing(const std::string& key, const std::string& allowed) const {
+        const std::string who = id.empty() ? origin : fmt::format("{}: observation '{}'", origin, id);
+        throw InputError(fmt::format("{}: {} is missing (allowed: {})", who, key, allowed));
+    }
+};
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
+void check_keys(const Where& w, const std::string& prefix, const json& obj, const std::vector<std::string>& allowed) {
+    for (const auto& [k, v] : obj.items())
+        if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
+            w.fail(prefix + k, v, "the keys " + joined(allowed));
+}
+
+bool is_field(const std::string& path) {
+    for (const SceneField& f : scene_fields())
+        if (f.path == path) return true;
+    return false;
+}
+
+std::string field_list() {
+    std::vector<std::string> paths;
+    for (const SceneField& f : scene_fields()) paths.emplace_back(f.path);
+    return "scene fields: " + joined(paths);
+}
+
+// {"fill": {"ratio": 0.25, "material": "bb"}} -> fill.ratio = 0.25, fill.material.preset = "bb".
+void flatten_scene(const Where& w, const json& doc, const std::string& prefix, json& out) {
+    for (const auto& [k, v] : doc.items()) {
+        const std::string path = prefix.empty() ? k : prefix + "." + k;
+        if (v.is_object())
+            flatten_scene(w, v, path, out);
+        else if (v.is_string() && !is_field(path) && is_field(path + ".preset"))
+            out[path + ".preset"] = v;
+        else if (is_field(path))
+            out[path] = v;
+        else
+            w.fail("scene." + path, v, field_list());
+    }
+}
+
+double number_in(const Where& w, const std::string& key, const json& v, double lo, double hi, bool lo_open,
+                 const std::string& allowed) {
+    if (!v.is_number()) w.fail(key, v, allowed);
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x > hi || x < lo || (lo_open && x == lo)) w.fail(key, v, allowed);
+    return x;
+}
+
+std::string string_of(const Where& w, const std::string& key, const json& v) {
+    if (!v.is_string()) w.fail(key, v, "text");
+    return v.get<std::string>();
+}
+
+std::string behaviour_of(const Where& w, const std::string& key, const json& v) {
+    if (!v.is_string() || std::find(kBehaviours.begin(), kBehaviours.end(), v.get<std::string>()) == kBehaviours.end())
+        w.fail(key, v, joined(kBehaviours));
+    return v.get<std::string>();
+}
+
+void read_observed(const Where& w, const json& o, Observation& ob) {
+    check_keys(w, "observed.", o, {"behaviour", "not_behaviour", "linear_fit", "terminal_velocity"});
+    if (o.contains("behaviour")) ob.behaviour = behaviour_of(w, "observed.behaviour", o["behaviour"]);
+    if (o.contains("not_behaviour")) ob.not_behaviour = behaviour_of(w, "observed.not_behaviour", o["not_behaviour"]);
+    if (ob.behaviour.empty() == ob.not_behaviour.empty())
+        w.fail("observed", o, "exactly one of 'behaviour' and 'not_behaviour'");
+    if (o.contains("terminal_velocity"))
+        ob.terminal_velocity = string_of(w, "observed.terminal_velocity", o["terminal_velocity"]);
+    if (o.contains("linear_fit")) {
+        const json& f = o["linear_fit"];
+        if (!f.is_object()) w.fail("observed.linear_fit", f, "an object with slope_m_per_deg and intercept_m");
+        check_keys(w, "observed.linear_fit.", f, {"slope_m_per_deg", "intercept_m", "r_squared", "distance_uncertainty_m"});
+        LinearFit fit;
+        if (!f.contains("slope_m_per_deg")) w.missing("observed.linear_fit.slope_m_per_deg", "a number in m/deg");
+        if (!f.contains("intercept_m")) w.missing("observed.linear_fit.intercept_m", "a number in m");
+        fit.slope_m_per_deg = number_in(w, "observed.linear_fit.slope_m_per_deg", f["slope_m_per_deg"], -1e6, 1e6,
+                                        false, "a number in m/deg, not 0");
+        if (fit.slope_m_per_deg == 0.0) w.fail("observed.linear_fit.slope_m_per_deg", f["slope_m_per_deg"], "a number in m/deg, not 0");
+        fit.intercept_m = number_in(w, "observed.linear_fit.intercept_m", f["intercept_m"], -1e6, 1e6, false, "a number in m");
+        if (f.contains("r_squared"))
+            fit.r_squared = number_in(w, "observed.linear_fit.r_squared", f["r_squared"], 0, 1, false, "from 0 to 1");
+        if (f.contains("distance_uncertainty_m"))
+            fit.distance_uncertainty_m = number_in(w, "observed.linear_fit.distance_uncertainty_m",
+                                                   f["distance_uncertainty_m"], 0, 1e6, false, "0 m or more");
+        ob.linear_fit = fit;
+    }
+}
+
+void read_tolerance(const Where& w, const json& t, Observation& ob) {
+    check_keys(w, "tolerance.", t, {"behaviour_share", "angle_range_deg", "slope_relative", "reason"});
+    if (t.contains("behaviour_share"))
+        ob.behaviour_share = number_in(w, "tolerance.behaviour_share", t["behaviour_share"], 0, 1, true,
+                                       "a share above 0 and at most 1");
+    else if (!ob.angle_range_deg)
+        w.missing("tolerance.behaviour_share", "a share above 0 and at most 1");
+    if (ob.angle_range_deg) {
+        if (!t.contains("angle_range_deg")) w.missing("tolerance.angle_range_deg", "degrees above 0");
+        if (!t.contains("slope_relative")) w.missing("tolerance.slope_relative", "a share above 0");
+        ob.angle_tolerance_deg = number_in(w, "tolerance.angle_range_deg", t["angle_range_deg"], 0, 90, true,
+                                           "degrees above 0, at most 90");
+        ob.slope_relative = number_in(w, "tolerance.slope_relative", t["slope_relative"], 0, 100, true,
+                                      "a share above 0");
+    } else {
+        for (const char* k : {"angle_range_deg", "slope_relative"})
+            if (t.contains(k)) w.fail(std::string("tolerance.") + k, t[k], "only with an angle_range_deg observation");
+    }
+    if (t.contains("reason")) ob.reason = string_of(w, "tolerance.reason", t["reason"]);
+}
+
+// "angles_deg": {"from": 9, "to": 17, "step": 0.25} or a list of angles.
+std::vector<double> read_angles(const Where& w, const json& a) {
+    const std::string allowed = "a list of angles or {\"from\", \"to\", \"step\"} in degrees, from 0 to 89";
+    std::vector<double> out;
+    if (a.is_array()) {
+        for (const json& v : a) out.push_back(number_in(w, "angles_deg", v, 0, 89, false, allowed));
+    } else if (a.is_object()) {
+        check_keys(w, "angles_deg.", a, {"from", "to", "step"});
+        for (const char* k : {"from", "to", "step"})
+            if (!a.contains(k)) w.missing(std::string("angles_deg.") + k, allowed);
+        const double from = number_in(w, "angles_deg.from", a["from"], 0, 89, false, allowed);
+        const double to = number_in(w, "angles_deg.to", a["to"], from, 89, false, "from 'from' to 89 degrees");
+        const double step = number_in(w, "angles_deg.step", a["step"], 0, 89, true, "above 0 degrees");
+        try {
+            out = inclusive_range("angles_deg", from, to, step, 1000);
+        } catch (const InputError&) {
+            w.fail("angles_deg", a, "at most 1000 angles");
+        }
+    } else {
+        w.fail("angles_deg", a, allowed);
+    }
+    std::sort(out.begin(), out.end());
+    if (out.empty() || std::adjacent_find(out.begin(), out.end()) != out.end())
+        w.fail("angles_deg", a, "at least one angle, each once");
+    return out;
+}
+
+Observation read_observation(const std::string& origin, const json& e, std::size_t n) {
+    Where w{origin, ""};
+    if (!e.is_object()) w.fail(fmt::format("observations[{}]", n), e, "an object");
+    if (!e.contains("id") || !e["id"].is_string() || e["id"].get<std::string>().empty())
+        w.fail(fmt::format("observations[{}].id", n), e.value("id", json()), "a short unique name");
+    Observation ob;
+    ob.id = e["id"].get<std::string>();
+    w.id = ob.id;
+    check_keys(w, "", e, {"id", "source", "scene", "grid", "angle_range_deg", "angles_deg", "observed", "tolerance", "notes"});
+    if (!e.contains("source")) w.missing("source", "where the observation comes from, as text");
+    ob.source = string_of(w, "source", e["source"]);
+    if (e.contains("notes")) string_of(w, "notes", e["notes"]);
+    if (e.contains("scene")) {
+        if (!e["scene"].is_object()) w.fail("scene", e["scene"], "a partial scene, as in a scene file");
+        flatten_scene(w, e["scene"], "", ob.scene);
+    }
+    if (e.contains("grid")) {
+        const json& g = e["grid"];
+        if (!g.is_object()) w.fail("grid", g, "an object of scene field paths and lists of values");
+        for (const auto& [path, values] : g.items()) {
+            if (!is_field(path)) w.fail("grid." + path, values, field_list());
+            if (path == "run.seed") w.fail("grid.run.seed", values, "no seeds in a grid: polyroll validate --seeds N");
+            if (!values.is_array() || values.empty()) w.fail("grid." + path, values, "a non-empty list of values");
+            std::set<std::string> seen;
+            for (const json& v : values)
+                if (!seen.insert(v.dump()).second) w.fail("grid." + path, values, "each value once");
+            ob.grid.emplace_back(path, std::vector<json>(values.begin(), values.end()));
+        }
+    }
+    if (ob.scene.contains("run.seed")) w.fail("scene.run.seed", ob.scene["run.seed"], "no seed: polyroll validate --seeds N");
+    if (!e.contains("observed")) w.missing("observed", "an object: behaviour or not_behaviour, ...");
+    if (!e["observed"].is_object()) w.fail("observed", e["observed"], "an object: behaviour or not_behaviour, ...");
+    read_observed(w, e["observed"], ob);
+    if (e.contains("angle_range_deg")) {
+        const json& r = e["angle_range_deg"];
+        const std::string allowed = "[from, to] in degrees, from < to, within 0 to 89";
+        if (!r.is_array() || r.size() != 2) w.fail("angle_range_deg", r, allowed);
+        const double lo = number_in(w, "angle_range_deg", r[0], 0, 89, false, allowed);
+        const double hi = number_in(w, "angle_range_deg", r[1], 0, 89, false, allowed);
+        if (!(lo < hi)) w.fail("angle_range_deg", r, allowed);
+        ob.angle_range_deg = std::make_pair(lo, hi);
+        if (ob.behaviour.empty())
+            w.fail("observed", e["observed"], "an angle-range observation names the 'behaviour' of its band");
+        if (!e.contains("angles_deg"))
+            w.missing("angles_deg", "the angles to simulate, reaching past both ends of angle_range_deg");
+        ob.angles_deg = read_angles(w, e["angles_deg"]);
+        if (ob.angles_deg.front() > lo || ob.angles_deg.back() < hi)
+            w.fail("angles_deg", e["angles_deg"], fmt::format("angles reaching from {} degrees or below to {} or above, "
+                                                              "to find the band's ends", lo, hi));
+        if (ob.scene.contains("ramp.angle_deg")) w.fail("scene.ramp.angle_deg", ob.scene["ramp.angle_deg"], "no angle: angles_deg gives them");
+        for (const auto& [path, values] : ob.grid)
+            if (path == "ramp.angle_deg") w.fail("grid.ramp.angle_deg", json(values), "no angle: angles_deg gives them");
+    } else {
+        if (e.contains("angles_deg")) w.fail("angles_deg", e["angles_deg"], "only with angle_range_deg");
+        if (ob.linear_fit) w.fail("observed.linear_fit", e["observed"]["linear_fit"], "only with angle_range_deg");
+    }
+    if (!e.contains("tolerance")) w.missing("tolerance", "an object: behaviour_share, or angle_range_deg and slope_relative");
+    if (!e["tolerance"].is_object()) w.fail("tolerance", e["tolerance"], "an object");
+    read_tolerance(w, e["tolerance"], ob);
+    return ob;
+}
+
+}  // namespace
+
+ObservationFile parse_observations(const json& doc, const std::string& origin) {
+    const Where w{origin, ""};
+    if (!doc.is_object()) w.fail("the document", doc, "an object with \"observations\"");
+    check_keys(w, "", doc, {"about", "format", "observations"});
+    if (!doc.contains("observations")) w.missing("observations", "a list of observations");
+    const json& list = doc["observations"];
+    if (!list.is_array() || list.empty()) w.fail("observations", list, "a non-empty list of observations");
+    ObservationFile file;
+    file.origin = origin;
+    file.doc = doc;
+    std::set<std::string> ids;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        Observation ob = read_observation(origin, list[i], i);
+        if (!ids.insert(ob.id).second) w.fail(fmt::format("observations[{}].id", i), json(ob.id), "each id once");
+        file.observations.push_back(std::move(ob));
+    }
+    return file;
+}
+
+ObservationFile read_observations(const std::string& path) {
+    if (path.empty()) {
+        // POLYROLL_ASSETS may replace the bundled file: messages name the one read.
+        std::error_code ec;
+        const std::filesystem::path replaced = assets::directory() / "experiment.json";
+        const bool is_replaced = !assets::directory().empty() && std::filesystem::is_regular_file(replaced, ec);
+        return parse_observations(assets::file("experiment.json"),
+                                  is_replaced ? replaced.string() : "experiment.json (bundled)");
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    if (!in || std::filesystem::is_directory(path, ec))
+        throw InputError(fmt::format("--observations {}: cannot be read (allowed: an observations file, JSON)", path));
+    std::string text(kMaxObservationFileBytes + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxObservationFileBytes)
+        throw InputError(fmt::format("--observations {}: larger than {} bytes (allowed: an observations file, JSON)",
+                                     path, kMaxObservationFileBytes));
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw InputError(fmt::format("--observations {}: not valid JSON ({})", path, printable_line(e.what())));
+    }
+    return parse_observations(doc, path);
+}
+
+ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
+                                   const std::vector<std::pair<std::string, json>>& overrides) {
+    // Every observation's points first, with their place; then one plan over the union of their fields.
+    struct Point {
+        json fields;  // path -> value, without the seed
+        RunPlace place;
+    };
+    std::vector<Point> points;
+    std::vector<std::string> order;  // fields in order of first use
+    auto use = [&](const std::string& f) {
+        if (std::find(order.begin(), order.end(), f) == order.end()) order.push_back(f);
+    };
+    for (std::size_t oi = 0; oi < file.observations.size(); ++oi) {
+        const Observation& ob = file.observations[oi];
+        const Where w{file.origin, ob.id};
+        for (const auto& [f, v] : overrides)
+            for (const auto& [g, values] : ob.grid)
+                if (g == f) w.fail("grid." + g, json(values), "no grid over a field the command line sets (" + f + ")");
+        // Grid combinations, the first axis varying slowest.
+        std::vector<std::size_t> digit(ob.grid.size(), 0);
+        std::size_t combos = 1;
+        for (const auto& g : ob.grid) combos *= g.second.size();
+        const std::vector<double> angles = ob.angle_range_deg ? ob.angles_deg : std::vector<double>{0.0};
+        for (std::size_t c = 0; c < combos; ++c) {
+            json point = ob.scene;
+            std::string label;
+            for (std::size_t a = 0; a < ob.grid.size(); ++a) {
+                point[ob.grid[a].first] = ob.grid[a].second[digit[a]];
+                label += (label.empty() ? "" : " ") + ob.grid[a].first + "=" + value_text(ob.grid[a].second[digit[a]]);
+            }
+            for (const auto& [f, v] : overrides) point[f] = v;
+            for (double angle : angles) {
+                json p = point;
+                if (ob.angle_range_deg) p["ramp.angle_deg"] = angle;
+                // Resolved now, so a bad value fails before anything is written.
+                try {
+                    SceneLayer layer{json::object(), "the observation", {}};
+                    for (const auto& [f, v] : overrides) layer.field_labels.emplace_back(f, "the command line");
+                    for (const auto& [f, v] : p.items()) {
+                        json* node = &layer.doc;
+                        std::size_t start = 0;
+                        for (std::size_t dot = f.find('.'); dot != std::string::npos; dot = f.find('.', start)) {
+                            node = &(*node)[f.substr(start, dot - start)];
+                            start = dot + 1;
+                        }
+                        (*node)[f.substr(start)] = v;
+                    }
+                    resolve_scene({layer});
+                } catch (const InputError& e) {
+                    throw InputError(fmt::format("{}: observation '{}'{}: {}", file.origin, ob.id,
+                                                 label.empty() ? "" : " at " + label, e.what()));
+                }
+                for (const auto& [f, v] : p.items()) use(f);
+                for (int s = 1; s <= seeds; ++s) {
+                    RunPlace place{oi, 0, ob.angle_range_deg ? angle : 0.0, static_cast<std::uint64_t>(s), label};
+                    points.push_back({p, place});
+                }
+            }
+            for (std::size_t a = ob.grid.size(); a-- > 0;) {
+                if (++digit[a] < ob.grid[a].second.size()) break;
+                digit[a] = 0;
+            }
+        }
+    }
+    ValidationPlan vp;
+    vp.plan.base = json::object();
+    std::stable_partition(order.begin(), order.end(), [](const std::string& f) { return f != "ramp.angle_deg"; });
+    order.push_back("run.seed");
+    vp.plan.fields = order;
+    vp.plan.flags = order;
+    std::map<std::string, std::size_t> planned;  // a point's text -> its run
+    for (Point& p : points) {
+        p.fields["run.seed"] = p.place.seed;
+        json ordered = json::object();
+        for (const std::string& f : order)
+            if (p.fields.contains(f)) ordered[f] = p.fields[f];
+        const std::string key = ordered.dump();
+        auto it = planned.find(key);
+        if (it == planned.end()) {
+            add_run(vp.plan, ordered);
+            it = planned.emplace(key, vp.plan.runs.size() - 1).first;
+        }
+        p.place.run = it->second;
+        vp.places.push_back(p.place);
+    }
+    return vp;
+}
+
+}  // namespace polyroll::sweep

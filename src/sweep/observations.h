@@ -1,0 +1,76 @@
+// What an experiment observed, read from an observations file (assets/experiment.json or a lab's own),
+// and its expansion into one sweep plan: every observation's scenes, grid, angles and seeds.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sweep/sweep_plan.h"
+
+namespace polyroll::sweep {
+
+struct LinearFit {
+    double slope_m_per_deg = 0.0;
+    double intercept_m = 0.0;
+    std::optional<double> r_squared;
+    std::optional<double> distance_uncertainty_m;
+};
+
+struct Observation {
+    std::string id;
+    std::string source;
+    nlohmann::ordered_json scene = nlohmann::ordered_json::object();  // field path -> value, flattened
+    std::vector<std::pair<std::string, std::vector<nlohmann::ordered_json>>> grid;  // field path -> values
+    // Observed: exactly one of behaviour and not_behaviour.
+    std::string behaviour;      // "rolled_to_end", "stopped", "stopped_at_first_impact" or ""
+    std::string not_behaviour;  // a behaviour no run may show, or ""
+    std::string terminal_velocity;  // the source's words, reported but not scored
+    // An angle-range observation: the band where `behaviour` shows, D against theta over it, and the
+    // angles to simulate (reaching past both ends, to find them).
+    std::optional<std::pair<double, double>> angle_range_deg;
+    std::optional<LinearFit> linear_fit;
+    std::vector<double> angles_deg;
+    // Tolerances.
+    double behaviour_share = 1.0;   // least share of runs showing `behaviour` (or not showing not_behaviour)
+    double angle_tolerance_deg = 0.0;
+    double slope_relative = 0.0;
+    std::string reason;
+};
+
+struct ObservationFile {
+    std::string origin;  // the file name, or "experiment.json (bundled)"
+    nlohmann::ordered_json doc;  // the file as read, for the validation folder's copy
+    std::vector<Observation> observations;
+};
+
+// Checks and reads an observations document; InputError (one line naming `origin`, the observation
+// id, the key, the value and what is allowed) for anything wrong.
+ObservationFile parse_observations(const nlohmann::ordered_json& doc, const std::string& origin);
+// The bundled assets/experiment.json, or a file on disk.
+ObservationFile read_observations(const std::string& path);
+
+// One planned run's place: which observation, at which angle (angle-range ones) and grid point.
+struct RunPlace {
+    std::size_t observation = 0;
+    std::size_t run = 0;        // index into the plan
+    double angle_deg = 0.0;     // for angle-range observations
+    std::uint64_t seed = 0;
+    std::string label;          // the grid point, e.g. "shell.preset=octagon-small fill.ratio=0.5"
+};
+
+struct ValidationPlan {
+    SweepPlan plan;
+    std::vector<RunPlace> places;  // one per observation run (a run shared by two observations is listed twice)
+};
+
+// Every observation's runs: its scene, each grid combination, each angle, seeds 1..seeds, with
+// `overrides` (field path -> value, from the command line) on top of each. A run two observations
+// share is planned once. Each point is resolved now: a bad value is an InputError naming the observation.
+ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
+                                   const std::vector<std::pair<std::string, nlohmann::ordered_json>>& overrides);
+
+}  // namespace polyroll::sweep

@@ -1,0 +1,59 @@
+// Scoring runs against observations: per observation, what the simulation showed over its seeds,
+// whether that agrees with the experiment within the observation's tolerance, and by how much.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sweep/observations.h"
+
+namespace polyroll::sweep {
+
+// One run of an observation as the results table recorded it.
+struct ScoredRun {
+    double angle_deg = 0.0;   // angle-range observations
+    std::uint64_t seed = 0;
+    std::string label;        // the grid point
+    bool ok = false;          // false: failed (invalid point, error, diverged) or missing
+    std::string behaviour;    // as in the table: rolled_to_end, stopped, ...
+    double distance_m = 0.0;
+    std::optional<double> terminal_velocity_m_s;
+};
+
+// One line of the scorecard.
+struct ScoreCheck {
+    std::string check;       // "behaviour share", "band start", "band end", "D slope", ...
+    std::string experiment;  // what the experiment saw, with its tolerance
+    std::string simulation;  // what the runs showed, with the seed spread
+    bool agree = false;
+    std::optional<double> difference;  // simulation minus experiment, in `unit` (none when nothing to compare)
+    std::string unit;                  // "share", "deg", "m/deg"
+    std::string by;                    // the difference in words: "+2.5 deg, 1.5 beyond the tolerance of 1 deg"
+};
+
+struct ObservationScore {
+    std::string id;
+    std::string source;
+    bool agree = false;  // every check agrees
+    std::vector<ScoreCheck> checks;
+    nlohmann::ordered_json details = nlohmann::ordered_json::object();  // per-angle spread, fits, failures
+};
+
+ObservationScore score_observation(const Observation& ob, const std::vector<ScoredRun>& runs);
+
+// Least squares line y = slope x + intercept with R^2; empty with fewer than two distinct x.
+struct LineFit {
+    double slope = 0.0, intercept = 0.0, r_squared = 0.0;
+};
+std::optional<LineFit> fit_line(const std::vector<std::pair<double, double>>& xy);
+
+// The scorecard as files: CSV (one row per check) and JSON (every observation with its details).
+std::string scorecard_csv(const std::vector<ObservationScore>& scores);
+nlohmann::ordered_json scorecard_json(const std::vector<ObservationScore>& scores, const nlohmann::ordered_json& about);
+// The table printed on the terminal.
+std::string scorecard_text(const std::vector<ObservationScore>& scores);
+
+}  // namespace polyroll::sweep

@@ -1,0 +1,135 @@
+// polyroll validate as users run it: a tiny observations file run, scored and resumed; a malformed
+// file and a folder holding another validation refused with one line and exit 2, nothing written.
+#include <catch2/catch.hpp>
+
+#include "test_helpers.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using polyroll::test::read_file;
+using polyroll::test::run_command;
+
+const std::string exe = POLYROLL_EXE;
+
+// Two observations, six runs at draft fidelity over a short time: fast, and deterministic.
+const char* kTinyObservations = R"({
+  "observations": [
+    { "id": "hexagon-20", "source": "test",
+      "scene": { "shell": "hexagon-small", "fill": { "ratio": 0.25, "material": "bb" }, "ramp": { "preset": "air-track", "angle_deg": 20 } },
+      "observed": { "behaviour": "rolled_to_end" },
+      "tolerance": { "behaviour_share": 0.5 } },
+    { "id": "octagon-band", "source": "test",
+      "scene": { "shell": "octagon-small", "fill": { "ratio": 0.375, "material": "bb" }, "ramp": "air-track" },
+      "angle_range_deg": [11, 15],
+      "angles_deg": [10, 16],
+      "observed": { "behaviour": "stopped", "linear_fit": { "slope_m_per_deg": 0.6, "intercept_m": -6.61 } },
+      "tolerance": { "angle_range_deg": 1, "slope_relative": 0.3 } }
+  ]})";
+
+fs::path write_observations(const fs::path& dir, const std::string& text) {
+    fs::create_directories(dir);
+    const fs::path p = dir / "obs.json";
+    std::ofstream(p) << text;
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[validate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("validate-cli", true);
+    const fs::path obs = write_observations(scratch, kTinyObservations), out = scratch / "out";
+    const std::string cmd = exe + " validate --observations " + obs.string() + " --seeds 2 --fidelity draft " +
+                            "--time-limit 1.5 --jobs 2 -q --out " + out.string();
+    const auto first = run_command(cmd);
+    INFO(first.out);
+    REQUIRE(first.exit_code == 0);
+    CHECK_THAT(first.out, Catch::Contains("6 runs") && Catch::Contains("hexagon-20") && Catch::Contains("band start"));
+    const std::string csv = read_file(out / "scorecard.csv");
+    CHECK(csv.rfind("observation,check,experiment,simulation,agree,difference,unit,by\n", 0) == 0);
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 5);  // header, one share check, three band checks
+    const auto doc = nlohmann::json::parse(read_file(out / "scorecard.json"));
+    CHECK(doc["format"] == "polyroll-scorecard-1");
+    CHECK(doc["observations_total"] == 2);
+    CHECK(doc["seeds"] == 2);
+    CHECK(doc["overrides"]["fidelity.preset"] == "draft");
+    CHECK(doc["observations"][1]["details"]["per_angle"].size() == 2);
+
+    // The same command resumes: nothing left to run, the same scorecard.
+    const auto again = run_command(cmd);
+    INFO(again.out);
+    CHECK(again.exit_code == 0);
+    CHECK_THAT(again.out, Catch::Contains("6 found done before"));
+    CHECK(read_file(out / "scorecard.csv") == csv);
+
+    // Another command in the same folder is refused, unless --force starts over.
+    const auto other = run_command(exe + " validate --observations " + obs.string() + " --seeds 1 --fidelity draft "
+                                   "--time-limit 1.5 -q --out " + out.string());
+    CHECK(other.exit_code == 2);
+    CHECK_THAT(other.out, Catch::Contains("holds a different validation"));
+    CHECK(read_file(out / "scorecard.csv") == csv);
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("validate: shards run slices, the command without --shard scores them; --force starts over",
+          "[validate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("validate-shards", true);
+    const fs::path obs = write_observations(scratch, kTinyObservations), out = scratch / "out";
+    const std::string cmd = exe + " validate --observations " + obs.string() + " --seeds 2 --fidelity draft " +
+                            "--time-limit 1.5 --jobs 1 -q --out " + out.string();
+    for (const char* k : {"1/2", "2/2"}) {
+        const auto r = run_command(cmd + " --shard " + k);
+        INFO(r.out);
+        REQUIRE(r.exit_code == 0);
+        CHECK_THAT(r.out, Catch::Contains("without --shard to score"));
+    }
+    CHECK_FALSE(fs::exists(out / "scorecard.csv"));
+    const auto all = run_command(cmd);
+    INFO(all.out);
+    REQUIRE(all.exit_code == 0);
+    CHECK_THAT(all.out, Catch::Contains("0 run now") && Catch::Contains("6 found done before"));
+    CHECK(fs::exists(out / "scorecard.csv"));
+    CHECK(nlohmann::json::parse(read_file(out / "observations.json"))["observations"].size() == 2);
+
+    const auto forced = run_command(exe + " validate --observations " + obs.string() + " --seeds 1 --fidelity draft "
+                                    "--time-limit 1.5 -q --force --out " + out.string());
+    INFO(forced.out);
+    CHECK(forced.exit_code == 0);
+    CHECK_THAT(forced.out, Catch::Contains("3 runs (1 seed each): 3 run now"));
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing written", "[validate][cli][bad-input]") {
+    const fs::path scratch = polyroll::test::scratch_dir("validate-bad", true);
+    std::string text = kTinyObservations;
+    text.replace(text.find("\"behaviour_share\": 0.5"), 22, "\"behaviour_share\": 7");
+    const fs::path obs = write_observations(scratch, text), out = scratch / "out";
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"--observations " + obs.string(), {"'hexagon-20'", "tolerance.behaviour_share", "7", "at most 1"}},
+        {"--observations " + (scratch / "none.json").string(), {"cannot be read"}},
+        {"--seed 3", {"--seed"}},
+        {"--fidelity nonsense", {"nonsense", "draft"}},
+        {"--angle 12", {"ramp.angle_deg"}},  // the bundled file sweeps the angle
+        {"--set fill.material.stickiness=1", {"stickiness", "not a scene field"}},
+        {"--set fill.material.wall_friction=-1", {"wall_friction", "-1"}},
+    };
+    for (const Case& c : cases) {
+        const auto r = run_command(exe + " validate " + c.args + " -q --out " + out.string());
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        for (const std::string& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
+        CHECK_FALSE(fs::exists(out));
+    }
+    fs::remove_all(scratch);
+}
