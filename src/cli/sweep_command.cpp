@@ -1,18 +1,15 @@
 // polyroll sweep: a grid of scenes run in parallel into one results table; --plan-only, --from with
 // --shard and --merge spread the same grid over hosts. See docs/sweeps.md.
 #include <algorithm>
-#include <atomic>
 #include <map>
 #include <optional>
-#include <csignal>
 #include <filesystem>
 #include <thread>
-
-#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/interruptible_sweep.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
@@ -31,7 +28,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 // 128 + SIGINT, what shells report for a command stopped by Ctrl-C.
-constexpr int kExitInterrupted = 130;
 
 // The swept scene flags: the fields with a sweep_axis in sim/scene_fields.cpp, in the plan's axis
 // order (the last varies fastest; the seed comes last).
@@ -61,18 +57,6 @@ struct SweepArgs {
     std::vector<CLI::Option*> scene_options;  // every option that defines the grid
 };
 
-std::atomic<bool> g_stop{false};
-
-extern "C" void on_signal(int sig) {
-    if (g_stop.exchange(true)) {  // the second Ctrl-C stops at once; the tables stay consistent
-        std::signal(sig, SIG_DFL);
-        std::raise(sig);
-        return;
-    }
-    const char msg[] = "\npolyroll sweep: stopping after the runs in flight (Ctrl-C again to stop now; "
-                       "the same command resumes)\n";
-    [[maybe_unused]] auto n = ::write(2, msg, sizeof msg - 1);
-}
 
 sweep::SweepPlan plan_from_args(const SweepArgs& a) {
     json base = json::object();
@@ -189,19 +173,7 @@ int run(const SweepArgs& a) {
     o.retry_failed = a.retry_failed;
     o.quiet = a.quiet;
 
-    g_stop = false;
-    auto old_int = std::signal(SIGINT, on_signal);
-    auto old_term = std::signal(SIGTERM, on_signal);
-    sweep::SweepReport r;
-    try {
-        r = sweep::run_sweep(plan, o, &g_stop);
-    } catch (...) {
-        std::signal(SIGINT, old_int);
-        std::signal(SIGTERM, old_term);
-        throw;
-    }
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
+    const sweep::SweepReport r = run_sweep_interruptibly(plan, o, "polyroll sweep");
     print_report(r, o.jobs);
     return r.interrupted ? kExitInterrupted : kExitOk;
 }

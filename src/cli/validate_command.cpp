@@ -1,8 +1,6 @@
 // polyroll validate: every observation of an observations file run over seeds on the sweep engine,
 // then scored against the experiment (scorecard.csv, scorecard.json and a table on the terminal).
 #include <algorithm>
-#include <atomic>
-#include <csignal>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -10,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/interruptible_sweep.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
@@ -26,7 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
-constexpr int kExitInterrupted = 130;
 
 struct ValidateArgs {
     std::string observations, out = "runs/validate", shard;
@@ -36,8 +34,6 @@ struct ValidateArgs {
     std::map<std::string, std::pair<std::string, CLI::Option*>> scene_text;  // field path -> flag text, its option
 };
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_validate_signal(int) { g_stop = true; }
 
 // The command line's scene flags, as field values put on top of every observation.
 std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
@@ -144,19 +140,7 @@ int run(const ValidateArgs& a) {
     o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     o.shard = shard;
     o.quiet = a.quiet;
-    g_stop = false;
-    auto old_int = std::signal(SIGINT, on_validate_signal);
-    auto old_term = std::signal(SIGTERM, on_validate_signal);
-    sweep::SweepReport r;
-    try {
-        r = sweep::run_sweep(vp.plan, o, &g_stop);
-    } catch (...) {
-        std::signal(SIGINT, old_int);
-        std::signal(SIGTERM, old_term);
-        throw;
-    }
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
+    const sweep::SweepReport r = run_sweep_interruptibly(vp.plan, o, "polyroll validate");
     fmt::print("polyroll validate: {} observations, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
                "before, {}\n",
                file.observations.size(), vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
