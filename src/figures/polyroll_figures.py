@@ -506,9 +506,10 @@ def d_vs_angle_figure(observation, runs):
     fig, ax = plt.subplots(figsize=(8.2, 6.6), layout="constrained")
 
     # The paper's band, and how far each of its ends may be off.
-    ax.axvspan(lo - tol, hi + tol, color="#e8e8e8", lw=0, gid="paper_band_tolerance",
+    # Light greys: the band is the background the runs and lines are read against, not a datum.
+    ax.axvspan(lo - tol, hi + tol, color="#f2f2f2", lw=0, gid="paper_band_tolerance",
                label=f"paper's band \u00b1 {tol:g} deg (tolerance)")
-    ax.axvspan(lo, hi, color="#c8c8c8", lw=0, gid="paper_band", label=f"paper's band, {lo:.1f} to {hi:.1f} deg")
+    ax.axvspan(lo, hi, color="#dcdcdc", lw=0, gid="paper_band", label=f"paper's band, {lo:.1f} to {hi:.1f} deg")
     table += two_point("paper_band_tolerance", lo - tol, hi + tol) + two_point("paper_band", lo, hi)
 
     ax.axhline(length_m, ls=":", color="#555555", lw=1, gid="ramp_end", label=f"end of the ramp ({length_m:g} m)")
@@ -516,7 +517,7 @@ def d_vs_angle_figure(observation, runs):
     medians = seed_medians(runs)
     if medians:
         xs = [m[0] for m in medians]
-        ax.fill_between(xs, [m[2] for m in medians], [m[3] for m in medians], color="#4477aa", alpha=0.18, lw=0,
+        ax.fill_between(xs, [m[2] for m in medians], [m[3] for m in medians], color="#66ccee", alpha=0.45, lw=0,
                         gid="seed_range", label="seed range (least to greatest)")
         ax.plot(xs, [m[1] for m in medians], "-", color="#4477aa", lw=1.3, gid="seed_median",
                 label="median over seeds")
@@ -614,7 +615,7 @@ def map_panel(ax, observation, runs, table):
     cells = defaultdict(list)
     for r in runs:
         cells[(r["row"], r["angle_deg"])].append(r["outcome"])
-    present = set()
+    present = {e["behaviour"]} if "angle_range_deg" in e else set()  # the band's colour needs its legend entry
     label_counts = len(angles) <= 12  # narrower cells have no room for a number
     for (row, angle), outcomes in cells.items():
         shown, mixed = majority(outcomes)
@@ -710,20 +711,23 @@ def behaviour_map_figure(scorecard, runs_by_id):
         present |= map_panel(ax, o, runs_by_id[o["id"]], table)
     legend_ax = fig.add_subplot(grid[len(observations)])
     legend_ax.axis("off")
-    legend_ax.legend(handles=map_legend_handles(present), loc="center", ncol=3, fontsize=7.5, frameon=False)
+    bands = [o["experiment"]["behaviour"] for o in observations if "angle_range_deg" in o["experiment"]]
+    legend_ax.legend(handles=map_legend_handles(present, bands), loc="center", ncol=3, fontsize=7.5, frameon=False)
     fig.suptitle(f"Behaviour against ramp angle, per observation ({scorecard.get('seeds', '?')} seeds per scene; "
                  "cells centred on the simulated angles)", fontsize=10)
     return fig, table
 
 
-def map_legend_handles(present):
+def map_legend_handles(present, band_behaviours):
     Patch = matplotlib.patches.Patch
     handles = [Patch(color=BEHAVIOUR_COLOURS[b], label=BEHAVIOUR_LABELS[b]) for b in BEHAVIOURS if b in present]
     handles += [Patch(facecolor="white", edgecolor="grey", hatch="////", label="seeds disagree (majority shown)"),
-                Patch(facecolor="white", edgecolor="grey", hatch="xxx", label="experiment: never this behaviour"),
-                Patch(facecolor="grey", alpha=0.35, label="experiment: band's tolerance"),
-                matplotlib.lines.Line2D([], [], ls="--", color="black", lw=1, label="experiment: band's ends"),
-                Patch(facecolor="white", edgecolor="white", label="n/m: seeds agreeing with the experiment")]
+                Patch(facecolor="white", edgecolor="grey", hatch="xxx", label="experiment: never this behaviour")]
+    if band_behaviours:
+        handles += [Patch(facecolor=BEHAVIOUR_COLOURS[band_behaviours[0]], alpha=0.35,
+                          label="experiment: band's tolerance"),
+                    matplotlib.lines.Line2D([], [], ls="--", color="black", lw=1, label="experiment: band's ends")]
+    handles.append(Patch(facecolor="white", edgecolor="white", label="k/n: seeds agreeing with the experiment"))
     return handles
 
 
