@@ -157,10 +157,7 @@ def check_map_csv(rows, failures):
 
 def main():
     source_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..")
-    try:
-        import matplotlib  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
+    if not all(importlib.util.find_spec(m) for m in ("matplotlib", "numpy")):
         print("skipped: this Python has no matplotlib/numpy")
         return SKIP
     module, script = load_script(source_dir)

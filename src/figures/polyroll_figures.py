@@ -643,8 +643,9 @@ def map_panel(ax, observation, runs, table):
     ax.set_ylim(len(rows) + 0.5, -0.5)
     ax.set_yticks(range(len(rows) + 1))
     ax.set_yticklabels(["experiment"] + [row_name(r) for r in rows], fontsize=7.5)
-    ax.set_xticks(angles if len(angles) <= 12 else ax.get_xticks())
-    ax.set_xlim(x_from, x_to)
+    if len(angles) <= 12:  # a tick under every cell; more cells keep matplotlib's ticks
+        ax.set_xticks(angles)
+        ax.set_xlim(x_from, x_to)
     ax.tick_params(axis="x", labelsize=7.5)
     ax.set_xlabel("ramp angle \u03b8 (deg)", fontsize=8)
     short_source = observation["source"].split(":")[0]
