@@ -88,6 +88,17 @@ TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[val
     CHECK_THAT(again.out, Catch::Contains("no figures drawn") && Catch::Contains("python3-matplotlib") &&
                               Catch::Contains("the scorecard is written"));
     CHECK(read_file(out / "scorecard.csv") == csv);
+    if (have_matplotlib()) {
+        // A figure script that fails is a fault (exit 1), said in one line; the scorecard stands.
+        fs::create_directories(scratch / "broken");
+        std::ofstream(scratch / "broken" / "polyroll_figures.py") << "import sys\nsys.exit(3)\n";
+        fs::remove(out / "scorecard.csv");
+        const auto broken = run_command("POLYROLL_FIGURES_DIR=" + (scratch / "broken").string() + " " + cmd);
+        INFO(broken.out);
+        CHECK(broken.exit_code == 1);
+        CHECK_THAT(broken.out, Catch::Contains("the figure script failed (exit code 3); the scorecard is written"));
+        CHECK(read_file(out / "scorecard.csv") == csv);
+    }
 
     // Another command in the same folder is refused, unless --force starts over.
     const auto other = run_command(kNoMatplotlib + exe + " validate --observations " + obs.string() +
