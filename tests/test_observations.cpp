@@ -70,7 +70,10 @@ TEST_CASE("observations: a good file is read and expanded, shared runs planned o
     for (const RunPlace& p : vp.places)
         if (p.observation == 0) runs_of_rolls.insert(p.run);
     for (const RunPlace& p : vp.places)
-        if (p.observation == 2 && p.label == "shell.preset=hexagon-small ramp.angle_deg=20") CHECK(runs_of_rolls.count(p.run));
+        if (p.observation == 2 && p.label == "shell.preset=hexagon-small ramp.angle_deg=20") {
+            CHECK(runs_of_rolls.count(p.run));
+            CHECK(p.label_without_angle == "shell.preset=hexagon-small");  // the behaviour map's row
+        }
     for (const PlannedRun& r : vp.plan.runs) CHECK(r.point["fidelity.preset"] == "draft");
     // The same file gives the same plan: what resuming relies on.
     CHECK(plan_to_json(make_validation_plan(f, 2, {{"fidelity.preset", "draft"}}).plan) == plan_to_json(vp.plan));

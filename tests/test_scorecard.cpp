@@ -186,3 +186,30 @@ TEST_CASE("scorecard: files have one CSV row per check", "[scorecard]") {
     CHECK(doc["observations_agreeing"] == 1);
     CHECK(doc["seeds"] == 1);
 }
+
+TEST_CASE("scorecard: the JSON holds the experiment as numbers and each run's place, for the figures",
+          "[scorecard]") {
+    std::vector<ScoredRun> runs = band_runs({{12.0, 3}}, 0.6, -6.61);
+    for (ScoredRun& r : runs) {
+        r.run_id = "00000000000000" + std::to_string(10 + r.seed);
+        r.ramp_length_m = 2.539;
+        r.label_without_angle = "";
+    }
+    const auto doc = scorecard_json({score_observation(band_observation(), runs)}, {});
+    const auto& ob = doc["observations"][0];
+    CHECK(ob["experiment"]["behaviour"] == "stopped");
+    CHECK(ob["experiment"]["angle_range_deg"][1].get<double>() == Approx(15.2));
+    CHECK(ob["experiment"]["angle_tolerance_deg"].get<double>() == Approx(1.0));
+    CHECK(ob["experiment"]["linear_fit"]["intercept_m"].get<double>() == Approx(-6.61));
+    REQUIRE(ob["runs"].size() == 3);
+    CHECK(ob["runs"][2]["run_id"] == "0000000000000013");
+    CHECK(ob["runs"][2]["angle_deg"].get<double>() == Approx(12.0));
+    CHECK(ob["runs"][2]["seed"] == 3);
+    CHECK(ob["runs"][2]["ramp_length_m"].get<double>() == Approx(2.539));
+    CHECK(ob["runs"][2]["point"] == "p");
+
+    const ObservationScore rolls = score_observation(share_observation("rolled_to_end", 0.8), {run("rolled_to_end")});
+    const auto share = scorecard_json({rolls}, {});
+    CHECK(share["observations"][0]["experiment"]["behaviour_share"].get<double>() == Approx(0.8));
+    CHECK_FALSE(share["observations"][0]["experiment"].contains("angle_range_deg"));
+}

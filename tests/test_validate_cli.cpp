@@ -33,6 +33,13 @@ const char* kTinyObservations = R"({
       "tolerance": { "angle_range_deg": 1, "slope_relative": 0.3 } }
   ]})";
 
+// Whether the figures can be drawn here (the Python polyroll validate picks, with matplotlib).
+bool have_matplotlib() { return run_command("/usr/bin/python3 -c 'import matplotlib, numpy'").exit_code == 0; }
+
+// A Python that cannot import matplotlib: polyroll validate says so and writes its scorecard; also
+// spares the tests that are not about figures the time matplotlib takes to draw them.
+const std::string kNoMatplotlib = "POLYROLL_PYTHON=/bin/false ";
+
 fs::path write_observations(const fs::path& dir, const std::string& text) {
     fs::create_directories(dir);
     const fs::path p = dir / "obs.json";
@@ -60,16 +67,42 @@ TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[val
     CHECK(doc["seeds"] == 2);
     CHECK(doc["overrides"]["fidelity.preset"] == "draft");
     CHECK(doc["observations"][1]["details"]["per_angle"].size() == 2);
+    CHECK(doc["observations"][1]["runs"].size() == 4);  // what the figures draw, with results.csv
+    if (have_matplotlib()) {
+        // D against theta for the band, the behaviour map of both: PNG, SVG and CSV, each listed.
+        for (const char* stem : {"d_vs_angle-octagon-band", "behaviour_map"})
+            for (const char* ext : {".png", ".svg", ".csv"}) {
+                const fs::path f = out / "figures" / (std::string(stem) + ext);
+                CHECK(fs::file_size(f) > 0);
+                CHECK_THAT(first.out, Catch::Contains("figure     " + f.string()));
+            }
+    }
 
-    // The same command resumes: nothing left to run, the same scorecard.
-    const auto again = run_command(cmd);
+    // The same command resumes: nothing left to run, the same scorecard; without matplotlib, one
+    // line says what to install and the scorecard is written all the same.
+    fs::remove(out / "scorecard.csv");
+    const auto again = run_command(kNoMatplotlib + cmd);
     INFO(again.out);
     CHECK(again.exit_code == 0);
     CHECK_THAT(again.out, Catch::Contains("6 found done before"));
+    CHECK_THAT(again.out, Catch::Contains("no figures drawn") && Catch::Contains("python3-matplotlib") &&
+                              Catch::Contains("the scorecard is written"));
     CHECK(read_file(out / "scorecard.csv") == csv);
+    if (have_matplotlib()) {
+        // A figure script that fails is a fault (exit 1), said in one line; the scorecard stands.
+        fs::create_directories(scratch / "broken");
+        std::ofstream(scratch / "broken" / "polyroll_figures.py") << "import sys\nsys.exit(3)\n";
+        fs::remove(out / "scorecard.csv");
+        const auto broken = run_command("POLYROLL_FIGURES_DIR=" + (scratch / "broken").string() + " " + cmd);
+        INFO(broken.out);
+        CHECK(broken.exit_code == 1);
+        CHECK_THAT(broken.out, Catch::Contains("the figure script failed (exit code 3); the scorecard is written"));
+        CHECK(read_file(out / "scorecard.csv") == csv);
+    }
 
     // Another command in the same folder is refused, unless --force starts over.
-    const auto other = run_command(exe + " validate --observations " + obs.string() + " --seeds 1 --fidelity draft "
+    const auto other = run_command(kNoMatplotlib + exe + " validate --observations " + obs.string() +
+                                   " --seeds 1 --fidelity draft "
                                    "--time-limit 1.5 -q --out " + out.string());
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds a different validation"));
@@ -81,8 +114,8 @@ TEST_CASE("validate: shards run slices, the command without --shard scores them;
           "[validate][cli]") {
     const fs::path scratch = polyroll::test::scratch_dir("validate-shards", true);
     const fs::path obs = write_observations(scratch, kTinyObservations), out = scratch / "out";
-    const std::string cmd = exe + " validate --observations " + obs.string() + " --seeds 2 --fidelity draft " +
-                            "--time-limit 1.5 --jobs 1 -q --out " + out.string();
+    const std::string cmd = kNoMatplotlib + exe + " validate --observations " + obs.string() +
+                            " --seeds 2 --fidelity draft --time-limit 1.5 --jobs 1 -q --out " + out.string();
     for (const char* k : {"1/2", "2/2"}) {
         const auto r = run_command(cmd + " --shard " + k);
         INFO(r.out);
@@ -97,7 +130,8 @@ TEST_CASE("validate: shards run slices, the command without --shard scores them;
     CHECK(fs::exists(out / "scorecard.csv"));
     CHECK(nlohmann::json::parse(read_file(out / "observations.json"))["observations"].size() == 2);
 
-    const auto forced = run_command(exe + " validate --observations " + obs.string() + " --seeds 1 --fidelity draft "
+    const auto forced = run_command(kNoMatplotlib + exe + " validate --observations " + obs.string() +
+                                    " --seeds 1 --fidelity draft "
                                     "--time-limit 1.5 -q --force --out " + out.string());
     INFO(forced.out);
     CHECK(forced.exit_code == 0);

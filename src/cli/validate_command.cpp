@@ -1,6 +1,8 @@
 // polyroll validate: every observation of an observations file run over seeds on the sweep engine,
-// then scored against the experiment (scorecard.csv, scorecard.json and a table on the terminal).
+// then scored against the experiment (scorecard.csv, scorecard.json and a table on the terminal), and
+// drawn (figures/: D against theta, the behaviour map) by src/figures/polyroll_figures.py.
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <thread>
@@ -9,9 +11,11 @@
 
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
+#include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
+#include "sim/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/observations.h"
 #include "sweep/progress.h"
@@ -64,8 +68,23 @@ std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
 // The folder's validation files, removed by --force when the folder holds another validation.
 void remove_old_validation(const fs::path& dir) {
     for (const char* name : {"plan.json", "results.csv", "shards", "runs", "scorecard.csv", "scorecard.json",
-                             "observations.json"})
+                             "observations.json", "figures"})
         fs::remove_all(dir / name);
+}
+
+// Where a planned run sits: its resolved ramp angle and ramp length (the figures draw a run that
+// rolled to the end at the ramp's length). Every point was resolved when planned, so this cannot fail.
+struct RunScene {
+    double angle_deg = 0.0, ramp_length_m = 0.0;
+};
+std::vector<RunScene> run_scenes(const sweep::SweepPlan& plan) {
+    std::vector<RunScene> out;
+    out.reserve(plan.runs.size());
+    for (const sweep::PlannedRun& run : plan.runs) {
+        const Scene scene = resolve_scene(sweep::run_layers(plan, run));
+        out.push_back({scene.ramp.angle_deg, scene.ramp.length_m});
+    }
+    return out;
 }
 
 std::vector<sweep::ObservationScore> score(const sweep::ObservationFile& file, const sweep::ValidationPlan& vp,
@@ -84,12 +103,16 @@ std::vector<sweep::ObservationScore> score(const sweep::ObservationFile& file, c
         const std::size_t i = std::stoull(r.at(c_index));
         if (i < vp.plan.runs.size() && vp.plan.runs[i].id == r.at(c_id)) rows[i] = &r;
     }
+    const std::vector<RunScene> scenes = run_scenes(vp.plan);
     std::vector<std::vector<sweep::ScoredRun>> per(file.observations.size());
     for (const sweep::RunPlace& p : vp.places) {
         sweep::ScoredRun s;
-        s.angle_deg = p.angle_deg;
+        s.angle_deg = scenes[p.run].angle_deg;  // the place's own angle for an angle-range observation
+        s.ramp_length_m = scenes[p.run].ramp_length_m;
+        s.run_id = vp.plan.runs[p.run].id;
         s.seed = p.seed;
         s.label = p.label;
+        s.label_without_angle = p.label_without_angle;
         if (const auto it = rows.find(p.run); it != rows.end()) {
             const auto& r = *it->second;
             s.ok = r.at(c_status) == "ok";
@@ -103,6 +126,27 @@ std::vector<sweep::ObservationScore> score(const sweep::ObservationFile& file, c
     for (std::size_t i = 0; i < file.observations.size(); ++i)
         scores.push_back(sweep::score_observation(file.observations[i], per[i]));
     return scores;
+}
+
+// The figures of a scored folder, into DIR/figures/. Figures are an extra: without a Python that has
+// matplotlib the command says so and what to install, and the scorecard stands (exit 0); a figure
+// script that fails is a fault worth an exit code (1), the scorecard still written.
+int draw_figures(const fs::path& dir) {
+    try {
+        figures::figures_python();
+        figures::figures_script();
+    } catch (const std::runtime_error& e) {
+        fmt::print(stderr, "polyroll validate: no figures drawn: {}; the scorecard is written\n", e.what());
+        return kExitOk;
+    }
+    const fs::path out = dir / "figures";
+    fs::create_directories(out);
+    std::fflush(stdout);  // the script's lines (one per file written) come after ours
+    const int code = figures::run_figures_script(
+        {"validate", (dir / "scorecard.json").string(), (dir / "results.csv").string(), out.string()});
+    if (code == 0) return kExitOk;
+    fmt::print(stderr, "polyroll validate: the figure script failed (exit code {}); the scorecard is written\n", code);
+    return kExitFailure;
 }
 
 int run(const ValidateArgs& a) {
@@ -165,7 +209,7 @@ int run(const ValidateArgs& a) {
     write_file_atomic(dir / "scorecard.json", sweep::scorecard_json(scores, about).dump(1) + "\n");
     fmt::print("\n{}", sweep::scorecard_text(scores));
     fmt::print("  scorecard  {}  {}\n", (dir / "scorecard.csv").string(), (dir / "scorecard.json").string());
-    return kExitOk;
+    return draw_figures(dir);
 }
 
 }  // namespace
@@ -181,12 +225,14 @@ Action add_validate_command(CLI::App& app) {
         "  polyroll validate --seeds 3 --out runs/validate\n"
         "  polyroll validate --observations my-lab.json --fidelity draft --jobs 2\n"
         "  polyroll validate ... --shard 2/4    # one slice; then the same command without --shard scores\n"
+        "Figures (D against theta, the behaviour map; PNG, SVG and CSV) go to OUT/figures/ when python3-matplotlib\n"
+        "is installed; without it the scorecard is still written.\n"
         "The same command resumes. Exit codes: 0 ran (agreement or not is in the scorecard), 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
     sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
     sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
-    sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json "
-                                     "(default runs/validate); the same command there resumes");
+    sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
+                                     "figures/ (default runs/validate); the same command there resumes");
     sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
     sub->add_option("--shard", a->shard, "run slice K of N only (runs whose index is K-1 modulo N)")->group("Running");
     sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "

@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """The PNG figures of a polyroll sweep and of the speed/accuracy study, drawn with matplotlib.
 
-polyroll figures and polyroll tradeoff run this script; it only reads tables the C++ side wrote:
+polyroll figures, polyroll tradeoff and polyroll validate run this script; it only reads files the
+C++ side wrote:
   polyroll_figures.py sweep RESULTS_CSV OUT_DIR [--trajectory RUN_DIR ...]
   polyroll_figures.py tradeoff POINTS_CSV OUT_PNG
-Every axis says its unit; error bars are the spread over seeds (one standard deviation).
+  polyroll_figures.py validate SCORECARD_JSON RESULTS_CSV OUT_DIR
+Every axis says its unit; error bars are the spread over seeds (one standard deviation), except in
+the validate figures, which show the median and the full seed range.
 """
 import argparse
 import csv
@@ -12,6 +15,7 @@ import json
 import math
 import os
 import sys
+import textwrap
 from collections import OrderedDict, defaultdict
 
 import matplotlib
@@ -374,6 +378,381 @@ def tradeoff_figure(args):
     print(args.out)
 
 
+# ---------------------------------------------------------------------------------------------------
+# polyroll validate: D against theta for each angle-range observation, and the behaviour map of every
+# observation. scorecard.json says which runs are an observation's (and where each sits); results.csv
+# says what each run showed. Each figure is written as PNG and SVG, with a CSV of exactly what it plots.
+
+VALIDATE_DPI = 110
+# How each outcome is drawn in D against theta: all on one axis, from 0 to the ramp's length.
+RUN_STYLES = OrderedDict([
+    ("stopped_at_first_impact", dict(marker="o", mfc="white", label="stopped at the first impact")),
+    ("stopped", dict(marker="o", mfc=None, label="rolled, then stopped (third behaviour)")),
+    ("rolled_to_end", dict(marker="^", mfc=None, label="rolled to the end (drawn at the ramp's end)")),
+    ("time_limit", dict(marker="s", mfc="white", label="time limit reached (still moving)")),
+    ("diverged", dict(marker="x", mfc=None, label="diverged (drawn at 0)")),
+    ("failed", dict(marker="x", mfc=None, label="failed (drawn at 0)")),
+])
+D_COLUMNS = ["element", "angle_deg", "distance_m", "low_m", "high_m", "behaviour", "seed", "run_id"]
+MAP_COLUMNS = ["observation", "row", "angle_deg", "cell_from_deg", "cell_to_deg", "shown", "runs", "counts", "mixed",
+               "agreeing"]
+
+
+def write_whole(path, write):
+    """Writes through `write(temporary_path)`, then renames into place: never a half-written file."""
+    tmp = f"{path}.tmp{os.getpid()}"
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def write_csv(path, columns, rows):
+    def write(tmp):
+        with open(tmp, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=columns, lineterminator="\n")
+            w.writeheader()
+            for r in rows:
+                w.writerow({c: csv_cell(r.get(c)) for c in columns})
+    write_whole(path, write)
+
+
+def csv_cell(v):
+    if v is None:
+        return ""
+    if isinstance(v, float):
+        return f"{v:.12g}"
+    return v
+
+
+def save_validate_figure(fig, table, columns, out, stem):
+    """The figure as PNG and SVG and the numbers it plots as CSV, side by side; returns the paths."""
+    paths = []
+    for ext in ("png", "svg"):
+        path = os.path.join(out, f"{stem}.{ext}")
+        write_whole(path, lambda tmp, ext=ext: fig.savefig(tmp, dpi=VALIDATE_DPI, format=ext))
+        paths.append(path)
+    plt.close(fig)
+    path = os.path.join(out, f"{stem}.csv")
+    write_csv(path, columns, table)
+    paths.append(path)
+    return paths
+
+
+def outcome(run):
+    """The behaviour a run showed, with failed runs (invalid point, error, missing) as 'failed'."""
+    if run["status"] == "ok" or run["behaviour"] == "diverged":
+        return run["behaviour"] if run["behaviour"] in RUN_STYLES else "failed"
+    return "failed"
+
+
+def observation_runs(observation, table_by_id):
+    """The observation's runs from scorecard.json, each with what results.csv says it showed."""
+    runs = []
+    for r in observation["runs"]:
+        row = table_by_id.get(r["run_id"], {})
+        run = dict(r, status=row.get("status", "missing"), behaviour=row.get("behaviour", ""),
+                   distance_m=num(row.get("distance_m")))
+        run["outcome"] = outcome(run)
+        runs.append(run)
+    return runs
+
+
+def drawn_distance_m(run):
+    """Where a run sits on the one D axis: at the ramp's end when it rolled off, at 0 when it failed."""
+    if run["outcome"] == "rolled_to_end":
+        return run["ramp_length_m"]
+    if run["outcome"] in ("failed", "diverged") or not math.isfinite(run["distance_m"]):
+        return 0.0
+    return run["distance_m"]
+
+
+def check_of(observation, name):
+    return next((c for c in observation["checks"] if c["check"] == name), None)
+
+
+def wrapped(text, width):
+    return "\n".join(textwrap.wrap(text, width))
+
+
+def line_text(slope, intercept):
+    sign = "\u2212" if intercept < 0 else "+"
+    return f"D = {slope:.2f} m/deg \u00d7 \u03b8 {sign} {abs(intercept):.2f} m"
+
+
+def seed_medians(runs):
+    """Per simulated angle: the median, least and greatest drawn D over the runs that did not fail."""
+    by_angle = defaultdict(list)
+    for r in runs:
+        if r["outcome"] not in ("failed", "diverged"):
+            by_angle[r["angle_deg"]].append(drawn_distance_m(r))
+    angles = sorted(by_angle)
+    return [(a, float(np.median(by_angle[a])), min(by_angle[a]), max(by_angle[a])) for a in angles]
+
+
+def two_point(element, x0, x1, y0=None, y1=None):
+    return [dict(element=element, angle_deg=x0, distance_m=y0), dict(element=element, angle_deg=x1, distance_m=y1)]
+
+
+def d_vs_angle_figure(observation, runs):
+    """D against theta for one angle-range observation: (figure, table of what it plots)."""
+    e = observation["experiment"]
+    lo, hi = e["angle_range_deg"]
+    tol = e.get("angle_tolerance_deg", 0.0)
+    length_m = max((r["ramp_length_m"] for r in runs), default=1.0)
+    table = []
+    fig, ax = plt.subplots(figsize=(8.2, 6.6), layout="constrained")
+
+    # The paper's band, and how far each of its ends may be off.
+    # Light greys: the band is the background the runs and lines are read against, not a datum.
+    ax.axvspan(lo - tol, hi + tol, color="#f2f2f2", lw=0, gid="paper_band_tolerance",
+               label=f"paper's band \u00b1 {tol:g} deg (tolerance)")
+    ax.axvspan(lo, hi, color="#dcdcdc", lw=0, gid="paper_band", label=f"paper's band, {lo:.1f} to {hi:.1f} deg")
+    table += two_point("paper_band_tolerance", lo - tol, hi + tol) + two_point("paper_band", lo, hi)
+
+    ax.axhline(length_m, ls=":", color="#555555", lw=1, gid="ramp_end", label=f"end of the ramp ({length_m:g} m)")
+
+    medians = seed_medians(runs)
+    if medians:
+        xs = [m[0] for m in medians]
+        ax.fill_between(xs, [m[2] for m in medians], [m[3] for m in medians], color="#66ccee", alpha=0.45, lw=0,
+                        gid="seed_range", label="seed range (least to greatest)")
+        ax.plot(xs, [m[1] for m in medians], "-", color="#4477aa", lw=1.3, gid="seed_median",
+                label="median over seeds")
+        table += [dict(element="seed_median", angle_deg=a, distance_m=med, low_m=low, high_m=high)
+                  for a, med, low, high in medians]
+
+    for b, style in RUN_STYLES.items():
+        mine = [r for r in runs if r["outcome"] == b]
+        if not mine:
+            continue
+        colour = BEHAVIOUR_COLOURS[b]
+        ax.plot([r["angle_deg"] for r in mine], [drawn_distance_m(r) for r in mine], ls="none", ms=6, mew=1.2,
+                marker=style["marker"], color=colour, mfc=style["mfc"] or colour, alpha=0.85, gid=f"run:{b}",
+                label=f"{style['label']}: {len(mine)}", clip_on=False, zorder=3)
+        table += [dict(element="run", angle_deg=r["angle_deg"], distance_m=drawn_distance_m(r), behaviour=b,
+                       seed=r["seed"], run_id=r["run_id"]) for r in mine]
+
+    fit = e.get("linear_fit")
+    if fit:
+        ys = [fit["slope_m_per_deg"] * x + fit["intercept_m"] for x in (lo, hi)]
+        ax.plot([lo, hi], ys, "-", color="black", lw=2, gid="paper_fit",
+                label=f"paper: {line_text(fit['slope_m_per_deg'], fit['intercept_m'])}, over its band")
+        table += two_point("paper_fit", lo, hi, *ys)
+    sim_fit, band = observation["details"].get("fit"), observation["details"].get("band_deg")
+    if sim_fit and band:
+        ys = [sim_fit["slope_m_per_deg"] * x + sim_fit["intercept_m"] for x in band]
+        ax.plot(band, ys, "--", color=BEHAVIOUR_COLOURS["stopped"], lw=2, gid="simulation_fit",
+                label=f"simulation: {line_text(sim_fit['slope_m_per_deg'], sim_fit['intercept_m'])} "
+                      f"(R\u00b2 {sim_fit['r_squared']:.2f}), over its band {band[0]:g} to {band[1]:g} deg")
+        table += two_point("simulation_fit", band[0], band[1], *ys)
+    table.append(dict(element="ramp_end", distance_m=length_m))
+
+    angles = sorted({r["angle_deg"] for r in runs}) or [lo, hi]
+    half_step = (angles[1] - angles[0]) / 2 if len(angles) > 1 else 0.5
+    ax.set_xlim(min(angles[0], lo - tol) - half_step, max(angles[-1], hi + tol) + half_step)
+    ax.set_ylim(-0.04 * length_m, 1.06 * length_m)
+    ax.set_xlabel("ramp angle \u03b8 (deg)")
+    ax.set_ylabel("distance before stopping D (m)")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2, fontsize=7.5, frameon=False)
+    ax.set_title(d_vs_angle_title(observation, runs), fontsize=9, loc="left")
+    return fig, table
+
+
+def d_vs_angle_title(observation, runs):
+    """The observation and its source, then what the simulation showed against it (the scorecard's verdict)."""
+    seeds = len({r["seed"] for r in runs})
+    rows = len({r["row"] for r in runs})
+    pooled = f", {rows} grid points pooled as scored" if rows > 1 else ""
+    verdict = "agrees" if observation["agree"] else "disagrees"
+    lines = [f"D against \u03b8: {observation['id']} ({seeds} seed{'s' if seeds != 1 else ''}{pooled})",
+             wrapped("Source: " + observation["source"], 110)]
+    checks = [c for c in (check_of(observation, n) for n in ("band start", "band end", "D slope")) if c]
+    if checks:
+        lines.append(wrapped(f"Simulation {verdict}: " + "; ".join(f"{c['check']} {c['by']}" for c in checks), 110))
+    return "\n".join(lines)
+
+
+def cell_edges(values, lone_width):
+    """Cell edges centred on the values (midpoints between neighbours); a lone value gets `lone_width`."""
+    v = np.array(values, dtype=float)
+    if len(v) == 1:
+        return np.array([v[0] - lone_width / 2, v[0] + lone_width / 2])
+    mid = (v[1:] + v[:-1]) / 2
+    return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+
+
+ROW_NAMES = {"shell.preset": "{}", "fill.ratio": "r = {}", "fill.material": "{}", "ramp.preset": "{}"}
+
+
+def row_name(row):
+    """'shell.preset=octagon-small fill.ratio=0.5' as 'octagon-small, r = 0.5'."""
+    if not row:
+        return "simulation"
+    parts = []
+    for item in row.split(" "):
+        key, _, value = item.partition("=")
+        parts.append(ROW_NAMES.get(key, key.rsplit(".", 1)[-1] + " = {}").format(value))
+    return ", ".join(parts)
+
+
+def agreeing_count(experiment, outcomes):
+    if "not_behaviour" in experiment:
+        return sum(o != experiment["not_behaviour"] for o in outcomes)
+    return sum(o == experiment["behaviour"] for o in outcomes)
+
+
+def map_panel(ax, observation, runs, table):
+    """One observation's behaviour against angle (a row per grid point), under a row of what the
+    experiment saw. Returns the behaviours drawn."""
+    e = observation["experiment"]
+    rows = list(OrderedDict.fromkeys(r["row"] for r in runs))
+    angles = sorted({r["angle_deg"] for r in runs})
+    edges = cell_edges(angles, 1.0)
+    cells = defaultdict(list)
+    for r in runs:
+        cells[(r["row"], r["angle_deg"])].append(r["outcome"])
+    present = {e["behaviour"]} if "angle_range_deg" in e else set()  # the band's colour needs its legend entry
+    label_counts = len(angles) <= 12  # narrower cells have no room for a number
+    for (row, angle), outcomes in cells.items():
+        shown, mixed = majority(outcomes)
+        present.add(shown)
+        j, y = angles.index(angle), rows.index(row) + 1
+        ax.add_patch(matplotlib.patches.Rectangle((edges[j], y - 0.5), edges[j + 1] - edges[j], 1.0,
+                                                  facecolor=BEHAVIOUR_COLOURS[shown], edgecolor="white", lw=0.5,
+                                                  hatch="////" if mixed else None))
+        agreeing = agreeing_count(e, outcomes)
+        if label_counts:
+            # On a white chip: readable on every colour and through the hatching of mixed cells.
+            ax.text(angle, y, f"{agreeing}/{len(outcomes)}", ha="center", va="center", fontsize=6.5,
+                    bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor="none", alpha=0.85))
+        counts = "; ".join(f"{b} {outcomes.count(b)}" for b in BEHAVIOURS if b in outcomes)
+        table.append(dict(observation=observation["id"], row=row or "simulation", angle_deg=angle,
+                          cell_from_deg=float(edges[j]), cell_to_deg=float(edges[j + 1]), shown=shown,
+                          runs=len(outcomes), counts=counts, mixed="yes" if mixed else "no", agreeing=agreeing))
+    x_from, x_to = float(edges[0]), float(edges[-1])
+    if "angle_range_deg" in e:
+        x_from, x_to = experiment_band_row(ax, observation, len(rows), x_from, x_to, table)
+    else:
+        experiment_cells_row(ax, observation, angles, edges, table)
+    ax.axhline(0.5, color="black", lw=0.8)
+    ax.set_xlim(x_from, x_to)
+    ax.set_ylim(len(rows) + 0.5, -0.5)
+    ax.set_yticks(range(len(rows) + 1))
+    ax.set_yticklabels(["experiment"] + [row_name(r) for r in rows], fontsize=7.5)
+    if len(angles) <= 12:  # a tick under every cell; more cells keep matplotlib's ticks
+        ax.set_xticks(angles)
+        ax.set_xlim(x_from, x_to)
+    ax.tick_params(axis="x", labelsize=7.5)
+    ax.set_xlabel("ramp angle \u03b8 (deg)", fontsize=8)
+    short_source = observation["source"].split(":")[0]
+    verdict = "agrees" if observation["agree"] else "disagrees"
+    ax.set_title(f"{observation['id']} [{short_source}]: {expected_text(e)}; simulation {verdict}", fontsize=8.5,
+                 loc="left")
+    return present
+
+
+def expected_text(e):
+    if "not_behaviour" in e:
+        share = e.get("behaviour_share", 1.0)
+        return (f"never {BEHAVIOUR_LABELS[e['not_behaviour']]}" if share >= 1.0 else
+                f"{BEHAVIOUR_LABELS[e['not_behaviour']]} in at most {100 * (1 - share):g}% of runs")
+    if "angle_range_deg" in e:
+        lo, hi = e["angle_range_deg"]
+        return f"{BEHAVIOUR_LABELS[e['behaviour']]} from {lo:g} to {hi:g} deg (\u00b1 {e['angle_tolerance_deg']:g})"
+    return f"{BEHAVIOUR_LABELS[e['behaviour']]} in at least {100 * e['behaviour_share']:g}% of runs"
+
+
+def experiment_band_row(ax, observation, n_rows, x_from, x_to, table):
+    """The paper's band in the experiment row, its tolerance lighter, and its ends across every row."""
+    e = observation["experiment"]
+    lo, hi = e["angle_range_deg"]
+    tol = e.get("angle_tolerance_deg", 0.0)
+    colour = BEHAVIOUR_COLOURS[e["behaviour"]]
+    for a, b, alpha, what in ((lo - tol, lo, 0.35, "tolerance"), (lo, hi, 1.0, e["behaviour"]),
+                              (hi, hi + tol, 0.35, "tolerance")):
+        if b > a:
+            ax.add_patch(matplotlib.patches.Rectangle((a, -0.5), b - a, 1.0, facecolor=colour, alpha=alpha, lw=0))
+            table.append(dict(observation=observation["id"], row="experiment", cell_from_deg=a, cell_to_deg=b,
+                              shown=what))
+    for x in (lo, hi):
+        ax.plot([x, x], [-0.5, n_rows + 0.5], "--", color="black", lw=1)
+    return min(x_from, lo - tol), max(x_to, hi + tol)
+
+
+def experiment_cells_row(ax, observation, angles, edges, table):
+    """What the experiment saw at each simulated angle: the behaviour's colour, or crossed when it says
+    a behaviour never shows."""
+    e = observation["experiment"]
+    never = "not_behaviour" in e
+    b = e["not_behaviour"] if never else e["behaviour"]
+    for j, angle in enumerate(angles):
+        ax.add_patch(matplotlib.patches.Rectangle(
+            (edges[j], -0.5), edges[j + 1] - edges[j], 1.0, lw=0.5,
+            facecolor="white" if never else BEHAVIOUR_COLOURS[b],
+            edgecolor=BEHAVIOUR_COLOURS[b] if never else "white", hatch="xxx" if never else None))
+        table.append(dict(observation=observation["id"], row="experiment", angle_deg=angle,
+                          cell_from_deg=float(edges[j]), cell_to_deg=float(edges[j + 1]),
+                          shown=f"not {b}" if never else b))
+
+
+def behaviour_map_figure(scorecard, runs_by_id):
+    """Every observation's behaviour against angle, one panel each: (figure, table of what it plots)."""
+    observations = scorecard["observations"]
+    heights = [0.9 + 0.24 * (1 + len({r["row"] for r in runs_by_id[o["id"]]})) for o in observations]
+    legend_height = 0.9
+    fig = plt.figure(figsize=(8.6, sum(heights) + legend_height + 0.4), layout="constrained")
+    grid = fig.add_gridspec(len(observations) + 1, 1, height_ratios=heights + [legend_height])
+    table, present = [], set()
+    for k, o in enumerate(observations):
+        ax = fig.add_subplot(grid[k])
+        present |= map_panel(ax, o, runs_by_id[o["id"]], table)
+    legend_ax = fig.add_subplot(grid[len(observations)])
+    legend_ax.axis("off")
+    bands = [o["experiment"]["behaviour"] for o in observations if "angle_range_deg" in o["experiment"]]
+    legend_ax.legend(handles=map_legend_handles(present, bands), loc="center", ncol=3, fontsize=7.5, frameon=False)
+    fig.suptitle(f"Behaviour against ramp angle, per observation ({scorecard.get('seeds', '?')} seeds per scene; "
+                 "cells centred on the simulated angles)", fontsize=10)
+    return fig, table
+
+
+def map_legend_handles(present, band_behaviours):
+    Patch = matplotlib.patches.Patch
+    handles = [Patch(color=BEHAVIOUR_COLOURS[b], label=BEHAVIOUR_LABELS[b]) for b in BEHAVIOURS if b in present]
+    handles += [Patch(facecolor="white", edgecolor="grey", hatch="////", label="seeds disagree (majority shown)"),
+                Patch(facecolor="white", edgecolor="grey", hatch="xxx", label="experiment: never this behaviour")]
+    if band_behaviours:
+        handles += [Patch(facecolor=BEHAVIOUR_COLOURS[band_behaviours[0]], alpha=0.35,
+                          label="experiment: band's tolerance"),
+                    matplotlib.lines.Line2D([], [], ls="--", color="black", lw=1, label="experiment: band's ends")]
+    handles.append(Patch(facecolor="white", edgecolor="white", label="k/n: seeds agreeing with the experiment"))
+    return handles
+
+
+def file_stem(observation_id):
+    return "".join(c if c.isalnum() or c in "-_" else "_" for c in observation_id)
+
+
+def validate_figures(args):
+    with open(args.scorecard) as f:
+        scorecard = json.load(f)
+    table_by_id = {r["run_id"]: r for r in read_rows(args.results)}
+    runs_by_id = {o["id"]: observation_runs(o, table_by_id) for o in scorecard["observations"]}
+    written = []
+    for o in scorecard["observations"]:
+        if "angle_range_deg" in o["experiment"]:
+            fig, table = d_vs_angle_figure(o, runs_by_id[o["id"]])
+            written += save_validate_figure(fig, table, D_COLUMNS, args.out, f"d_vs_angle-{file_stem(o['id'])}")
+    if scorecard["observations"]:
+        fig, table = behaviour_map_figure(scorecard, runs_by_id)
+        written += save_validate_figure(fig, table, MAP_COLUMNS, args.out, "behaviour_map")
+    for path in written:
+        print(f"  figure     {path}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="what", required=True)
@@ -384,9 +763,15 @@ def main():
     t = sub.add_parser("tradeoff")
     t.add_argument("points")
     t.add_argument("out")
+    v = sub.add_parser("validate")
+    v.add_argument("scorecard", help="scorecard.json of polyroll validate")
+    v.add_argument("results", help="results.csv of the same folder")
+    v.add_argument("out", help="folder for the figures")
     args = p.parse_args()
     if args.what == "sweep":
         sweep_figures(args)
+    elif args.what == "validate":
+        validate_figures(args)
     else:
         tradeoff_figure(args)
 

@@ -311,10 +311,13 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
         const std::vector<double> angles = ob.angle_range_deg ? ob.angles_deg : std::vector<double>{0.0};
         for (std::size_t c = 0; c < combos; ++c) {
             json point = ob.scene;
-            std::string label;
+            std::string label, label_without_angle;
             for (std::size_t a = 0; a < ob.grid.size(); ++a) {
                 point[ob.grid[a].first] = ob.grid[a].second[digit[a]];
-                label += (label.empty() ? "" : " ") + ob.grid[a].first + "=" + value_text(ob.grid[a].second[digit[a]]);
+                const std::string part = ob.grid[a].first + "=" + value_text(ob.grid[a].second[digit[a]]);
+                label += (label.empty() ? "" : " ") + part;
+                if (ob.grid[a].first != "ramp.angle_deg")
+                    label_without_angle += (label_without_angle.empty() ? "" : " ") + part;
             }
             for (const auto& [f, v] : overrides) point[f] = v;
             for (double angle : angles) {
@@ -340,7 +343,8 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
                 }
                 for (const auto& [f, v] : p.items()) use(f);
                 for (int s = 1; s <= seeds; ++s) {
-                    RunPlace place{oi, 0, ob.angle_range_deg ? angle : 0.0, static_cast<std::uint64_t>(s), label};
+                    RunPlace place{oi, 0, ob.angle_range_deg ? angle : 0.0, static_cast<std::uint64_t>(s), label,
+                                   label_without_angle};
                     points.push_back({p, place});
                 }
             }

@@ -60,6 +60,8 @@ struct RunPlace {
     double angle_deg = 0.0;     // for angle-range observations
     std::uint64_t seed = 0;
     std::string label;          // the grid point, e.g. "shell.preset=octagon-small fill.ratio=0.5"
+    // The grid point without its ramp angle: one row of the behaviour map, whose columns are angles.
+    std::string label_without_angle;
 };
 
 struct ValidationPlan {

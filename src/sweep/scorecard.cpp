@@ -256,6 +256,35 @@ double rounded(double v) { return std::round(v * 1e9) / 1e9; }
 
 std::string difference_cell(const ScoreCheck& c) { return c.difference ? number_cell(rounded(*c.difference)) : ""; }
 
+// The observation as numbers, for the figures: the behaviour seen (or never seen), the band, the
+// paper's line and the tolerances.
+json experiment_of(const Observation& ob) {
+    json e = json::object();
+    if (!ob.behaviour.empty()) e["behaviour"] = ob.behaviour;
+    if (!ob.not_behaviour.empty()) e["not_behaviour"] = ob.not_behaviour;
+    if (ob.angle_range_deg) {
+        e["angle_range_deg"] = json{ob.angle_range_deg->first, ob.angle_range_deg->second};
+        e["angle_tolerance_deg"] = ob.angle_tolerance_deg;
+        e["slope_relative"] = ob.slope_relative;
+        if (ob.linear_fit)
+            e["linear_fit"] = json{{"slope_m_per_deg", ob.linear_fit->slope_m_per_deg},
+                                   {"intercept_m", ob.linear_fit->intercept_m}};
+    } else {
+        e["behaviour_share"] = ob.behaviour_share;
+    }
+    return e;
+}
+
+// Which runs of the results table are this observation's, and where each sits (grid point, angle);
+// what each showed is in the table, under its run_id.
+json runs_of(const std::vector<ScoredRun>& runs) {
+    json out = json::array();
+    for (const ScoredRun& r : runs)
+        out.push_back(json{{"run_id", r.run_id}, {"point", r.label}, {"row", r.label_without_angle},
+                           {"angle_deg", r.angle_deg}, {"seed", r.seed}, {"ramp_length_m", r.ramp_length_m}});
+    return out;
+}
+
 }  // namespace
 
 std::optional<LineFit> fit_line(const std::vector<std::pair<double, double>>& xy) {
@@ -287,6 +316,8 @@ ObservationScore score_observation(const Observation& ob, const std::vector<Scor
     s.source = ob.source;
     const std::size_t failed =
         static_cast<std::size_t>(std::count_if(runs.begin(), runs.end(), [](const ScoredRun& r) { return !r.ok; }));
+    s.experiment = experiment_of(ob);
+    s.runs = runs_of(runs);
     s.details["runs"] = runs.size();
     s.details["failed_runs"] = failed;
     if (ob.angle_range_deg)
@@ -316,8 +347,8 @@ json scorecard_json(const std::vector<ObservationScore>& scores, const json& abo
             checks.push_back(json{{"check", c.check}, {"experiment", c.experiment}, {"simulation", c.simulation},
                                   {"agree", c.agree}, {"difference", c.difference ? json(rounded(*c.difference)) : json()},
                                   {"unit", c.unit}, {"by", c.by}});
-        obs.push_back(json{{"id", s.id}, {"source", s.source}, {"agree", s.agree}, {"checks", checks},
-                           {"details", s.details}});
+        obs.push_back(json{{"id", s.id}, {"source", s.source}, {"agree", s.agree}, {"experiment", s.experiment},
+                           {"checks", checks}, {"details", s.details}, {"runs", s.runs}});
     }
     json doc = {{"format", "polyroll-scorecard-1"}};
     for (const auto& [k, v] : about.items()) doc[k] = v;

@@ -14,9 +14,12 @@ namespace polyroll::sweep {
 
 // One run of an observation as the results table recorded it.
 struct ScoredRun {
-    double angle_deg = 0.0;   // angle-range observations
+    double angle_deg = 0.0;   // the run's ramp angle (the simulated angle of an angle-range observation)
     std::uint64_t seed = 0;
     std::string label;        // the grid point
+    std::string label_without_angle;  // the grid point but its angle: a row of the behaviour map
+    std::string run_id;       // the results table's run_id, for the figures
+    double ramp_length_m = 0.0;  // where a run that rolled to the end is drawn in D against theta
     bool ok = false;          // false: failed (invalid point, error, diverged) or missing
     std::string behaviour;    // as in the table: rolled_to_end, stopped, ...
     double distance_m = 0.0;
@@ -40,6 +43,10 @@ struct ObservationScore {
     bool agree = false;  // every check agrees
     std::vector<ScoreCheck> checks;
     nlohmann::ordered_json details = nlohmann::ordered_json::object();  // per-angle spread, fits, failures
+    // What the experiment saw and its tolerance, as numbers (the checks say it in words), and one
+    // entry per run: what the figures (polyroll_figures.py validate) draw, with the results table.
+    nlohmann::ordered_json experiment = nlohmann::ordered_json::object();
+    nlohmann::ordered_json runs = nlohmann::ordered_json::array();
 };
 
 ObservationScore score_observation(const Observation& ob, const std::vector<ScoredRun>& runs);
