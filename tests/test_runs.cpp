@@ -91,7 +91,7 @@ TEST_CASE("terminal velocity obeys the rigid model's steady state for an empty s
     CHECK(lost / 10.0 == Approx(drop).epsilon(0.03));
 }
 
-TEST_CASE("the same scene gives byte-identical files; another seed gives other grains", "[runs][determinism]") {
+TEST_CASE("the same scene gives byte-identical files, and another seed gives other grains", "[runs][determinism]") {
     const Scene s = test::scene_with({{"fill", {{"ratio", 0.5}, {"material", "peas"}}}, {"ramp", {{"angle_deg", 18}}}});
     const RunResult a = checked_run(s);
     const RunResult b = checked_run(s);

@@ -133,7 +133,7 @@ TEST_CASE("shards: disjoint slices that together cover the plan once", "[sweep]"
         CHECK_THROWS_WITH(parse_shard(bad), Catch::Contains(bad) && Catch::Contains("K/N"));
 }
 
-TEST_CASE("results tables: CSV cells round-trip; a line cut short is dropped", "[sweep]") {
+TEST_CASE("results tables: CSV cells round-trip, and a line cut short is dropped", "[sweep]") {
     const std::vector<std::string> cells = {"3", "a,b", "say \"hi\"", "", " padded ", "line\nbreak"};
     std::string line = csv_line(cells);
     line.pop_back();
@@ -261,7 +261,7 @@ TEST_CASE("a sweep records failed points, survives a crash and resumes without d
     fs::remove_all(dir);
 }
 
-TEST_CASE("shards merged give the one-process table; tables of another plan are refused", "[sweep]") {
+TEST_CASE("shards merged give the one-process table, and tables of another plan are refused", "[sweep]") {
     const SweepPlan plan = tiny_plan();
     const fs::path one = scratch("one"), sharded = scratch("sharded");
     SweepOptions o;

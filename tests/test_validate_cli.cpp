@@ -110,7 +110,7 @@ TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[val
     fs::remove_all(scratch);
 }
 
-TEST_CASE("validate: shards run slices, the command without --shard scores them; --force starts over",
+TEST_CASE("validate: shards run slices, the command without --shard scores them, and --force starts over",
           "[validate][cli]") {
     const fs::path scratch = polyroll::test::scratch_dir("validate-shards", true);
     const fs::path obs = write_observations(scratch, kTinyObservations), out = scratch / "out";
