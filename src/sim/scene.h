@@ -31,6 +31,10 @@ struct MaterialParams {
     double friction = 0.0;             // grain on grain
     double wall_friction = 0.0;        // grain on the shell's walls
     double restitution = 0.0;          // grain on grain and on walls
+    // Grain on the two lids (end faces), which a 2D disc never touches: a force on each grain
+    // opposing its sliding relative to the shell, with the lateral pressure of the pile above it
+    // (sim/lid_friction.h). 0 leaves the term out.
+    double lid_friction = 0.0;
 };
 
 struct FillParams {

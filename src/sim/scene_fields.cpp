@@ -130,6 +130,10 @@ std::vector<SceneField> make_table() {
         Row("fill.material.wall_friction", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::wall_friction>())
             .range(0.0, 2.0).help("friction coefficient between grains and the shell's walls, no unit"),
+        Row("fill.material.lid_friction", T::number,
+            member<&Scene::fill, &FillParams::material, &MaterialParams::lid_friction>())
+            .range(0.0, 2.0)
+            .help("friction coefficient between grains and the two lids (end faces), no unit; 0 leaves the term out"),
         Row("fill.material.restitution", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::restitution>())
             .range(0.0, 1.0).label("grain restitution")

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "sim/lid_friction.h"
 #include "sim/world_parts.h"
 
 namespace polyroll {
@@ -43,6 +44,8 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
     w->outer_local_m = shell_outer_polygon_m(scene.shell);
     w->inner_local_m = shell_inner_polygon_m(scene.shell);
     w->force_hooks = std::move(hooks);
+    // The scene's own terms the contacts in the plane do not give, each left out when switched off.
+    if (scene.fill.material.lid_friction > 0.0 && scene.fill.ratio > 0.0) w->force_hooks.emplace_back(apply_lid_friction);
 
     const double theta = scene.ramp.angle_deg * geom::kPi / 180.0;
     const double g = scene.run.gravity_m_s2;
