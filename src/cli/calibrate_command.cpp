@@ -39,7 +39,7 @@ std::string read_text(const fs::path& path) {
 struct CalibrateArgs {
     std::string params, observations, out = "runs/calibrate", algorithm = "sbplx";
     std::vector<std::string> starts;  // FIELD=VALUE
-    int seeds = 3, jobs = 0, max_evals = 40;
+    int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
     bool force = false, quiet = false;
     ObservationSceneFlags scene;
 };
@@ -289,10 +289,10 @@ Action add_calibrate_command(CLI::App& app) {
         "130 interrupted (resume with the same command), 1 other failure.");
     sub->add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)")->required();
     sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
-    sub->add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 3)")
+    sub->add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
         ->check(CLI::Range(1, 1000));
     sub->add_option("--max-evals", a->max_evals,
-                    fmt::format("optimiser evaluations after the start (default 40; 0 to {})", kMaxEvaluations));
+                    fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
     sub->add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");
     sub->add_option("--start", a->starts, "start FIELD=VALUE instead of the scene's own value (repeatable)");
     sub->add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "

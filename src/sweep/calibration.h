@@ -27,11 +27,11 @@ namespace polyroll::sweep {
 
 struct CalibrationSetup {
     ObservationFile file;
-    int seeds = 3;
+    int seeds = 2;
     std::vector<std::pair<std::string, nlohmann::ordered_json>> overrides;  // the command line's, on every run
     std::vector<CalibrationParam> params;
     std::string algorithm = "sbplx";
-    int max_evaluations = 40;
+    int max_evaluations = 24;
 };
 
 // The optimisers offered (NLopt's bounded derivative-free local methods), default first.
