@@ -129,13 +129,41 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     CHECK_THAT(again.out, Catch::Contains("found done"));
     CHECK_FALSE(Catch::Contains(" s); best").match(again.out));  // no evaluation ran anything
     CHECK(nlohmann::json::parse(read_file(out / "calibration.json"))["params"][0]["best"].get<double>() == found);
+    const std::string resumed = read_file(out / "evaluations.csv");
+    CHECK(std::count(resumed.begin(), resumed.end(), '\n') == 22);  // header and 21 evaluations
 
     // Another calibration in the same folder is refused, nothing changed.
     const auto other = run_command(exe + " calibrate --params fill.material.restitution=0.3:0.9 --observations " +
                                    obs.string() + " --seeds 4 --max-evals 0 -q --out " + out.string());
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds another calibration"));
-    CHECK(read_file(out / "evaluations.csv") == evaluations);
+    CHECK(read_file(out / "evaluations.csv") == resumed);
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("calibrate: two shards side by side retrace the same path as one process", "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-shards", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006));
+    auto cmd = [&](const fs::path& out) {
+        return exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " + obs.string() +
+               " --seeds 2 --max-evals 6 --jobs 1 -q --out " + out.string();
+    };
+    const auto one = run_command(cmd(scratch / "one"));
+    INFO(one.out);
+    REQUIRE(one.exit_code == 0);
+    // Two processes, one slice each of every candidate's runs, sharing the folder.
+    const fs::path shared = scratch / "shared";
+    const auto both = run_command("(" + cmd(shared) + " --shard 1/2 > " + (scratch / "a.log").string() + " 2>&1 & " +
+                                  cmd(shared) + " --shard 2/2 > " + (scratch / "b.log").string() +
+                                  " 2>&1; b=$?; wait $!; a=$?; exit $((a + b)))");
+    INFO(read_file(scratch / "a.log") << read_file(scratch / "b.log"));
+    REQUIRE(both.exit_code == 0);
+    const auto solo = nlohmann::json::parse(read_file(scratch / "one" / "calibration.json"));
+    const auto sharded = nlohmann::json::parse(read_file(shared / "calibration.json"));
+    CHECK(sharded["params"] == solo["params"]);
+    CHECK(sharded["evaluations"] == solo["evaluations"]);
+    CHECK(fs::exists(shared / "shards" / "shard-1-of-2.csv"));
+    CHECK(fs::exists(shared / "shards" / "shard-2-of-2.csv"));
     fs::remove_all(scratch);
 }
 
@@ -165,6 +193,7 @@ TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[cali
         {"--params ramp.friction --set ramp.friction=0.5" + lab, {"ramp.friction", "not both"}},
         {"--params ramp.friction=0.1:0.5" + lab, {"the scene's ramp.friction=0.9", "outside the bounds"}},
         {"--params ramp.friction --seeds 0" + lab, {"--seeds"}},
+        {"--params ramp.friction --shard 3/2" + lab, {"3/2"}},
         {"--params ramp.friction --observations " + (scratch / "none.json").string(), {"cannot be read"}},
     };
     for (const Case& c : cases) {

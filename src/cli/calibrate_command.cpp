@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -37,7 +38,7 @@ std::string read_text(const fs::path& path) {
 }
 
 struct CalibrateArgs {
-    std::string params, observations, out = "runs/calibrate", algorithm = "sbplx";
+    std::string params, observations, out = "runs/calibrate", algorithm = "sbplx", shard;
     std::vector<std::string> starts;  // FIELD=VALUE
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
     bool force = false, quiet = false;
@@ -50,6 +51,7 @@ std::string command_text(const CalibrateArgs& a) {
     if (!a.observations.empty()) c += " --observations " + a.observations;
     c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
     for (const std::string& s : a.starts) c += " --start " + s;
+    if (!a.shard.empty()) c += " --shard " + a.shard;
     c += observation_flags_text(a.scene);
     c += " --out " + a.out;
     return c;
@@ -148,6 +150,9 @@ int run(const CalibrateArgs& a) {
     if (std::find(algorithms.begin(), algorithms.end(), a.algorithm) == algorithms.end())
         throw InputError(fmt::format("--algorithm {}: unknown (allowed: sbplx, bobyqa, cobyla, neldermead)", a.algorithm));
 
+    std::optional<std::pair<int, int>> shard;
+    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
+
     sweep::CalibrationSetup setup;
     setup.file = sweep::read_observations(a.observations);
     setup.seeds = a.seeds;
@@ -190,7 +195,8 @@ int run(const CalibrateArgs& a) {
         else
             for (const char* name : kCalibrationFiles) fs::remove_all(dir / name);
     }
-    if (!resume) prepare_output_dir(dir, a.force);
+    // The shards of one calibration start side by side: a folder holding another shard's first files is theirs.
+    if (!resume) prepare_output_dir(dir, a.force || shard.has_value());
     const std::string command = command_text(a);
     write_file_atomic(dir / "observations.json", setup.file.doc.dump(2) + "\n");
     write_file_atomic(dir / "calibration.json",
@@ -204,7 +210,12 @@ int run(const CalibrateArgs& a) {
         o.dir = dir;
         o.jobs = jobs;
         o.quiet = true;  // one line per evaluation instead
+        o.shard = shard;
         return run_sweep_interruptibly(plan, o, "polyroll calibrate");
+    }, shard.has_value(), [&](std::size_t missing) {
+        if (!a.quiet)
+            fmt::print(stderr, "polyroll calibrate: shard {}/{} done with this candidate; waiting for the other "
+                               "shards' {} runs\n", shard->first, shard->second, missing);
     });
     std::vector<sweep::Evaluation> seen;
     const std::size_t budget = static_cast<std::size_t>(a.max_evals) + 1;
@@ -298,6 +309,9 @@ Action add_calibrate_command(CLI::App& app) {
     sub->add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "
                                      "(default runs/calibrate); the same command there resumes");
     sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    sub->add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
+                                         "(the same command, other K, sharing --out) run the rest")
+        ->group("Running");
     sub->add_flag("--force", a->force, "start over in a folder holding something else")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress lines")->group("Running");
     add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));

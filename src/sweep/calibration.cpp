@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <thread>
 
 #include <fmt/format.h>
 #include <nlopt.hpp>
@@ -54,8 +55,10 @@ double calibration_objective(const std::vector<ObservationScore>& scores) {
 
 double tidy_value(double v) { return std::stod(fmt::format("{:.9g}", v)); }
 
-CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, RunPlan run_plan)
-    : dir_(std::move(dir)), setup_(setup), run_plan_(std::move(run_plan)) {
+CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, RunPlan run_plan, bool wait_for_others,
+                                 std::function<void(std::size_t)> waiting)
+    : dir_(std::move(dir)), setup_(setup), run_plan_(std::move(run_plan)), wait_for_others_(wait_for_others),
+      waiting_(std::move(waiting)) {
     std::error_code ec;
     if (fs::exists(plan_path(dir_), ec)) {
         plan_ = read_plan(dir_);
@@ -94,7 +97,20 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
     }
     const SweepReport report = run_plan_(plan_);
     if (report.interrupted) throw CalibrationInterrupted();
-    const auto outcomes = finished_outcomes(plan_, dir_);
+    auto outcomes = finished_outcomes(plan_, dir_);
+    auto missing = [&] {
+        std::size_t n = 0;
+        for (std::size_t i : table_index) n += outcomes.count(i) ? 0 : 1;
+        return n;
+    };
+    if (wait_for_others_ && missing() > 0) {
+        // The other slices are other processes retracing the same path: their rows come.
+        if (waiting_) waiting_(missing());
+        do {
+            std::this_thread::sleep_for(std::chrono::milliseconds(500));
+            outcomes = finished_outcomes(plan_, dir_);
+        } while (missing() > 0);
+    }
     for (std::size_t i : table_index)
         if (!outcomes.count(i))
             throw std::runtime_error(fmt::format("{}: run {} ({}) is missing after the sweep",

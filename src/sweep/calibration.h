@@ -65,8 +65,12 @@ class CalibrationRuns {
 public:
     // Runs what is left of a plan in the folder (the command line's: interruptible, parallel).
     using RunPlan = std::function<SweepReport(const SweepPlan&)>;
-    // Reads the folder's plan.json if there is one (a calibration being resumed).
-    CalibrationRuns(std::filesystem::path dir, const CalibrationSetup& setup, RunPlan run_plan);
+    // Reads the folder's plan.json if there is one (a calibration being resumed). With
+    // `wait_for_others` (a shard: run_plan runs one slice), a candidate's runs that other processes
+    // run are waited for in the folder's tables, polled every half second; `waiting` is told how
+    // many are missing, once per candidate.
+    CalibrationRuns(std::filesystem::path dir, const CalibrationSetup& setup, RunPlan run_plan,
+                    bool wait_for_others = false, std::function<void(std::size_t)> waiting = {});
 
     Evaluation evaluate(const std::vector<double>& values);
     const SweepPlan& plan() const { return plan_; }
@@ -78,6 +82,8 @@ private:
     SweepPlan plan_;
     std::map<std::string, std::size_t> planned_;  // a point's text -> its index
     std::size_t written_runs_ = 0;                // runs in plan.json on disk
+    bool wait_for_others_ = false;
+    std::function<void(std::size_t)> waiting_;
 };
 
 struct CalibrationOutcome {
