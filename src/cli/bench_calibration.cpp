@@ -25,12 +25,10 @@ constexpr int kJobs = 2;
 void bench_calibration(const char* fidelity) {
     const sweep::ObservationFile file = sweep::read_observations("");
     const sweep::ValidationPlan vp = sweep::make_validation_plan(file, 1, {{"fidelity.preset", fidelity}});
-    double run_s = 0.0;
     std::size_t failed = 0;
     const auto start = std::chrono::steady_clock::now();
     for (const sweep::PlannedRun& run : vp.plan.runs) {
         const sweep::RunRecord r = sweep::execute_run(vp.plan, run, {}, false);
-        run_s += r.wall_time_s;
         failed += r.ok ? 0 : 1;
     }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -118,9 +118,9 @@ std::vector<CalibrationParam> parse_calibration_params(const std::string& text, 
 
 void set_start_values(std::vector<CalibrationParam>& params, const Scene& scene,
                       const std::vector<std::pair<std::string, double>>& starts) {
-    for (const auto& [path, value] : starts)
-        if (std::none_of(params.begin(), params.end(), [&](const CalibrationParam& p) { return p.path == path; }))
-            throw InputError(fmt::format("--start {}={:g}: not a field of --params", path, value));
+    for (const auto& start : starts)  // (no structured binding: clang 14 cannot capture one in a lambda)
+        if (std::none_of(params.begin(), params.end(), [&](const CalibrationParam& p) { return p.path == start.first; }))
+            throw InputError(fmt::format("--start {}={:g}: not a field of --params", start.first, start.second));
     for (CalibrationParam& p : params) {
         const auto given = std::find_if(starts.begin(), starts.end(), [&](const auto& s) { return s.first == p.path; });
         if (given != starts.end()) {
