@@ -167,6 +167,27 @@ TEST_CASE("calibrate: two shards side by side retrace the same path as one proce
     fs::remove_all(scratch);
 }
 
+TEST_CASE("calibrate: Ctrl-C exits 130 and the same command resumes", "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-interrupt", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";
+    const std::string base = exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+                             obs.string() + " --seeds 6 --jobs 1 --out " + out.string();
+    const std::string cmd = base + " --max-evals 30";
+    // SIGINT once the first evaluation is written (30 evaluations of 6 runs take far longer).
+    const auto stopped = run_command("sh -c '" + cmd + " & p=$!; while [ ! -s " + (out / "evaluations.csv").string() +
+                                     " ]; do sleep 0.05; done; kill -INT $p; wait $p'");
+    INFO(stopped.out);
+    CHECK(stopped.exit_code == 130);
+    CHECK_THAT(stopped.out, Catch::Contains("interrupted after"));  // stopped by the command, not killed
+    CHECK(nlohmann::json::parse(read_file(out / "calibration.json"))["status"] == "running");
+    const auto resumed = run_command(base + " --max-evals 2");  // a smaller budget: the same path, cut short
+    INFO(resumed.out);
+    // --max-evals is not part of the setup: the folder is resumed, not refused.
+    REQUIRE(resumed.exit_code == 0);
+    CHECK_THAT(resumed.out, Catch::Contains("evaluation 1/2") && Catch::Contains("found done"));
+    fs::remove_all(scratch);
+}
+
 TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[calibrate][cli][bad-input]") {
     const fs::path scratch = polyroll::test::scratch_dir("calibrate-bad", true);
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";

@@ -204,6 +204,8 @@ int run(const CalibrateArgs& a) {
                            {"setup", setup_doc}}
                               .dump(1) + "\n");
 
+    // Ctrl-C at any moment, during a candidate's sweep or between two, stops at the next sweep.
+    const InterruptScope interrupt_scope("polyroll calibrate");
     const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     sweep::CalibrationRuns runs(dir, setup, [&](const sweep::SweepPlan& plan) {
         sweep::SweepOptions o;
@@ -216,7 +218,7 @@ int run(const CalibrateArgs& a) {
         if (!a.quiet)
             fmt::print(stderr, "polyroll calibrate: shard {}/{} done with this candidate; waiting for the other "
                                "shards' {} runs\n", shard->first, shard->second, missing);
-    });
+    }, [&] { return interrupt_scope.interrupted(); });
     std::vector<sweep::Evaluation> seen;
     const std::size_t budget = static_cast<std::size_t>(a.max_evals) + 1;
     auto progress = [&](const sweep::Evaluation& e, const sweep::Evaluation& best) {

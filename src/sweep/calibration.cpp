@@ -56,9 +56,9 @@ double calibration_objective(const std::vector<ObservationScore>& scores) {
 double tidy_value(double v) { return std::stod(fmt::format("{:.9g}", v)); }
 
 CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, RunPlan run_plan, bool wait_for_others,
-                                 std::function<void(std::size_t)> waiting)
+                                 std::function<void(std::size_t)> waiting, std::function<bool()> stop_requested)
     : dir_(std::move(dir)), setup_(setup), run_plan_(std::move(run_plan)), wait_for_others_(wait_for_others),
-      waiting_(std::move(waiting)) {
+      waiting_(std::move(waiting)), stop_requested_(std::move(stop_requested)) {
     std::error_code ec;
     if (fs::exists(plan_path(dir_), ec)) {
         plan_ = read_plan(dir_);
@@ -107,6 +107,7 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
         // The other slices are other processes retracing the same path: their rows come.
         if (waiting_) waiting_(missing());
         do {
+            if (stop_requested_ && stop_requested_()) throw CalibrationInterrupted();
             std::this_thread::sleep_for(std::chrono::milliseconds(500));
             outcomes = finished_outcomes(plan_, dir_);
         } while (missing() > 0);

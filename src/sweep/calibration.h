@@ -68,9 +68,10 @@ public:
     // Reads the folder's plan.json if there is one (a calibration being resumed). With
     // `wait_for_others` (a shard: run_plan runs one slice), a candidate's runs that other processes
     // run are waited for in the folder's tables, polled every half second; `waiting` is told how
-    // many are missing, once per candidate.
+    // many are missing, once per candidate; `stop_requested` ends the wait (CalibrationInterrupted).
     CalibrationRuns(std::filesystem::path dir, const CalibrationSetup& setup, RunPlan run_plan,
-                    bool wait_for_others = false, std::function<void(std::size_t)> waiting = {});
+                    bool wait_for_others = false, std::function<void(std::size_t)> waiting = {},
+                    std::function<bool()> stop_requested = {});
 
     Evaluation evaluate(const std::vector<double>& values);
     const SweepPlan& plan() const { return plan_; }
@@ -84,6 +85,7 @@ private:
     std::size_t written_runs_ = 0;                // runs in plan.json on disk
     bool wait_for_others_ = false;
     std::function<void(std::size_t)> waiting_;
+    std::function<bool()> stop_requested_;
 };
 
 struct CalibrationOutcome {
