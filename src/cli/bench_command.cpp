@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/bench_calibration.h"
 #include "cli/bench_models.h"
 #include "cli/bench_render.h"
 #include "cli/commands.h"
@@ -21,7 +22,7 @@ struct BenchOptions {
     SceneOptions scene;
     int repeats = 3;
     std::vector<std::string> presets;
-    bool render_only = false, no_render = false;
+    bool render_only = false, no_render = false, no_calibration = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -79,6 +80,7 @@ int bench(const BenchOptions& o) {
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
     bench_models(base, o.repeats, grain_run_s);
+    if (!o.no_calibration) bench_calibration("standard");
     if (!o.no_render) bench_rendering(base, o.repeats);
     return kExitOk;
 }
@@ -95,6 +97,8 @@ Action add_bench_command(CLI::App& app) {
     sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
     sub->add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
+    sub->add_flag("--no-calibration", opts->no_calibration,
+                  "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");
     return [opts] { return bench(*opts); };
 }
 
