@@ -185,13 +185,17 @@ TrajectorySample Roller::sample(double t) const {
 }
 
 double Roller::normal_force(double psi, double c) const {
+    // N = M (g cos theta + a_cm . y): the centre of mass turns about the fixed pivot, so
+    // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
     const double sp = std::sin(psi), cp = std::cos(psi);
-    return normal_force(sp, cp, std::sqrt(std::max(0.0, 2.0 * (c - piv_.a * cp))));
+    const double w2 = std::max(0.0, 2.0 * (c - piv_.a * cp));
+    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
+    const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
+    return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
 }
 
 double Roller::normal_force(double sp, double cp, double rate) const {
-    // N = M (g cos theta + a_cm . y): the centre of mass turns about the fixed pivot, so
-    // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
+    // The same, for the energy-integral arcs (kept apart so the stepped path's rounding is unchanged).
     const double w2 = rate * rate;
     const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
     const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
