@@ -78,7 +78,7 @@ TEST_CASE("lid friction removes energy, keeps momentum and never reverses a grai
     }
 }
 
-TEST_CASE("lid friction 0 adds no term; with it the default scene still runs to an outcome", "[lid_friction]") {
+TEST_CASE("lid friction 0 adds no term, and with it the default scene still runs to an outcome", "[lid_friction]") {
     const Scene off = test::scene_with(nlohmann::ordered_json::object());
     CHECK(build_world(off)->force_hooks.empty());
     const Scene on = test::scene_with({{"fill", {{"material", {{"lid_friction", 0.3}}}}}, {"run", {{"time_limit_s", 3}}}});

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/bench_auto.h"
+#include "cli/bench_calibration.h"
 #include "cli/bench_models.h"
 #include "cli/bench_render.h"
 #include "cli/commands.h"
@@ -22,7 +23,7 @@ struct BenchOptions {
     SceneOptions scene;
     int repeats = 3;
     std::vector<std::string> presets;
-    bool render_only = false, no_render = false;
+    bool render_only = false, no_render = false, no_calibration = false;
     bool auto_only = false;
 };
 
@@ -85,6 +86,7 @@ int bench(const BenchOptions& o) {
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
     bench_models(base, o.repeats, grain_run_s);
+    if (!o.no_calibration) bench_calibration("standard");
     if (!o.no_render) bench_rendering(base, o.repeats);
     return kExitOk;
 }
@@ -103,6 +105,8 @@ Action add_bench_command(CLI::App& app) {
     sub->add_flag("--auto", opts->auto_only,
                   "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
+    sub->add_flag("--no-calibration", opts->no_calibration,
+                  "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");
     return [opts] { return bench(*opts); };
 }
 

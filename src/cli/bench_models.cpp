@@ -51,14 +51,17 @@ void bench_models(const Scene& base, int repeats, std::optional<double> grain_ru
     }
     fmt::print("\nreduced models: {} (n = {}), r = {:g}, at {:g} deg; grains at the {} fidelity; one core\n",
                base.shell.preset, base.shell.sides, base.fill.ratio, base.ramp.angle_deg, base.fidelity.preset);
-    fmt::print("{:<9} {:>12} {:>12} {:>8} {:>12} {:>10} {:>12}  {}\n", "model", "best_run_s", "mean_run_s", "sim_s",
-               "wall_per_sim", "speed_up", "speed_up_sim", "behaviour");
+    fmt::print("{:<9} {:>12} {:>12} {:>8} {:>6} {:>12} {:>12} {:>10} {:>12}  {}\n", "model", "best_run_s", "mean_run_s",
+               "sim_s", "faces", "best_face_s", "wall_per_sim", "speed_up", "speed_up_sim", "behaviour");
     auto row = [&](const char* name, const Timing& t) {
         const double sim_s = t.last.measured.end_time_s;
         const double per_sim = sim_s > 0.0 ? t.best_s / sim_s : 0.0;
         const double g_per_sim = g.last.measured.end_time_s > 0.0 ? g.best_s / g.last.measured.end_time_s : 0.0;
-        fmt::print("{:<9} {:>12.3e} {:>12.3e} {:>8.3f} {:>12.3e} {:>9.0f}x {:>11.0f}x  {}{}\n", name, t.best_s, t.mean_s,
-                   sim_s, per_sim, g.best_s / t.best_s, per_sim > 0.0 ? g_per_sim / per_sim : 0.0,
+        // Faces rolled over: the impacts, at least the one face it started on.
+        const size_t faces = std::max<size_t>(1, t.last.measured.impacts.size());
+        fmt::print("{:<9} {:>12.3e} {:>12.3e} {:>8.3f} {:>6} {:>12.3e} {:>12.3e} {:>9.0f}x {:>11.0f}x  {}{}\n", name, t.best_s,
+                   t.mean_s, sim_s, faces, t.best_s / static_cast<double>(faces), per_sim, g.best_s / t.best_s,
+                   per_sim > 0.0 ? g_per_sim / per_sim : 0.0,
                    to_string(t.last.measured.behaviour), t.last.model_valid ? "" : " (model invalid: would hop)");
         std::fflush(stdout);
     };
@@ -70,6 +73,7 @@ void bench_models(const Scene& base, int repeats, std::optional<double> grain_ru
         row(to_string(m).c_str(), time_model(s, kMinRuns, kMinTotalS));
     }
     fmt::print("best/mean_run_s: wall time of one whole run (grains: building and settling included);\n"
+               "faces: face impacts in the run (at least 1); best_face_s: best_run_s per face;\n"
                "wall_per_sim: wall seconds per simulated second; speed_up: grains' run time over the model's;\n"
                "speed_up_sim: the same per simulated second (the models may stop or reach the end at different times).\n");
 }

@@ -17,6 +17,7 @@ std::vector<std::pair<CLI::App*, Action>> add_all_commands(CLI::App& app) {
     add(add_figures_command);
     add(add_tradeoff_command);
     add(add_validate_command);
+    add(add_calibrate_command);
     add(add_bench_command);
     return commands;
 }

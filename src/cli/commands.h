@@ -25,5 +25,6 @@ Action add_sweep_command(CLI::App& app);
 Action add_figures_command(CLI::App& app);
 Action add_tradeoff_command(CLI::App& app);
 Action add_validate_command(CLI::App& app);
+Action add_calibrate_command(CLI::App& app);
 
 }  // namespace polyroll::cli

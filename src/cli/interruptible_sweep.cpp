@@ -39,12 +39,34 @@ private:
     void (*old_term_)(int);
 };
 
+bool g_scoped = false;  // an InterruptScope holds the handlers
+
+std::string stopping_message(const std::string& command) {
+    return "\n" + command + ": stopping after the runs in flight (Ctrl-C again to stop now; the same command resumes)\n";
+}
+
 }  // namespace
+
+InterruptScope::InterruptScope(const std::string& command) {
+    g_message = stopping_message(command);
+    g_stop = false;
+    g_scoped = true;
+    old_int_ = std::signal(SIGINT, on_signal);
+    old_term_ = std::signal(SIGTERM, on_signal);
+}
+
+InterruptScope::~InterruptScope() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+    g_scoped = false;
+}
+
+bool InterruptScope::interrupted() const { return g_stop; }
 
 sweep::SweepReport run_sweep_interruptibly(const sweep::SweepPlan& plan, const sweep::SweepOptions& options,
                                            const std::string& command) {
-    g_message = "\n" + command +
-                ": stopping after the runs in flight (Ctrl-C again to stop now; the same command resumes)\n";
+    if (g_scoped) return sweep::run_sweep(plan, options, &g_stop);
+    g_message = stopping_message(command);
     g_stop = false;
     const SignalGuard guard;
     return sweep::run_sweep(plan, options, &g_stop);

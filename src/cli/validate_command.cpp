@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
+#include "cli/observation_flags.h"
 #include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
@@ -22,6 +23,7 @@
 #include "sweep/results_table.h"
 #include "sweep/scorecard.h"
 #include "sweep/sweep_runner.h"
+#include "sweep/table_scoring.h"
 
 namespace polyroll::cli {
 namespace {
@@ -34,98 +36,15 @@ struct ValidateArgs {
     std::string observations, out = "runs/validate", shard;
     int seeds = 5, jobs = 0;
     bool force = false, quiet = false;
-    std::vector<std::string> sets;  // FIELD=VALUE
-    std::map<std::string, std::pair<std::string, CLI::Option*>> scene_text;  // field path -> flag text, its option
+    ObservationSceneFlags scene;  // on top of every observation
 };
 
-
-// The command line's scene flags, as field values put on top of every observation.
-std::vector<std::pair<std::string, json>> overrides_of(const ValidateArgs& a) {
-    std::vector<std::pair<std::string, json>> out;
-    for (const SceneField& f : scene_fields()) {
-        const auto it = a.scene_text.find(std::string(f.path));
-        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
-        const std::string flag = it->second.second->get_name();
-        const std::vector<json> v = sweep::parse_grid_values(flag, it->second.first);
-        if (v.size() != 1) throw InputError(fmt::format("{} {}: one value (allowed: a single value, applied to every observation)", flag, it->second.first));
-        out.emplace_back(std::string(f.path), v.front());
-    }
-    for (const std::string& s : a.sets) {
-        const auto eq = s.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
-        const std::string field = s.substr(0, eq), flag = "--set " + field;
-        sweep::check_scene_field(field, flag);
-        if (field == "run.seed") throw InputError("--set run.seed: not allowed (--seeds N gives the seeds)");
-        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
-        if (v.size() != 1) throw InputError(fmt::format("{}: one value (allowed: a single value, applied to every observation)", flag));
-        out.erase(std::remove_if(out.begin(), out.end(), [&](const auto& o) { return o.first == field; }), out.end());
-        out.emplace_back(field, v.front());
-    }
-    return out;
-}
 
 // The folder's validation files, removed by --force when the folder holds another validation.
 void remove_old_validation(const fs::path& dir) {
     for (const char* name : {"plan.json", "results.csv", "shards", "runs", "scorecard.csv", "scorecard.json",
                              "observations.json", "figures"})
         fs::remove_all(dir / name);
-}
-
-// Where a planned run sits: its resolved ramp angle and ramp length (the figures draw a run that
-// rolled to the end at the ramp's length). Every point was resolved when planned, so this cannot fail.
-struct RunScene {
-    double angle_deg = 0.0, ramp_length_m = 0.0;
-};
-std::vector<RunScene> run_scenes(const sweep::SweepPlan& plan) {
-    std::vector<RunScene> out;
-    out.reserve(plan.runs.size());
-    for (const sweep::PlannedRun& run : plan.runs) {
-        const Scene scene = resolve_scene(sweep::run_layers(plan, run));
-        out.push_back({scene.ramp.angle_deg, scene.ramp.length_m});
-    }
-    return out;
-}
-
-std::vector<sweep::ObservationScore> score(const sweep::ObservationFile& file, const sweep::ValidationPlan& vp,
-                                           const fs::path& dir) {
-    const sweep::TableFile t = sweep::read_table(dir / "results.csv");
-    auto col = [&](const std::string& name) {
-        const auto it = std::find(t.header.begin(), t.header.end(), name);
-        if (it == t.header.end()) throw std::runtime_error((dir / "results.csv").string() + ": no column " + name);
-        return static_cast<std::size_t>(it - t.header.begin());
-    };
-    const std::size_t c_index = col("index"), c_id = col("run_id"), c_status = col("status"),
-                      c_behaviour = col("behaviour"), c_distance = col("distance_m"),
-                      c_terminal = col("terminal_velocity_m_s");
-    std::map<std::size_t, const std::vector<std::string>*> rows;
-    for (const auto& r : t.rows) {
-        const std::size_t i = std::stoull(r.at(c_index));
-        if (i < vp.plan.runs.size() && vp.plan.runs[i].id == r.at(c_id)) rows[i] = &r;
-    }
-    const std::vector<RunScene> scenes = run_scenes(vp.plan);
-    std::vector<std::vector<sweep::ScoredRun>> per(file.observations.size());
-    for (const sweep::RunPlace& p : vp.places) {
-        sweep::ScoredRun s;
-        s.angle_deg = scenes[p.run].angle_deg;  // the place's own angle for an angle-range observation
-        s.ramp_length_m = scenes[p.run].ramp_length_m;
-        s.run_id = vp.plan.runs[p.run].id;
-        s.seed = p.seed;
-        s.label = p.label;
-        s.label_without_angle = p.label_without_angle;
-        if (const auto it = rows.find(p.run); it != rows.end()) {
-            const auto& r = *it->second;
-            s.ok = r.at(c_status) == "ok";
-            s.behaviour = r.at(c_behaviour);
-            if (!r.at(c_distance).empty()) s.distance_m = std::stod(r.at(c_distance));
-            if (!r.at(c_terminal).empty()) s.terminal_velocity_m_s = std::stod(r.at(c_terminal));
-        }
-        per[p.observation].push_back(s);
-    }
-    std::vector<sweep::ObservationScore> scores;
-    for (std::size_t i = 0; i < file.observations.size(); ++i)
-        scores.push_back(sweep::score_observation(file.observations[i], per[i]));
-    return scores;
 }
 
 // The figures of a scored folder, into DIR/figures/. Figures are an extra: without a Python that has
@@ -154,7 +73,7 @@ int run(const ValidateArgs& a) {
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
     const sweep::ObservationFile file = sweep::read_observations(a.observations);
-    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, overrides_of(a));
+    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, observation_overrides(a.scene));
 
     const fs::path dir = a.out;
     std::error_code ec;
@@ -198,11 +117,12 @@ int run(const ValidateArgs& a) {
                    shard->first, shard->second);
         return kExitOk;
     }
-    const std::vector<sweep::ObservationScore> scores = score(file, vp, dir);
+    const std::vector<sweep::ObservationScore> scores =
+        sweep::score_validation(file, vp, sweep::finished_outcomes(vp.plan, dir));
     const json about = {{"observations_file", file.origin}, {"seeds", a.seeds}, {"runs", vp.plan.runs.size()},
                         {"overrides", [&] {
                              json o2 = json::object();
-                             for (const auto& [f, v] : overrides_of(a)) o2[f] = v;
+                             for (const auto& [f, v] : observation_overrides(a.scene)) o2[f] = v;
                              return o2;
                          }()}};
     write_file_atomic(dir / "scorecard.csv", sweep::scorecard_csv(scores));
@@ -238,20 +158,7 @@ Action add_validate_command(CLI::App& app) {
     sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
                                        "replaced)")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
-    sub->add_option("--set,--param", a->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
-                                              "--set fill.material.wall_friction=0.05 (repeatable)")
-        ->group("Scene");
-    // Every scene flag but the seed (--seeds gives those), from the field table.
-    for (const SceneField& f : scene_fields()) {
-        if (f.flag.empty() || f.type == FieldType::seed) continue;
-        const std::string path(f.path);
-        CLI::Option* o = sub->add_option_function<std::string>(
-                                std::string(f.flag),
-                                [a, path](const std::string& v) { a->scene_text[path].first = v; },
-                                field_help(f) + " (on top of every observation)")
-                             ->group("Scene");
-        a->scene_text[path] = {"", o};
-    }
+    add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));
     return [a] { return run(*a); };
 }
 

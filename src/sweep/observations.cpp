@@ -100,11 +100,21 @@ std::string behaviour_of(const Where& w, const std::string& key, const json& v) 
 }
 
 void read_observed(const Where& w, const json& o, Observation& ob) {
-    check_keys(w, "observed.", o, {"behaviour", "not_behaviour", "linear_fit", "terminal_velocity"});
+    check_keys(w, "observed.", o, {"behaviour", "not_behaviour", "linear_fit", "terminal_velocity", "distance_m",
+                                   "terminal_velocity_m_s"});
     if (o.contains("behaviour")) ob.behaviour = behaviour_of(w, "observed.behaviour", o["behaviour"]);
     if (o.contains("not_behaviour")) ob.not_behaviour = behaviour_of(w, "observed.not_behaviour", o["not_behaviour"]);
-    if (ob.behaviour.empty() == ob.not_behaviour.empty())
+    if (o.contains("distance_m"))
+        ob.distance_m = number_in(w, "observed.distance_m", o["distance_m"], 0, 1e6, false, "a distance in m, 0 or more");
+    if (o.contains("terminal_velocity_m_s"))
+        ob.terminal_velocity_m_s = number_in(w, "observed.terminal_velocity_m_s", o["terminal_velocity_m_s"], 0, 1e6,
+                                             false, "a speed in m/s, 0 or more");
+    const bool measured = ob.distance_m || ob.terminal_velocity_m_s;
+    if (!ob.behaviour.empty() && !ob.not_behaviour.empty())
         w.fail("observed", o, "exactly one of 'behaviour' and 'not_behaviour'");
+    if (ob.behaviour.empty() && ob.not_behaviour.empty() && !measured)
+        w.fail("observed", o, "one of 'behaviour' and 'not_behaviour', or a measured 'distance_m' or "
+                              "'terminal_velocity_m_s'");
     if (o.contains("terminal_velocity"))
         ob.terminal_velocity = string_of(w, "observed.terminal_velocity", o["terminal_velocity"]);
     if (o.contains("linear_fit")) {
@@ -128,12 +138,29 @@ void read_observed(const Where& w, const json& o, Observation& ob) {
 }
 
 void read_tolerance(const Where& w, const json& t, Observation& ob) {
-    check_keys(w, "tolerance.", t, {"behaviour_share", "angle_range_deg", "slope_relative", "reason"});
-    if (t.contains("behaviour_share"))
+    check_keys(w, "tolerance.", t, {"behaviour_share", "angle_range_deg", "slope_relative", "distance_m",
+                                    "terminal_velocity_m_s", "reason"});
+    const bool shares = !ob.behaviour.empty() || !ob.not_behaviour.empty();
+    if (t.contains("behaviour_share")) {
+        if (!shares) w.fail("tolerance.behaviour_share", t["behaviour_share"], "only with observed.behaviour or not_behaviour");
         ob.behaviour_share = number_in(w, "tolerance.behaviour_share", t["behaviour_share"], 0, 1, true,
                                        "a share above 0 and at most 1");
-    else if (!ob.angle_range_deg)
+    } else if (!ob.angle_range_deg && shares) {
         w.missing("tolerance.behaviour_share", "a share above 0 and at most 1");
+    }
+    // A measured number needs its tolerance, and a tolerance its number.
+    auto measured_tolerance = [&](const char* key, bool observed, const char* unit, double& out) {
+        const std::string name = std::string("tolerance.") + key;
+        if (!t.contains(key)) {
+            if (observed) w.missing(name, fmt::format("{} above 0, how far the simulation's mean may be off", unit));
+            return;
+        }
+        if (!observed) w.fail(name, t[key], fmt::format("only with observed.{}", key));
+        out = number_in(w, name, t[key], 0, 1e6, true, fmt::format("{} above 0", unit));
+    };
+    measured_tolerance("distance_m", ob.distance_m.has_value(), "m", ob.distance_tolerance_m);
+    measured_tolerance("terminal_velocity_m_s", ob.terminal_velocity_m_s.has_value(), "m/s",
+                       ob.terminal_velocity_tolerance_m_s);
     if (ob.angle_range_deg) {
         if (!t.contains("angle_range_deg")) w.missing("tolerance.angle_range_deg", "degrees above 0");
         if (!t.contains("slope_relative")) w.missing("tolerance.slope_relative", "a share above 0");
@@ -218,6 +245,9 @@ Observation read_observation(const std::string& origin, const json& e, std::size
         ob.angle_range_deg = std::make_pair(lo, hi);
         if (ob.behaviour.empty())
             w.fail("observed", e["observed"], "an angle-range observation names the 'behaviour' of its band");
+        if (ob.distance_m || ob.terminal_velocity_m_s)
+            w.fail("observed", e["observed"], "no measured distance_m or terminal_velocity_m_s with angle_range_deg "
+                                              "(D against theta is its linear_fit)");
         if (!e.contains("angles_deg"))
             w.missing("angles_deg", "the angles to simulate, reaching past both ends of angle_range_deg");
         ob.angles_deg = read_angles(w, e["angles_deg"]);

@@ -25,10 +25,13 @@ struct Observation {
     std::string source;
     nlohmann::ordered_json scene = nlohmann::ordered_json::object();  // field path -> value, flattened
     std::vector<std::pair<std::string, std::vector<nlohmann::ordered_json>>> grid;  // field path -> values
-    // Observed: exactly one of behaviour and not_behaviour.
+    // Observed: at most one of behaviour and not_behaviour, and at least one of those or a measured number.
     std::string behaviour;      // "rolled_to_end", "stopped", "stopped_at_first_impact" or ""
     std::string not_behaviour;  // a behaviour no run may show, or ""
     std::string terminal_velocity;  // the source's words, reported but not scored
+    // Measured numbers (a lab's own file): the mean over the runs must lie within the tolerance.
+    std::optional<double> distance_m;             // distance rolled before stopping (or to the end)
+    std::optional<double> terminal_velocity_m_s;  // over the last full turn, runs that rolled to the end
     // An angle-range observation: the band where `behaviour` shows, D against theta over it, and the
     // angles to simulate (reaching past both ends, to find them).
     std::optional<std::pair<double, double>> angle_range_deg;
@@ -38,6 +41,8 @@ struct Observation {
     double behaviour_share = 1.0;   // least share of runs showing `behaviour` (or not showing not_behaviour)
     double angle_tolerance_deg = 0.0;
     double slope_relative = 0.0;
+    double distance_tolerance_m = 0.0;
+    double terminal_velocity_tolerance_m_s = 0.0;
     std::string reason;
 };
 

@@ -31,6 +31,11 @@ std::string beyond_text(double diff, double tolerance, const std::string& unit, 
                        tolerance, unit);
 }
 
+// The objective's units (ScoreCheck::miss): a share's shortfall is counted in tenths of the runs, and a
+// check with nothing to compare (no band, no runs with a value) counts as this many tolerances off.
+constexpr double kShareUnit = 0.1;
+constexpr double kNothingToCompare = 10.0;
+
 struct Spread {
     double mean = 0.0, min = 0.0, max = 0.0;
     std::size_t n = 0;
@@ -113,6 +118,9 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
                                         worst->at("runs").get<int>(), b);
     }
     c.agree = n > 0 && good >= need;
+    // The shortfall in tenths of the runs ("one run in ten"): a share has no tolerance of its own.
+    c.miss = n > 0 ? std::max(0.0, ob.behaviour_share - static_cast<double>(good) / static_cast<double>(n)) / kShareUnit
+                   : kNothingToCompare;
     if (n > 0) c.difference = static_cast<double>(good) / static_cast<double>(n) - ob.behaviour_share;
     if (n == 0)
         c.by = "no runs";
@@ -191,12 +199,17 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
                                              ob.behaviour);
         start.simulation = end.simulation = none;
         start.by = end.by = "no band";
+        // As far off as the simulated angles reach: worse than any band found among them.
+        const double span = at.empty() ? 0.0 : at.rbegin()->first - at.begin()->first;
+        start.miss = end.miss = std::max(span / tol, kNothingToCompare);
     } else {
         const double b0 = band.front(), b1 = band.back();
         start.simulation = fmt::format("{:g} deg ({})", b0, seeds_at(b0));
         end.simulation = fmt::format("{:g} deg ({})", b1, seeds_at(b1));
         start.difference = b0 - lo;
         end.difference = b1 - hi;
+        start.miss = (b0 - lo) / tol;
+        end.miss = (b1 - hi) / tol;
         start.agree = std::abs(b0 - lo) <= tol + 1e-9;
         end.agree = std::abs(b1 - hi) <= tol + 1e-9;
         start.by = beyond_text(b0 - lo, tol, "deg", 2);
@@ -226,6 +239,7 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
                         max_spread = std::max(max_spread, spread_of(a.d_shown).max - spread_of(a.d_shown).min);
                 }
         const std::optional<LineFit> fit = fit_line(xy);
+        slope.miss = 1.0 / ob.slope_relative;  // no slope: as far off as a slope of 0
         if (band.empty()) {
             slope.simulation = "no band, no slope";
             slope.by = "no band";
@@ -236,6 +250,7 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
             const double rel = (fit->slope - f.slope_m_per_deg) / std::abs(f.slope_m_per_deg);
             slope.difference = fit->slope - f.slope_m_per_deg;
             slope.agree = std::abs(rel) <= ob.slope_relative + 1e-9;
+            slope.miss = rel / ob.slope_relative;
             slope.simulation = fmt::format("{:.3f} m/deg (R^2 {:.2f}, {} runs; D seed spread up to {:.3f} m at one angle)",
                                            fit->slope, fit->r_squared, xy.size(), max_spread);
             slope.by = fmt::format("{:+.3f} m/deg ({:+.0f}%): {}", fit->slope - f.slope_m_per_deg, 100 * rel,
@@ -249,6 +264,50 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
     s.checks.push_back(start);
     s.checks.push_back(end);
     if (ob.linear_fit) s.checks.push_back(slope);
+}
+
+// A measured number (a lab's own): the mean over the runs that have one, within the tolerance.
+ScoreCheck measured_check(const std::string& name, const std::vector<double>& values, double observed,
+                          double tolerance, const std::string& unit, std::size_t runs, ObservationScore& s,
+                          const std::string& detail_key) {
+    ScoreCheck c;
+    c.check = name;
+    c.unit = unit;
+    c.experiment = fmt::format("{:g} {} (+/- {:g})", observed, unit, tolerance);
+    const Spread sp = spread_of(values);
+    s.details[detail_key] = json{{"runs_with_value", sp.n}, {"mean", sp.n ? json(sp.mean) : json()},
+                                 {"min", sp.n ? json(sp.min) : json()}, {"max", sp.n ? json(sp.max) : json()}};
+    if (sp.n == 0) {
+        c.simulation = fmt::format("no value in {} runs", runs);
+        c.by = "nothing to compare";
+        c.miss = kNothingToCompare;
+        return c;
+    }
+    c.simulation = fmt::format("{:.4f} {} (mean of {} of {} runs; {:.4f} to {:.4f})", sp.mean, unit, sp.n, runs, sp.min,
+                               sp.max);
+    c.difference = sp.mean - observed;
+    c.agree = std::abs(sp.mean - observed) <= tolerance + 1e-12;
+    c.miss = (sp.mean - observed) / tolerance;
+    c.by = beyond_text(sp.mean - observed, tolerance, unit, 4);
+    return c;
+}
+
+void score_measured(const Observation& ob, const std::vector<ScoredRun>& runs, ObservationScore& s) {
+    if (ob.distance_m) {
+        std::vector<double> v;
+        for (const ScoredRun& r : runs)
+            if (r.ok) v.push_back(r.distance_m);
+        s.checks.push_back(measured_check("distance", v, *ob.distance_m, ob.distance_tolerance_m, "m", runs.size(), s,
+                                          "distance_m"));
+    }
+    if (ob.terminal_velocity_m_s) {
+        std::vector<double> v;
+        for (const ScoredRun& r : runs)
+            if (r.ok && r.terminal_velocity_m_s) v.push_back(*r.terminal_velocity_m_s);
+        s.checks.push_back(measured_check("terminal velocity", v, *ob.terminal_velocity_m_s,
+                                          ob.terminal_velocity_tolerance_m_s, "m/s", runs.size(), s,
+                                          "terminal_velocity_m_s"));
+    }
 }
 
 // Rounded to 1e-9, so 14 - 15.2 is written -1.2 and not -1.1999999999999993.
@@ -322,8 +381,9 @@ ObservationScore score_observation(const Observation& ob, const std::vector<Scor
     s.details["failed_runs"] = failed;
     if (ob.angle_range_deg)
         score_band(ob, runs, s);
-    else
+    else if (!ob.behaviour.empty() || !ob.not_behaviour.empty())
         score_share(ob, runs, s);
+    score_measured(ob, runs, s);
     s.agree = std::all_of(s.checks.begin(), s.checks.end(), [](const ScoreCheck& c) { return c.agree; });
     return s;
 }

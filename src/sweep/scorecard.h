@@ -35,6 +35,10 @@ struct ScoreCheck {
     std::optional<double> difference;  // simulation minus experiment, in `unit` (none when nothing to compare)
     std::string unit;                  // "share", "deg", "m/deg"
     std::string by;                    // the difference in words: "+2.5 deg, 1.5 beyond the tolerance of 1 deg"
+    // How far from the experiment, in tolerances, continuous where the check allows: the calibration's
+    // objective sums its squares (docs/calibrate.md). 0 when the simulation is exactly as observed (a
+    // share: when it reaches the share); a check with nothing to compare gets a stated penalty.
+    double miss = 0.0;
 };
 
 struct ObservationScore {

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "sim/errors.h"
+#include "sim/models/face_clock.h"
 #include "sim/models/pivot_motion.h"
 
 namespace polyroll::models {
@@ -35,7 +36,7 @@ constexpr long kMaxSteps = 2'000'000;
 
 class Roller {
 public:
-    Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track);
+    Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing);
     RollingRun run();
 
 private:
@@ -65,6 +66,8 @@ private:
     // The normal force the pivot must supply at rotation psi, given the step's energy constant
     // c = psi'^2 / 2 + a cos(psi) (the pendulum's energy integral).
     double normal_force(double psi, double c) const;
+    // The same from sin(psi), cos(psi) and the rate psi' (the energy-integral arcs).
+    double normal_force(double sin_psi, double cos_psi, double rate_rad_s) const;
 
     void rebuild_body();
     void rebuild_body_landed(long face);
@@ -78,9 +81,15 @@ private:
     void emit_series_samples(const PendulumSeries& s, double t_end);
     void check_normal(const PendulumSeries& s);
     std::pair<Event, double> find_event(const PendulumSeries& s, double h);
+    // Crosses the current pivot's arc to its next event in one go, timed from the energy integral;
+    // false (nothing done) where the arc must be stepped instead.
+    bool time_arc();
+    void emit_arc_samples(const EnergyArc& arc, double t_end);
+    void handle(Event e);
 
     const RollingBody& b_;
     const FillMotion fill_motion_;
+    const FaceTiming timing_;
     const RollingTrack& tr_;
     std::vector<Vec2> outer_;
     int n_ = 0;
@@ -111,8 +120,8 @@ private:
     int path_size_ = 0;
 };
 
-Roller::Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track)
-    : b_(body), fill_motion_(fill), tr_(track), outer_(body.outer_m) {
+Roller::Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing)
+    : b_(body), fill_motion_(fill), timing_(timing), tr_(track), outer_(body.outer_m) {
     n_ = static_cast<int>(outer_.size());
     side_ = geom::length(outer_[1] - outer_[0]);
     radius_ = geom::length(outer_[0]);
@@ -180,6 +189,14 @@ double Roller::normal_force(double psi, double c) const {
     // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
     const double sp = std::sin(psi), cp = std::cos(psi);
     const double w2 = std::max(0.0, 2.0 * (c - piv_.a * cp));
+    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
+    const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
+    return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
+}
+
+double Roller::normal_force(double sp, double cp, double rate) const {
+    // The same, for the energy-integral arcs (kept apart so the stepped path's rounding is unchanged).
+    const double w2 = rate * rate;
     const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
     const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
     return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
@@ -382,6 +399,64 @@ void Roller::finish(Behaviour b, double end_time) {
     if (b == Behaviour::rolled_to_end) set_terminal_velocity(m, n_);
 }
 
+void Roller::handle(Event e) {
+    switch (e) {
+        case Event::end: finish(Behaviour::rolled_to_end, t_); break;
+        case Event::forward: impact(+1); break;
+        case Event::backward: impact(-1); break;
+        case Event::none: break;
+    }
+}
+
+bool Roller::time_arc() {
+    const int dir = omega_ > 0.0 ? 1 : omega_ < 0.0 ? -1 : 0;
+    if (dir == 0) return false;  // released or landed at rest: starts at a turning point
+    const double psi0 = psi();
+    const double target = dir > 0 ? std::min(piv_.psi_hi, piv_.psi_end) : piv_.psi_lo;
+    if ((target - psi0) * dir <= 0.0) return false;  // already at the boundary: the stepper ends it
+    const Event event = dir < 0 ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
+    // The fill is frozen between impacts and nothing dissipates there: the pendulum's energy is exact.
+    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(psi0);
+    EnergyArc arc(piv_.a, c);
+    if (!arc.set_arc(psi0, target)) return false;  // swings back before the target, or grazes the top
+    const double tau = arc.time_s(arc.u_from(), arc.u_to());
+    if (!(t_ + tau < tr_.time_limit_s)) return false;  // the stepper stops it at the time limit
+    // The normal force at the arc's ends and its quadrature nodes (3 to 32 per arc, dense where the
+    // rate changes fastest). Where it turns negative the stepper times the arc again to find when.
+    const ArcPoint end = arc.point(arc.u_to());
+    double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_), normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s));
+    arc.for_each_node([&](const ArcPoint& p) { n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s)); });
+    if (n_min < 0.0 && out_.model_valid) return false;
+    out_.min_normal_force_N = std::min(out_.min_normal_force_N, n_min);
+    emit_arc_samples(arc, t_ + tau);
+    ++out_.timed_arcs;
+    t_ += tau;
+    phi_ = target + piv_.phi_top;
+    omega_ = end.rate_rad_s;
+    handle(event);
+    return true;
+}
+
+void Roller::emit_arc_samples(const EnergyArc& arc, double t_end) {
+    const double phi_saved = phi_, omega_saved = omega_;
+    // Each row's point from the previous row's: short steps, so Newton starts close.
+    double u_prev = arc.u_from(), t_prev = t_;
+    for (;;) {
+        const double ts = sample_time(next_sample_);
+        if (ts >= t_end) break;
+        const double u = arc.u_after(u_prev, std::max(0.0, ts - t_prev));
+        const ArcPoint p = arc.point(u);
+        phi_ = p.psi_rad + piv_.phi_top;
+        omega_ = p.rate_rad_s;
+        out_.measured.trajectory.push_back(sample(ts));
+        ++next_sample_;
+        u_prev = u;
+        t_prev = std::max(t_prev, ts);
+    }
+    phi_ = phi_saved;
+    omega_ = omega_saved;
+}
+
 RollingRun Roller::run() {
     emit_samples_before(std::nextafter(0.0, 1.0));  // the release state is the first row
     for (long j = 0; j <= 1; ++j)
@@ -402,6 +477,7 @@ RollingRun Roller::run() {
             finish(Behaviour::time_limit, t_);
             break;
         }
+        if (timing_ == FaceTiming::energy_integral && time_arc()) continue;
         const PendulumSeries s(psi(), omega_, piv_.a);
         const double h = std::min({s.accurate_step_s(), kMaxStepS, left});
         const auto [event, tau] = find_event(s, h);
@@ -415,12 +491,7 @@ RollingRun Roller::run() {
         t_ = event == Event::none && tau == left ? tr_.time_limit_s : t_ + tau;
         phi_ = psi_new + piv_.phi_top;
         omega_ = rate;
-        switch (event) {
-            case Event::end: finish(Behaviour::rolled_to_end, t_); break;
-            case Event::forward: impact(+1); break;
-            case Event::backward: impact(-1); break;
-            case Event::none: break;
-        }
+        handle(event);
     }
     out_.measured.max_energy_gain_J = 0.0;
     for (const TrajectorySample& s : out_.measured.trajectory)
@@ -432,9 +503,9 @@ RollingRun Roller::run() {
 
 }  // namespace
 
-RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track) {
+RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing) {
     if (body.outer_m.size() < 3) throw InputError("a rolling polygon needs at least 3 sides");
-    Roller r(body, fill, track);
+    Roller r(body, fill, track, timing);
     return r.run();
 }
 

@@ -31,6 +31,13 @@ enum class FillMotion {
     relevel,  // after each impact the fill's surface re-levels to horizontal
 };
 
+// How the rotation about each pivot is followed between impacts (docs/physics.md).
+enum class FaceTiming {
+    stepped,          // the pendulum's Taylor series stepped through every arc (pivot_motion.h)
+    energy_integral,  // each arc timed by quadrature of the energy integral (face_clock.h); the series
+                      // only for arcs with a turning point, or where the normal force turns negative
+};
+
 // The ramp and the run's rules, in SI units and the ramp frame of world_builder.h.
 struct RollingTrack {
     double angle_deg = 0.0;
@@ -54,12 +61,15 @@ struct RollingRun {
     std::optional<double> model_invalid_time_s;
     double min_normal_force_N = 0.0;  // over the whole run
     double fill_mass_kg = 0.0;
-    long steps = 0;                   // integrator steps
+    long steps = 0;                   // integrator steps and arcs timed from the energy integral
+    long timed_arcs = 0;              // of those, arcs timed from the energy integral
     double relevel_dissipated_J = 0.0;  // the part of the dissipated energy from re-levelling
 };
 
 // Runs to rest, the ramp's end or the time limit. Throws InputError if the release rotation puts the
 // next vertex below the ramp (more than one face past the starting one).
-RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track);
+// Both timings give the same run to about 1e-12 relative (tests/test_models.cpp checks it).
+RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track,
+                FaceTiming timing = FaceTiming::stepped);
 
 }  // namespace polyroll::models

@@ -1,0 +1,323 @@
+// polyroll calibrate: fits chosen unmeasured scene fields to an observations file (issue 11, item 3).
+// The optimiser, the objective and the folder's growing plan are in sweep/calibration.*; this file
+// checks the command line, keeps the output folder (resume, --force) and writes the results.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "cli/interruptible_sweep.h"
+#include "cli/observation_flags.h"
+#include "sim/atomic_file.h"
+#include "sim/errors.h"
+#include "sim/scene_json.h"
+#include "sweep/calibration.h"
+#include "sweep/grid_values.h"
+#include "sweep/progress.h"
+#include "sweep/results_table.h"
+#include "sweep/scorecard.h"
+
+namespace polyroll::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+constexpr int kMaxEvaluations = 10000;
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+struct CalibrateArgs {
+    std::string params, observations, out = "runs/calibrate", algorithm = "sbplx", shard;
+    std::vector<std::string> starts;  // FIELD=VALUE
+    int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
+    bool force = false, quiet = false;
+    ObservationSceneFlags scene;
+};
+
+// The command as given, for the provenance (rebuilt from the parsed values: the same command).
+std::string command_text(const CalibrateArgs& a) {
+    std::string c = "polyroll calibrate --params " + a.params;
+    if (!a.observations.empty()) c += " --observations " + a.observations;
+    c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
+    for (const std::string& s : a.starts) c += " --start " + s;
+    if (!a.shard.empty()) c += " --shard " + a.shard;
+    c += observation_flags_text(a.scene);
+    c += " --out " + a.out;
+    return c;
+}
+
+std::vector<std::pair<std::string, double>> starts_of(const CalibrateArgs& a) {
+    std::vector<std::pair<std::string, double>> out;
+    for (const std::string& s : a.starts) {
+        const auto eq = s.find('=');
+        std::vector<json> v;
+        if (eq != std::string::npos && eq > 0) v = sweep::parse_grid_values("--start " + s.substr(0, eq), s.substr(eq + 1));
+        if (v.size() != 1 || !v.front().is_number())
+            throw InputError(fmt::format("--start '{}' is not FIELD=NUMBER (e.g. --start ramp.friction=0.6)", s));
+        out.emplace_back(s.substr(0, eq), v.front().get<double>());
+    }
+    return out;
+}
+
+// Everything that decides the calibration's path: a folder whose calibration.json has the same
+// setup is resumed. The budget is not part of it: rerunning with a larger --max-evals continues.
+json setup_json(const sweep::CalibrationSetup& s) {
+    json params = json::array();
+    for (const sweep::CalibrationParam& p : s.params)
+        params.push_back(json{{"field", p.path}, {"from", p.lo}, {"to", p.hi}, {"bounds_from", p.bounds_from},
+                              {"start", p.start}, {"start_from", p.start_from}});
+    json overrides = json::object();
+    for (const auto& [f, v] : s.overrides) overrides[f] = v;
+    return json{{"observations_file", s.file.origin}, {"observations", s.file.doc}, {"seeds", s.seeds},
+                {"overrides", overrides}, {"params", params}, {"algorithm", s.algorithm}};
+}
+
+const std::vector<const char*> kCalibrationFiles = {"plan.json", "results.csv", "shards", "runs", "evaluations.csv",
+                                                    "calibration.json", "calibrated-scene.json", "observations.json",
+                                                    "scorecard.csv", "scorecard.json"};
+
+std::string values_text(const sweep::CalibrationSetup& s, const std::vector<double>& v) {
+    std::string out;
+    for (std::size_t i = 0; i < v.size(); ++i) out += fmt::format("{}{}={:.6g}", i ? " " : "", s.params[i].path, v[i]);
+    return out;
+}
+
+std::string evaluations_csv(const sweep::CalibrationSetup& s, const std::vector<sweep::Evaluation>& evals) {
+    std::vector<std::string> header = {"evaluation"};
+    for (const auto& p : s.params) header.push_back(p.path);
+    for (const char* c : {"objective", "checks_agreeing", "checks", "runs", "failed", "ran", "wall_time_s"})
+        header.emplace_back(c);
+    std::string out = sweep::csv_line(header);
+    for (const sweep::Evaluation& e : evals) {
+        std::vector<std::string> row = {std::to_string(e.number)};
+        for (double v : e.values) row.push_back(sweep::number_cell(v));
+        row.push_back(sweep::number_cell(e.objective));
+        for (std::size_t n : {e.agreeing, e.checks, e.runs, e.failed, e.ran}) row.push_back(std::to_string(n));
+        row.push_back(fmt::format("{:.3f}", e.wall_time_s));
+        out += sweep::csv_line(row);
+    }
+    return out;
+}
+
+// The calibrated values (and the command line's) as a partial scene file, with its provenance in the
+// scene file's free-text "description".
+json calibrated_scene(const sweep::CalibrationSetup& s, const sweep::Evaluation& best, const sweep::Evaluation& before,
+                      const std::string& command) {
+    json doc = json::object();
+    doc["description"] = fmt::format(
+        "Calibrated by polyroll calibrate: {} fitted to {} ({} observations, seeds 1..{}); objective {:.4g} with the "
+        "scene's own values, {:.4g} with these ({} of {} checks agree, {} before). Command: {}. Details: "
+        "calibration.json beside this file.",
+        values_text(s, best.values), s.file.origin, s.file.observations.size(), s.seeds, before.objective,
+        best.objective, best.agreeing, best.checks, before.agreeing, command);
+    auto put = [&](const std::string& path, const json& v) {
+        json* node = &doc;
+        std::size_t start = 0;
+        for (std::size_t dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
+            node = &(*node)[path.substr(start, dot - start)];
+            start = dot + 1;
+        }
+        (*node)[path.substr(start)] = v;
+    };
+    for (const auto& [f, v] : s.overrides) put(f, v);
+    for (std::size_t i = 0; i < s.params.size(); ++i) put(s.params[i].path, best.values[i]);
+    return doc;
+}
+
+json evaluation_json(const sweep::CalibrationSetup& s, const sweep::Evaluation& e) {
+    json values = json::object();
+    for (std::size_t i = 0; i < e.values.size(); ++i) values[s.params[i].path] = e.values[i];
+    return json{{"evaluation", e.number}, {"values", values}, {"objective", e.objective},
+                {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"runs", e.runs}, {"failed", e.failed}};
+}
+
+int run(const CalibrateArgs& a) {
+    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
+    if (a.max_evals < 0 || a.max_evals > kMaxEvaluations)
+        throw InputError(fmt::format("--max-evals {} is out of range (allowed: 0 to {})", a.max_evals, kMaxEvaluations));
+    const auto& algorithms = sweep::calibration_algorithms();
+    if (std::find(algorithms.begin(), algorithms.end(), a.algorithm) == algorithms.end())
+        throw InputError(fmt::format("--algorithm {}: unknown (allowed: sbplx, bobyqa, cobyla, neldermead)", a.algorithm));
+
+    std::optional<std::pair<int, int>> shard;
+    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
+
+    sweep::CalibrationSetup setup;
+    setup.file = sweep::read_observations(a.observations);
+    setup.seeds = a.seeds;
+    setup.overrides = observation_overrides(a.scene);
+    setup.algorithm = a.algorithm;
+    setup.max_evaluations = a.max_evals;
+    // The scene the fields' limits and own values are read from: the observations' first run.
+    const sweep::ValidationPlan first = sweep::make_validation_plan(setup.file, 1, setup.overrides);
+    const Scene scene = resolve_scene(sweep::run_layers(first.plan, first.plan.runs.front()));
+    setup.params = sweep::parse_calibration_params(a.params, scene, setup.file);
+    for (const auto& p : setup.params)
+        for (const auto& [f, v] : setup.overrides)
+            if (f == p.path)
+                throw InputError(fmt::format("--params {}: also set on the command line (allowed: fit it or set it, "
+                                             "not both; --start {}=VALUE starts the search there)", f, f));
+    sweep::set_start_values(setup.params, scene, starts_of(a));
+    // Both corners of the bounds must be valid scenes for every observation: checked before anything is written.
+    for (const bool upper : {false, true}) {
+        auto o = setup.overrides;
+        for (const auto& p : setup.params) o.emplace_back(p.path, upper ? p.hi : p.lo);
+        sweep::make_validation_plan(setup.file, 1, o);
+    }
+
+    const fs::path dir = a.out;
+    const json setup_doc = setup_json(setup);
+    std::error_code ec;
+    bool resume = false;
+    if (fs::exists(dir / "calibration.json", ec)) {
+        json old;
+        try {
+            old = json::parse(read_text(dir / "calibration.json"));
+        } catch (const std::exception&) {
+        }
+        if (old.is_object() && old.value("setup", json()) == setup_doc)
+            resume = true;
+        else if (!a.force)
+            throw InputError(fmt::format("--out {}: holds another calibration (other observations, fields, bounds, "
+                                         "seeds or scene flags); allowed: a new folder, the same command to resume, or "
+                                         "--force to start over", a.out));
+        else
+            for (const char* name : kCalibrationFiles) fs::remove_all(dir / name);
+    }
+    // The shards of one calibration start side by side: a folder holding another shard's first files is theirs.
+    if (!resume) prepare_output_dir(dir, a.force || shard.has_value());
+    const std::string command = command_text(a);
+    write_file_atomic(dir / "observations.json", setup.file.doc.dump(2) + "\n");
+    write_file_atomic(dir / "calibration.json",
+                      json{{"format", "polyroll-calibration-1"}, {"status", "running"}, {"command", command},
+                           {"setup", setup_doc}}
+                              .dump(1) + "\n");
+
+    // Ctrl-C at any moment, during a candidate's sweep or between two, stops at the next sweep.
+    const InterruptScope interrupt_scope("polyroll calibrate");
+    const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    sweep::CalibrationRuns runs(dir, setup, [&](const sweep::SweepPlan& plan) {
+        sweep::SweepOptions o;
+        o.dir = dir;
+        o.jobs = jobs;
+        o.quiet = true;  // one line per evaluation instead
+        o.shard = shard;
+        return run_sweep_interruptibly(plan, o, "polyroll calibrate");
+    }, shard.has_value(), [&](std::size_t missing) {
+        if (!a.quiet)
+            fmt::print(stderr, "polyroll calibrate: shard {}/{} done with this candidate; waiting for the other "
+                               "shards' {} runs\n", shard->first, shard->second, missing);
+    }, [&] { return interrupt_scope.interrupted(); });
+    std::vector<sweep::Evaluation> seen;
+    const std::size_t budget = static_cast<std::size_t>(a.max_evals) + 1;
+    auto progress = [&](const sweep::Evaluation& e, const sweep::Evaluation& best) {
+        seen.push_back(e);
+        write_file_atomic(dir / "evaluations.csv", evaluations_csv(setup, seen));
+        if (a.quiet) return;
+        fmt::print(stderr, "polyroll calibrate: evaluation {}/{}{} {}: objective {:.4g} ({} of {} checks agree, {} runs{}, "
+                           "{}); best {:.4g} (#{})\n",
+                   e.number, budget - 1, e.number == 0 ? " (the scene's own values)" : "", values_text(setup, e.values),
+                   e.objective, e.agreeing, e.checks, e.runs,
+                   e.failed ? fmt::format(", {} failed", e.failed) : std::string(),
+                   e.ran == 0 ? "found done" : fmt::format("{:.1f} s", e.wall_time_s), best.objective, best.number);
+    };
+    sweep::CalibrationOutcome outcome;
+    try {
+        outcome = sweep::run_calibration(setup, runs, progress);
+    } catch (const sweep::CalibrationInterrupted&) {
+        fmt::print("polyroll calibrate: interrupted after {} evaluations: run the same command again to resume\n",
+                   seen.size());
+        return kExitInterrupted;
+    }
+    const sweep::Evaluation& before = outcome.evaluations.front();
+    const sweep::Evaluation& best = outcome.evaluations[outcome.best];
+
+    json params = json::array();
+    for (std::size_t i = 0; i < setup.params.size(); ++i) {
+        const auto& p = setup.params[i];
+        params.push_back(json{{"field", p.path}, {"from", p.lo}, {"to", p.hi}, {"bounds_from", p.bounds_from},
+                              {"start", p.start}, {"start_from", p.start_from}, {"best", best.values[i]}});
+    }
+    json evaluations = json::array();
+    for (const auto& e : outcome.evaluations) evaluations.push_back(evaluation_json(setup, e));
+    const json doc = {{"format", "polyroll-calibration-1"},
+                      {"status", "done"},
+                      {"command", command},
+                      {"setup", setup_doc},
+                      {"params", params},
+                      {"objective", "sum over every check of its miss squared, in tolerances (docs/calibrate.md)"},
+                      {"objective_before", before.objective},
+                      {"objective_after", best.objective},
+                      {"checks_agreeing_before", before.agreeing},
+                      {"checks_agreeing_after", best.agreeing},
+                      {"checks", best.checks},
+                      {"best_evaluation", best.number},
+                      {"evaluations_run", outcome.evaluations.size()},
+                      {"stop_reason", outcome.stop_reason},
+                      {"evaluations", evaluations}};
+    write_file_atomic(dir / "calibration.json", doc.dump(1) + "\n");
+    write_file_atomic(dir / "calibrated-scene.json", calibrated_scene(setup, best, before, command).dump(2) + "\n");
+    const json about = {{"observations_file", setup.file.origin}, {"seeds", setup.seeds},
+                        {"calibrated", evaluation_json(setup, best)["values"]}};
+    write_file_atomic(dir / "scorecard.csv", sweep::scorecard_csv(best.scores));
+    write_file_atomic(dir / "scorecard.json", sweep::scorecard_json(best.scores, about).dump(1) + "\n");
+
+    fmt::print("polyroll calibrate: {} evaluations ({}), {} runs in the folder\n", outcome.evaluations.size(),
+               outcome.stop_reason, runs.plan().runs.size());
+    for (std::size_t i = 0; i < setup.params.size(); ++i)
+        fmt::print("  {:<32} {:.6g} (start {:.6g}, bounds {:g} to {:g})\n", setup.params[i].path, best.values[i],
+                   setup.params[i].start, setup.params[i].lo, setup.params[i].hi);
+    fmt::print("  objective          {:.4g} before, {:.4g} after (#{}); checks agreeing {} before, {} after, of {}\n",
+               before.objective, best.objective, best.number, before.agreeing, best.agreeing, best.checks);
+    fmt::print("  calibrated scene   {}\n", (dir / "calibrated-scene.json").string());
+    fmt::print("  details            {}  {}  {}\n", (dir / "calibration.json").string(),
+               (dir / "evaluations.csv").string(), (dir / "scorecard.csv").string());
+    return kExitOk;
+}
+
+}  // namespace
+
+Action add_calibrate_command(CLI::App& app) {
+    auto a = std::make_shared<CalibrateArgs>();
+    CLI::App* sub = app.add_subcommand("calibrate", "fit unmeasured scene fields to an observations file");
+    sub->footer(
+        "Each candidate runs every observation over seeds 1..N (the same seeds for every candidate) as rows of\n"
+        "one sweep folder; NLopt minimises the scorecard's summed squared misses within the bounds. Bounds:\n"
+        "FIELD=FROM:TO, else assets/calibration.json's, else the field's limits. docs/calibrate.md.\n"
+        "Examples:\n"
+        "  polyroll calibrate --params fill.material.restitution,fill.material.friction,ramp.friction --jobs 2\n"
+        "  polyroll calibrate --params ramp.friction=0.4:1.0 --observations my-lab.json --fidelity draft\n"
+        "The same command resumes (a larger --max-evals continues). Exit codes: 0 done, 2 bad input,\n"
+        "130 interrupted (resume with the same command), 1 other failure.");
+    sub->add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)")->required();
+    sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub->add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
+        ->check(CLI::Range(1, 1000));
+    sub->add_option("--max-evals", a->max_evals,
+                    fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
+    sub->add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");
+    sub->add_option("--start", a->starts, "start FIELD=VALUE instead of the scene's own value (repeatable)");
+    sub->add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "
+                                     "(default runs/calibrate); the same command there resumes");
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    sub->add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
+                                         "(the same command, other K, sharing --out) run the rest")
+        ->group("Running");
+    sub->add_flag("--force", a->force, "start over in a folder holding something else")->group("Running");
+    sub->add_flag("--quiet,-q", a->quiet, "no progress lines")->group("Running");
+    add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));
+    return [a] { return run(*a); };
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,229 @@
+// polyroll calibrate as users run it: it finds again a value polyroll itself was run with (the
+// recovery test of issue 11, item 3), resumes from its folder, and refuses bad input with one line
+// and exit 2, writing nothing.
+#include <catch2/catch.hpp>
+
+#include "test_helpers.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using polyroll::test::read_file;
+using polyroll::test::run_command;
+
+const std::string exe = POLYROLL_EXE;
+
+// The small hexagon a quarter full of BBs rolls to the end of the wooden ramp at 25 degrees; at
+// draft fidelity a run takes about 0.1 s. Its terminal velocity rises with the grains' restitution
+// (measured over 4 seeds: 0.29 m/s at 0.3, 0.31 at 0.6, 0.34 at 0.7, 0.40 at 0.8, 0.52 at 0.9; the
+// seed spread is about 0.01 m/s), so one measured number pins the restitution down.
+const char* kSceneFlags = " --polygon hexagon-small --fill 0.25 --material bb --ramp wooden --angle 25 --fidelity draft";
+
+// The mean of one column of a results table.
+double column_mean(const std::string& table, const std::string& column) {
+    std::istringstream in(table);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream hs(line);
+    for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
+    const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), column) - header.begin());
+    REQUIRE(at < header.size());
+    double sum = 0.0;
+    int n = 0;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream ls(line);
+        for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
+        REQUIRE(at < cells.size());
+        sum += std::stod(cells[at]);
+        ++n;
+    }
+    REQUIRE(n > 0);
+    return sum / n;
+}
+
+// One observation of the scene above: a lab's measured terminal velocity.
+std::string lab_observations(double terminal_velocity_m_s, double tolerance_m_s) {
+    nlohmann::ordered_json doc = {
+        {"observations",
+         {{{"id", "hexagon-terminal-velocity"},
+           {"source", "polyroll itself"},
+           {"scene",
+            {{"shell", {{"preset", "hexagon-small"}}},
+             {"fill", {{"ratio", 0.25}, {"material", "bb"}}},
+             {"ramp", {{"preset", "wooden"}, {"angle_deg", 25}}},
+             {"fidelity", {{"preset", "draft"}}}}},
+           {"observed", {{"terminal_velocity_m_s", terminal_velocity_m_s}}},
+           {"tolerance", {{"terminal_velocity_m_s", tolerance_m_s}}}}}}};
+    return doc.dump(2);
+}
+
+fs::path write_text(const fs::path& p, const std::string& text) {
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("calibrate: finds again the restitution polyroll was run with, within the seed noise, and resumes",
+          "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-recovery", true);
+    // The "experiment": polyroll at a chosen restitution, over seeds the calibration does not use
+    // (11-14), so the observation carries its own seed noise as a lab's would.
+    constexpr double kTrueRestitution = 0.7;
+    const auto truth = run_command(exe + " sweep" + kSceneFlags + " --set fill.material.restitution=0.7" +
+                                   " --seed 11,12,13,14 --jobs 2 -q --out " + (scratch / "truth").string());
+    INFO(truth.out);
+    REQUIRE(truth.exit_code == 0);
+    const double observed = column_mean(read_file(scratch / "truth" / "results.csv"), "terminal_velocity_m_s");
+    // Tolerance: about the standard error of a 4-seed mean (0.01 m/s / sqrt(4) = 0.005 m/s).
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(observed, 0.006));
+    const fs::path out = scratch / "out";
+    // From the bb preset's own restitution (0.5, the scene's value) and a wide bound.
+    const std::string cmd = exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+                            obs.string() + " --seeds 4 --max-evals 20 --jobs 2 --out " + out.string();
+    const auto first = run_command(cmd);
+    INFO(first.out);
+    REQUIRE(first.exit_code == 0);
+    CHECK_THAT(first.out, Catch::Contains("evaluation 0/20 (the scene's own values) fill.material.restitution=0.5"));
+    const auto doc = nlohmann::json::parse(read_file(out / "calibration.json"));
+    CHECK(doc["status"] == "done");
+    CHECK(doc["params"][0]["start"] == 0.5);
+    const double found = doc["params"][0]["best"].get<double>();
+    // Within the seed noise: near 0.7 the terminal velocity rises about 0.45 m/s per unit of
+    // restitution, and the two 4-seed means (observation and candidate) each carry about 0.005 m/s of
+    // seed noise, so the restitution is known to about 0.016; 0.05 is three of those.
+    CHECK(std::abs(found - kTrueRestitution) <= 0.05);
+    CHECK(doc["objective_after"].get<double>() < 1.0);  // the mean within the tolerance
+    CHECK(doc["objective_before"].get<double>() > 25.0);  // 0.5 is far off: 0.30 against 0.35 m/s
+    CHECK(doc["checks_agreeing_after"] == 1);
+    CHECK(doc["evaluations"].size() == 21);
+    CHECK(doc["setup"]["observations"]["observations"][0]["id"] == "hexagon-terminal-velocity");
+    CHECK(doc["command"].get<std::string>().find("--params fill.material.restitution=0.3:0.95") != std::string::npos);
+    const std::string evaluations = read_file(out / "evaluations.csv");
+    CHECK(evaluations.rfind("evaluation,fill.material.restitution,objective,", 0) == 0);
+
+    // The calibrated scene file is a scene polyroll runs, with its provenance in its description.
+    const auto scene = nlohmann::json::parse(read_file(out / "calibrated-scene.json"));
+    CHECK(scene["fill"]["material"]["restitution"].get<double>() == found);
+    CHECK_THAT(scene["description"].get<std::string>(), Catch::Contains("objective") && Catch::Contains("lab.json"));
+    const auto rerun = run_command(exe + " run --scene " + (out / "calibrated-scene.json").string() +
+                                   " --fidelity draft --time-limit 0.5");
+    INFO(rerun.out);
+    CHECK(rerun.exit_code == 0);
+
+    // The same command resumes: every evaluation's runs are found done, and the result is the same.
+    const auto again = run_command(cmd);
+    INFO(again.out);
+    REQUIRE(again.exit_code == 0);
+    CHECK_THAT(again.out, Catch::Contains("found done"));
+    CHECK_FALSE(Catch::Contains(" s); best").match(again.out));  // no evaluation ran anything
+    CHECK(nlohmann::json::parse(read_file(out / "calibration.json"))["params"][0]["best"].get<double>() == found);
+    const std::string resumed = read_file(out / "evaluations.csv");
+    CHECK(std::count(resumed.begin(), resumed.end(), '\n') == 22);  // header and 21 evaluations
+
+    // Another calibration in the same folder is refused, nothing changed.
+    const auto other = run_command(exe + " calibrate --params fill.material.restitution=0.3:0.9 --observations " +
+                                   obs.string() + " --seeds 4 --max-evals 0 -q --out " + out.string());
+    CHECK(other.exit_code == 2);
+    CHECK_THAT(other.out, Catch::Contains("holds another calibration"));
+    CHECK(read_file(out / "evaluations.csv") == resumed);
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("calibrate: two shards side by side retrace the same path as one process", "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-shards", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006));
+    auto cmd = [&](const fs::path& out) {
+        return exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " + obs.string() +
+               " --seeds 2 --max-evals 6 --jobs 1 -q --out " + out.string();
+    };
+    const auto one = run_command(cmd(scratch / "one"));
+    INFO(one.out);
+    REQUIRE(one.exit_code == 0);
+    // Two processes, one slice each of every candidate's runs, sharing the folder.
+    const fs::path shared = scratch / "shared";
+    const auto both = run_command("(" + cmd(shared) + " --shard 1/2 > " + (scratch / "a.log").string() + " 2>&1 & " +
+                                  cmd(shared) + " --shard 2/2 > " + (scratch / "b.log").string() +
+                                  " 2>&1; b=$?; wait $!; a=$?; exit $((a + b)))");
+    INFO(read_file(scratch / "a.log") << read_file(scratch / "b.log"));
+    REQUIRE(both.exit_code == 0);
+    const auto solo = nlohmann::json::parse(read_file(scratch / "one" / "calibration.json"));
+    const auto sharded = nlohmann::json::parse(read_file(shared / "calibration.json"));
+    CHECK(sharded["params"] == solo["params"]);
+    CHECK(sharded["evaluations"] == solo["evaluations"]);
+    CHECK(fs::exists(shared / "shards" / "shard-1-of-2.csv"));
+    CHECK(fs::exists(shared / "shards" / "shard-2-of-2.csv"));
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("calibrate: Ctrl-C exits 130 and the same command resumes", "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-interrupt", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";
+    const std::string base = exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+                             obs.string() + " --seeds 6 --jobs 1 --out " + out.string();
+    const std::string cmd = base + " --max-evals 30";
+    // SIGINT once the first evaluation is written (30 evaluations of 6 runs take far longer).
+    const auto stopped = run_command("sh -c '" + cmd + " & p=$!; while [ ! -s " + (out / "evaluations.csv").string() +
+                                     " ]; do sleep 0.05; done; kill -INT $p; wait $p'");
+    INFO(stopped.out);
+    CHECK(stopped.exit_code == 130);
+    CHECK_THAT(stopped.out, Catch::Contains("interrupted after"));  // stopped by the command, not killed
+    CHECK(nlohmann::json::parse(read_file(out / "calibration.json"))["status"] == "running");
+    const auto resumed = run_command(base + " --max-evals 2");  // a smaller budget: the same path, cut short
+    INFO(resumed.out);
+    // --max-evals is not part of the setup: the folder is resumed, not refused.
+    REQUIRE(resumed.exit_code == 0);
+    CHECK_THAT(resumed.out, Catch::Contains("evaluation 1/2") && Catch::Contains("found done"));
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[calibrate][cli][bad-input]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-bad", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";
+    const std::string lab = " --observations " + obs.string();
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"--params fill.material.stickiness" + lab, {"stickiness", "not a scene field", "fill.material.restitution"}},
+        {"--params shell.sides" + lab, {"shell.sides", "not a continuous number"}},
+        {"--params fill.material.preset" + lab, {"fill.material.preset", "not a continuous number"}},
+        {"--params run.seed" + lab, {"run.seed", "not a continuous number"}},
+        {"--params fill.material.restitution=0.5:1.5" + lab, {"0.5:1.5", "outside the field's limits", "from 0", "1"}},
+        {"--params ramp.friction=0.8:0.2" + lab, {"0.8:0.2", "FROM < TO"}},
+        {"--params ramp.friction=low:high" + lab, {"low:high", "FROM:TO"}},
+        {"--params ramp.friction,ramp.friction" + lab, {"ramp.friction", "twice"}},
+        {"--params ramp.angle_deg" + lab, {"ramp.angle_deg", "hexagon-terminal-velocity", "sets it"}},
+        {"--params ramp.friction --max-evals -1" + lab, {"--max-evals -1", "0 to 10000"}},
+        {"--params ramp.friction --max-evals 20000" + lab, {"--max-evals 20000", "0 to 10000"}},
+        {"--params ramp.friction --algorithm newton" + lab, {"newton", "sbplx"}},
+        {"--params ramp.friction --start ramp.friction=2" + lab, {"ramp.friction=2", "outside the bounds", "0.3", "1.2"}},
+        {"--params ramp.friction --start ramp.restitution=0.1" + lab, {"ramp.restitution", "not a field of --params"}},
+        {"--params ramp.friction --set ramp.friction=0.5" + lab, {"ramp.friction", "not both"}},
+        {"--params ramp.friction=0.1:0.5" + lab, {"the scene's ramp.friction=0.9", "outside the bounds"}},
+        {"--params ramp.friction --seeds 0" + lab, {"--seeds"}},
+        {"--params ramp.friction --shard 3/2" + lab, {"3/2"}},
+        {"--params ramp.friction --observations " + (scratch / "none.json").string(), {"cannot be read"}},
+    };
+    for (const Case& c : cases) {
+        const auto r = run_command(exe + " calibrate " + c.args + " -q --out " + out.string());
+        INFO(c.args << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        for (const std::string& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
+        CHECK_FALSE(fs::exists(out));
+    }
+    fs::remove_all(scratch);
+}
