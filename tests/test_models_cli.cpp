@@ -36,6 +36,28 @@ TEST_CASE("polyroll run --model writes the same files for each model", "[models]
     }
 }
 
+TEST_CASE("polyroll run --model auto says what it chose, why, and when it handed over", "[models][cli]") {
+    // An empty octagon at 30 deg lifts off: the rigid model hands the shell to Box2D.
+    const Output o = run_polyroll("run --model auto --fill 0 --sides 8 --angle 30");
+    INFO(o.out);
+    REQUIRE(o.exit_code == 0);
+    CHECK(o.out.find("model              rigid, handed over to grains at t = ") != std::string::npos);
+    CHECK(o.out.find("why                empty shell") != std::string::npos);
+    const Output j = run_polyroll("run --model auto --fill 0 --sides 8 --angle 30 --json");
+    REQUIRE(j.exit_code == 0);
+    const auto summary = nlohmann::json::parse(j.out);
+    CHECK(summary["scene"]["run"]["model"] == "auto");
+    CHECK(summary["results"]["model_choice"]["model"] == "rigid");
+    CHECK(summary["results"]["model_choice"]["then"] == "grains");
+    CHECK(summary["results"]["model_choice"]["hand_over_time_s"].is_number());
+    CHECK(summary.contains("engine"));
+    // Misspelt: one clear line, exit 2.
+    const Output bad = run_polyroll("run --model autoo");
+    CHECK(bad.exit_code == 2);
+    CHECK(std::count(bad.out.begin(), bad.out.end(), '\n') == 1);
+    CHECK(bad.out.find("allowed: grains, segments, rigid, auto") != std::string::npos);
+}
+
 TEST_CASE("polyroll compare runs all three models and writes their runs and a speed CSV", "[models][cli]") {
     const auto dir = fresh_dir("compare");
     // An empty shell keeps the grain run to a single body: fast.

@@ -215,7 +215,8 @@ void physics_controls(SandboxState& s, UiRequests& req) {
     }
     tip(field_tip(model, "segments: the fill as rigid segments that re-level after each impact; rigid: the fill "
                          "frozen as at release. The reduced models compute a whole run in under a millisecond and "
-                         "draw the shell only."));
+                         "draw the shell only. auto: rigid for an empty shell (Box2D takes over at lift-off), "
+                         "grains for a filled one."));
     changed |= preset_control(scene_field("fidelity.preset"), c, c.fidelity, set_fidelity, "");
     if (changed) req.controls_changed = true;
 }

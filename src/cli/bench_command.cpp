@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/bench_auto.h"
 #include "cli/bench_calibration.h"
 #include "cli/bench_models.h"
 #include "cli/bench_render.h"
@@ -23,6 +24,7 @@ struct BenchOptions {
     int repeats = 3;
     std::vector<std::string> presets;
     bool render_only = false, no_render = false, no_calibration = false;
+    bool auto_only = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -31,6 +33,10 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 int bench(const BenchOptions& o) {
     Scene base = o.scene.resolve();
+    if (o.auto_only) {
+        bench_auto(base, o.repeats);
+        return kExitOk;
+    }
     if (o.render_only) {
         bench_rendering(base, o.repeats);
         return kExitOk;
@@ -96,6 +102,8 @@ Action add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1, 100));
     sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
     sub->add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
+    sub->add_flag("--auto", opts->auto_only,
+                  "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     sub->add_flag("--no-calibration", opts->no_calibration,
                   "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");

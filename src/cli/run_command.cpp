@@ -21,11 +21,14 @@ struct RunOptions {
     bool force = false;
 };
 
-std::string describe_scene(const Scene& s) {
+std::string describe_scene(const RunResult& r) {
+    const Scene& s = r.scene;
     // Fidelity means the engine's step and iterations: only the grain model has them.
-    const std::string physics = model_traits(s.run.model).engine
-                                    ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
-                                    : to_string(s.run.model) + " model";
+    const Model ran = model_that_ran(r);
+    std::string physics = model_traits(ran).engine
+                              ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
+                              : to_string(ran) + " model";
+    if (r.model_choice) physics = "auto model, " + physics;
     return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {}",
                        s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
                        s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
@@ -35,13 +38,25 @@ std::string describe_scene(const Scene& s) {
 
 void print_summary(const RunResult& r, const std::string& out) {
     const Measurements& m = r.measured;
-    fmt::print("polyroll run: {}\n", describe_scene(r.scene));
+    fmt::print("polyroll run: {}\n", describe_scene(r));
+    if (r.model_choice) {
+        const ModelChoice& c = *r.model_choice;
+        if (c.hand_over_time_s)
+            fmt::print("  model              {}, handed over to {} at t = {:.3f} s (lift-off)\n", to_string(c.model),
+                       to_string(*c.then), *c.hand_over_time_s);
+        else if (c.then)
+            fmt::print("  model              {} throughout (it never lifted off: no hand-over to {})\n",
+                       to_string(c.model), to_string(*c.then));
+        else
+            fmt::print("  model              {}\n", to_string(c.model));
+        fmt::print("  why                {}\n", c.reason);
+    }
     fmt::print("  behaviour          {}\n", to_string(m.behaviour));
     if (m.behaviour == Behaviour::diverged) fmt::print("  divergence         {}\n", m.divergence);
     if (!r.model_valid)
         fmt::print("  model valid        no: from t = {:.3f} s the {} model needs a negative normal force (the real "
                    "polygon would hop); its numbers after that mean little\n",
-                   r.model_invalid_time_s.value_or(0.0), to_string(r.scene.run.model));
+                   r.model_invalid_time_s.value_or(0.0), to_string(model_that_ran(r)));
     fmt::print("  distance           {:.3f} m\n", m.distance_m);
     if (m.terminal_velocity_m_s)
         fmt::print("  terminal velocity  {:.3f} m/s (mean over the last {} faces)\n", *m.terminal_velocity_m_s,
@@ -61,8 +76,7 @@ void print_summary(const RunResult& r, const std::string& out) {
                    r.fill_mass_kg);
     else if (r.fill_mass_kg > 0.0)
         fmt::print("  fill               {:.4f} kg as {} (no grains in the {} model)\n", r.fill_mass_kg,
-                   model_traits(r.scene.run.model).fill_description,
-                   to_string(r.scene.run.model));
+                   model_traits(model_that_ran(r)).fill_description, to_string(model_that_ran(r)));
     else
         fmt::print("  grains             none (empty shell)\n");
     if (!out.empty()) fmt::print("  files              {}/summary.json, trajectory.csv, impacts.csv\n", out);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/auto_run.h"
 #include "sim/errors.h"
 #include "sim/models/reduced_run.h"
 #include "sim/scene_json.h"
@@ -61,7 +62,11 @@ Model reference_model() { return all_models().front(); }
 
 const ModelTraits& model_traits(Model model) { return row(model).traits; }
 
-std::unique_ptr<ModelRun> start_run(const Scene& scene) { return row(scene.run.model).start(scene); }
+std::unique_ptr<ModelRun> start_run(const Scene& scene) {
+    // auto is a rule over the rows, not a row: it never appears in all_models() (compare, bench).
+    if (scene.run.model == Model::automatic) return std::make_unique<AutoRun>(scene);
+    return row(scene.run.model).start(scene);
+}
 
 std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from) {
     const ModelRow& r = row(scene.run.model);

@@ -30,9 +30,11 @@ struct ModelTraits {
 const std::vector<Model>& all_models();
 // The grain simulation: the reference the reduced models are compared with and timed against.
 Model reference_model();
+// Throws InputError for Model::automatic, which is a rule, not a model: ask the result (model_that_ran).
 const ModelTraits& model_traits(Model model);
 
 // Builds (for grains: pours and settles) a run of the scene's model; the scene must be validated.
+// For Model::automatic, an AutoRun (auto_run.h) of the model choose_model picks.
 std::unique_ptr<ModelRun> start_run(const Scene& scene);
 
 // Continues with the scene's model the run `from` was handed over from (ModelRun::hand_over).

@@ -42,6 +42,15 @@ json summary_json(const RunResult& r) {
     results["steps"] = r.steps;
     results["model_valid"] = r.model_valid;
     results["model_invalid_time_s"] = r.model_invalid_time_s ? json(*r.model_invalid_time_s) : json(nullptr);
+    if (r.model_choice) {
+        const ModelChoice& c = *r.model_choice;
+        json choice;
+        choice["model"] = to_string(c.model);
+        choice["then"] = c.then ? json(to_string(*c.then)) : json(nullptr);
+        choice["reason"] = c.reason;
+        choice["hand_over_time_s"] = c.hand_over_time_s ? json(*c.hand_over_time_s) : json(nullptr);
+        results["model_choice"] = choice;
+    }
 
     json shell;
     shell["mass_kg"] = r.shell.mass_kg;
@@ -64,7 +73,7 @@ json summary_json(const RunResult& r) {
     out["results"] = results;
     out["shell"] = shell;
     // Box2D's units and step mean nothing to the reduced models, which integrate their own equations.
-    if (model_traits(r.scene.run.model).engine) out["engine"] = engine;
+    if (model_traits(model_that_ran(r)).engine) out["engine"] = engine;
     return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include "sim/engine_units.h"
 #include "sim/measurements.h"
+#include "sim/model_choice.h"
 #include "sim/scene.h"
 #include "sim/shell_properties.h"
 
@@ -28,6 +29,13 @@ struct RunResult {
     // turns negative (the real polygon hops), from model_invalid_time_s on. Always true for grains.
     bool model_valid = true;
     std::optional<double> model_invalid_time_s;
+    // Set for a run of `--model auto` (scene.run.model == automatic): which model ran, and why.
+    std::optional<ModelChoice> model_choice;
 };
+
+// The model that computed the end of the run (for auto, the chosen one after any hand-over).
+inline Model model_that_ran(const RunResult& r) {
+    return r.model_choice ? r.model_choice->last() : r.scene.run.model;
+}
 
 }  // namespace polyroll

@@ -69,8 +69,9 @@ struct FidelityParams {
 };
 
 // Which physics computes the run: the grain simulation, or one of the experimenters' reduced models
-// (docs/physics.md), which treat the polygon and its fill as one rigid body between impacts.
-enum class Model { grains, segments, rigid };
+// (docs/physics.md), which treat the polygon and its fill as one rigid body between impacts; or
+// `automatic` ("auto"): the model registry picks per scene (model_choice.h).
+enum class Model { grains, segments, rigid, automatic };
 
 struct RunParams {
     Model model = Model::grains;

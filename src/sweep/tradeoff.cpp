@@ -99,6 +99,11 @@ SweepPlan tradeoff_plan() {
         for (const char* model : {"rigid", "segments"})
             with({{"run.model", model}, {"fidelity.preset", "standard"}, {"run.seed", 1u}});
     }
+    // --model auto on every scene, after the rest so the earlier runs keep their indices and run ids:
+    // its error and cost against the standard preset's.
+    for (const auto& [n, r, material, a] : scenes)
+        add_run(plan, {{"shell.sides", n}, {"fill.ratio", r}, {"fill.material.preset", material},
+                       {"ramp.angle_deg", a}, {"run.model", "auto"}, {"fidelity.preset", "standard"}, {"run.seed", 1u}});
     return plan;
 }
 
