@@ -247,3 +247,23 @@ TEST_CASE("a sweep killed at random moments resumes with the same command, nothi
     fs::remove_all(ref);
     fs::remove_all(dir);
 }
+
+// A command killed in its first moments can leave only its write probe or a temporary in a folder it
+// just made (the sweep test above hit it: 1 of 17 runs refused the same command as "not empty").
+TEST_CASE("a folder holding only a killed process's probe or temporary is used again as empty",
+          "[hardening][crash-safety]") {
+    const fs::path dir = scratch("leftovers");
+    fs::create_directories(dir);
+    // 999999999 is above Linux's largest pid (2^22), so no process holds these names.
+    for (const char* name : {".polyroll-probe-999999999", ".plan.json.tmp-999999999"}) {
+        INFO(name);
+        std::ofstream(dir / name) << "x";
+        const std::vector<std::string> args{"sweep", "--sides", "6", "--fill", "0", "--angle", "25",
+                                            "--fidelity", "draft", "--time-limit", "0.2", "-q", "--out", dir.string()};
+        CHECK(run_whole(args).first == 0);
+        CHECK(!fs::exists(dir / name));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    fs::remove_all(dir);
+}

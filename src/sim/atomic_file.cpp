@@ -44,10 +44,12 @@ void write_file_atomic(const fs::path& path, std::string_view content, Durabilit
 
 namespace {
 
-// A killed writer leaves its temporary behind (never half a file under the real name). When the
-// folder is used again they are removed, unless the process that wrote one is still running.
+// A killed writer leaves its temporary behind (never half a file under the real name), and a process
+// killed between creating and removing its write probe leaves the probe. When the folder is used
+// again they are removed, unless the process that wrote one is still running; before the folder is
+// judged empty, so that a command killed in its first moments can be run again as it was.
 void remove_stale_temporaries(const fs::path& dir) {
-    static const std::regex temporary(R"(\..+\.tmp-(\d{1,9})(\..*)?)");
+    static const std::regex temporary(R"((?:\..+\.tmp-|\.polyroll-probe-)(\d{1,9})(\..*)?)");
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(dir, ec)) {
         const std::string name = e.path().filename().string();
@@ -66,11 +68,11 @@ std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
     if (fs::exists(dir, ec)) {
         if (!fs::is_directory(dir, ec))
             throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
+        remove_stale_temporaries(dir);
         if (!force && !fs::is_empty(dir, ec))
             throw InputError(fmt::format("--out {}: folder exists and is not empty (use --force to overwrite "
                                          "its files, or choose a new folder)",
                                          dir.string()));
-        remove_stale_temporaries(dir);
     } else {
         // The first missing ancestor is what to remove if the run fails.
         fs::path top = fs::absolute(dir, ec).lexically_normal();
