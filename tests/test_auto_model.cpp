@@ -14,12 +14,9 @@
 using namespace polyroll;
 using json = nlohmann::ordered_json;
 
-namespace {
+using polyroll::test::with_model;
 
-Scene with_model(Scene s, Model m) {
-    s.run.model = m;
-    return s;
-}
+namespace {
 
 Scene empty_scene(int sides, double angle_deg) {
     Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}},

@@ -36,6 +36,12 @@ inline std::string scene_error_of(const std::string& doc) {
     return "";
 }
 
+// The scene with another model (the rest unchanged).
+inline Scene with_model(Scene s, Model m) {
+    s.run.model = m;
+    return s;
+}
+
 // What a command printed (stdout and stderr together) and how it exited, for the tests that run
 // the programs as a user would.
 struct CommandResult {

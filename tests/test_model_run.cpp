@@ -17,12 +17,9 @@
 using namespace polyroll;
 using json = nlohmann::ordered_json;
 
-namespace {
+using polyroll::test::with_model;
 
-Scene with_model(Scene s, Model m) {
-    s.run.model = m;
-    return s;
-}
+namespace {
 
 // summary.json without the wall time, which is the only field that is not a function of the scene.
 json summary_without_wall_time(const RunResult& r) {
