@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sys/wait.h>
 
+#include <box2d/box2d.h>
 #include <nlohmann/json.hpp>
 
 namespace fs = std::filesystem;
@@ -155,4 +156,21 @@ TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli]
     CHECK(summary.at("results").at("behaviour") == "diverged");
     CHECK(summary.at("results").at("divergence").get<std::string>().find("finer fidelity") != std::string::npos);
     fs::remove_all(out);
+}
+
+TEST_CASE("--version names the version, the Box2D linked and the build type, for both programs", "[cli][version]") {
+    // The Box2D version as the library states it (b2_version), and CMake's project() version.
+    const std::string box2d =
+        "Box2D " + std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
+        std::to_string(b2_version.revision);
+    for (const char* program : {POLYROLL_EXE, POLYROLL_SANDBOX_EXE}) {
+        const Result r = polyroll::test::run_command(std::string(program) + " --version");
+        INFO(program << " --version -> " << r.out);
+        CHECK(r.exit_code == 0);
+        CHECK(line_count(r.out) == 1);
+        CHECK(r.out.find(" " POLYROLL_TEST_PROJECT_VERSION " ") != std::string::npos);
+        CHECK(r.out.find(box2d) != std::string::npos);
+        CHECK(r.out.find("build type " POLYROLL_TEST_BUILD_TYPE) != std::string::npos);
+    }
+    CHECK(run_polyroll("--version").out.rfind("polyroll 0", 0) == 0);
 }

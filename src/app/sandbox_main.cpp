@@ -32,6 +32,7 @@
 #include "render/font.h"
 #include "render/gl_renderer.h"
 #include "render/png_writer.h"
+#include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
 
@@ -447,9 +448,12 @@ int sandbox_main(int argc, char** argv) {
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
     cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
     cli.add_flag("--paused", o.paused, "start paused");
+    cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
     try {
         cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
         fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));

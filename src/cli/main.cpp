@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_table.h"
+#include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
 
@@ -14,12 +15,15 @@ int main(int argc, char** argv) {
     CLI::App app{"polyroll: hollow polygons partly filled with grains, rolling down an incline (2D, Box2D).\n"
                  "Units are SI (m, kg, s, m/s) and degrees."};
     app.require_subcommand(1);
+    app.set_version_flag("--version", polyroll::version_text("polyroll"), "print the version, Box2D's and the build type");
     auto commands = add_all_commands(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         // One line naming the bad flag or value; usage is one --help away.
