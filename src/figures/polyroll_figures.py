@@ -3,11 +3,11 @@
 
 polyroll figures, polyroll tradeoff and polyroll validate run this script; it only reads files the
 C++ side wrote:
-  polyroll_figures.py sweep RESULTS_CSV OUT_DIR [--trajectory RUN_DIR ...]
+  polyroll_figures.py sweep RESULTS_CSV OUT_DIR [--trajectory RUN_DIR ...] [--context JSON] [--format png,svg]
   polyroll_figures.py tradeoff POINTS_CSV OUT_PNG
   polyroll_figures.py validate SCORECARD_JSON RESULTS_CSV OUT_DIR
-Every axis says its unit; error bars are the spread over seeds (one standard deviation), except in
-the validate figures, which show the median and the full seed range.
+Every axis says its unit; spreads over seeds are the median and the full seed range. Each figure is
+written with a CSV of exactly what it plots.
 """
 import argparse
 import csv
@@ -41,7 +41,6 @@ BEHAVIOUR_COLOURS = {
     "diverged": "#000000",
     "failed": "#bbbbbb",
 }
-MATERIAL_COLOURS = {"bb": "#4477aa", "rice": "#ccbb44", "peas": "#228833"}
 # Columns that can split a figure into panels besides the ones a figure plots.
 FACET_COLUMNS = ["model", "fidelity", "polygon", "sides", "ramp", "release", "fill_ratio", "material", "angle_deg"]
 MAX_PANELS = 24
@@ -85,130 +84,8 @@ def facets(rows, exclude):
     return keys, items
 
 
-def panel_grid(n, width=4.2, height=3.3, max_cols=4):
-    cols = min(max_cols, max(1, n))
-    rows = max(1, math.ceil(n / cols))
-    fig, axes = plt.subplots(rows, cols, figsize=(width * cols, height * rows + 0.8), squeeze=False,
-                             layout="constrained")
-    for ax in axes.flat[n:]:
-        ax.set_visible(False)
-    return fig, list(axes.flat[:n])
-
-
 def panel_title(keys, values):
     return ", ".join(fmt_value(k, v) for k, v in zip(keys, values)) or "all runs"
-
-
-def seed_stats(rows, value):
-    """mean, standard deviation over seeds and count of a column, for rows of one point."""
-    v = np.array([num(r[value]) for r in rows])
-    v = v[np.isfinite(v)]
-    if len(v) == 0:
-        return math.nan, math.nan, 0
-    return float(v.mean()), float(v.std(ddof=1)) if len(v) > 1 else 0.0, len(v)
-
-
-def seeds_note(rows):
-    seeds = len({r["seed"] for r in rows})
-    return f"error bars: spread over {seeds} seeds (1 standard deviation)" if seeds > 1 else "one seed per point"
-
-
-def ok_rows(rows):
-    return [r for r in rows if r["status"] == "ok"]
-
-
-def distance_vs_angle(rows, out):
-    rows = ok_rows(rows)
-    stopping = [r for r in rows if r["behaviour"] in ("stopped", "stopped_at_first_impact")]
-    if not stopping:
-        return None
-    keys, groups = facets(stopping, exclude={"material", "angle_deg"})
-    fig, axes = panel_grid(len(groups))
-    for ax, (values, grows) in zip(axes, groups):
-        by_material = defaultdict(list)
-        for r in grows:
-            by_material[r["material"]].append(r)
-        for material, mrows in sorted(by_material.items()):
-            colour = MATERIAL_COLOURS.get(material)
-            by_angle = defaultdict(list)
-            for r in mrows:
-                by_angle[float(r["angle_deg"])].append(r)
-            angles = sorted(by_angle)
-            stats = [seed_stats(by_angle[a], "distance_m") for a in angles]
-            mean = np.array([s[0] for s in stats])
-            sd = np.array([s[1] for s in stats])
-            # The fit is over the angles where the polygon rolled before stopping (the third
-            # behaviour), when there are two or more: a first-impact stop has no distance to speak of.
-            rolled = [a for a in angles if sum(r["behaviour"] == "stopped" for r in by_angle[a]) * 2 >= len(by_angle[a])]
-            fit_angles = rolled if len(rolled) >= 2 else angles
-            label = material or "(no material)"
-            if len(fit_angles) >= 2:
-                x = np.array(fit_angles)
-                y = np.array([mean[angles.index(a)] for a in fit_angles])
-                slope, intercept = np.polyfit(x, y, 1)
-                xs = np.linspace(x.min(), x.max(), 50)
-                ax.plot(xs, slope * xs + intercept, "--", color=colour, lw=1)
-                label += f": slope {slope:.3g} m/deg"
-            ax.errorbar(angles, mean, yerr=sd, fmt="none", capsize=2, color=colour)
-            # Filled: the polygon rolled, then stopped (the third behaviour); hollow: it stopped at its
-            # first impact.
-            filled = [a in rolled for a in angles]
-            for want, face in ((True, colour), (False, "white")):
-                xs = [a for a, f in zip(angles, filled) if f == want]
-                if xs:
-                    ys = [m for m, f in zip(mean, filled) if f == want]
-                    first = want or not any(filled)
-                    ax.plot(xs, ys, "o", ms=5, color=colour, mfc=face, label=label if first else None)
-        ax.set_title(panel_title(keys, values), fontsize=9)
-        ax.set_xlabel("ramp angle theta (deg)")
-        ax.set_ylabel("distance before stopping D (m)")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle("Distance before stopping against ramp angle, per material (dashed: linear fit)\n"
-                 f"filled: rolled, then stopped; hollow: stopped at the first impact; runs that rolled to the end are not "
-                 f"shown; {seeds_note(rows)}", fontsize=10)
-    path = os.path.join(out, "distance_vs_angle.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def terminal_velocity_vs_fill(rows, out):
-    rows = [r for r in ok_rows(rows) if r["behaviour"] == "rolled_to_end" and r["terminal_velocity_m_s"]]
-    if not rows:
-        return None
-    keys, groups = facets(rows, exclude={"fill_ratio", "angle_deg"})
-    all_angles = sorted({float(r["angle_deg"]) for r in rows})
-    cmap = plt.get_cmap("viridis")
-    norm = matplotlib.colors.Normalize(min(all_angles), max(all_angles) if len(all_angles) > 1 else min(all_angles) + 1)
-    fig, axes = panel_grid(len(groups))
-    for ax, (values, grows) in zip(axes, groups):
-        by_angle = defaultdict(list)
-        for r in grows:
-            by_angle[float(r["angle_deg"])].append(r)
-        for angle in sorted(by_angle):
-            by_fill = defaultdict(list)
-            for r in by_angle[angle]:
-                by_fill[float(r["fill_ratio"])].append(r)
-            fills = sorted(by_fill)
-            stats = [seed_stats(by_fill[f], "terminal_velocity_m_s") for f in fills]
-            ax.errorbar(fills, [s[0] for s in stats], yerr=[s[1] for s in stats], fmt="o-", ms=3, lw=1, capsize=2,
-                        color=cmap(norm(angle)), label=f"{angle:g} deg")
-        ax.set_title(panel_title(keys, values), fontsize=9)
-        ax.set_xlabel("fill ratio r")
-        ax.set_ylabel("terminal velocity Vt (m/s)")
-        ax.set_xlim(-0.05, 1.05)
-        ax.grid(alpha=0.3)
-        if len(all_angles) <= 8:
-            ax.legend(fontsize=7, title="ramp angle", title_fontsize=7)
-    if len(all_angles) > 8:
-        sm = matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap)
-        fig.colorbar(sm, ax=axes, label="ramp angle theta (deg)", shrink=0.8)
-    fig.suptitle("Terminal velocity against fill ratio (runs that rolled to the end)\n" + seeds_note(rows), fontsize=10)
-    path = os.path.join(out, "terminal_velocity_vs_fill.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
 
 
 def majority(behaviours):
@@ -220,107 +97,6 @@ def majority(behaviours):
         if counts.get(b) == best:
             return b, len(counts) > 1
     return behaviours[0], len(counts) > 1
-
-
-def behaviour_map(rows, out):
-    for r in rows:
-        r["_b"] = r["behaviour"] if r["status"] == "ok" or r["behaviour"] == "diverged" else "failed"
-    keys, groups = facets(rows, exclude={"fill_ratio", "angle_deg"})
-    fig, axes = panel_grid(len(groups), width=4.4, height=3.8)
-    present = set()
-    for ax, (values, grows) in zip(axes, groups):
-        fills = sorted({float(r["fill_ratio"]) for r in grows if r["fill_ratio"]})
-        angles = sorted({float(r["angle_deg"]) for r in grows if r["angle_deg"]})
-        if not fills or not angles:
-            ax.set_visible(False)
-            continue
-        cells = defaultdict(list)
-        for r in grows:
-            if r["fill_ratio"] and r["angle_deg"]:
-                cells[(float(r["fill_ratio"]), float(r["angle_deg"]))].append(r["_b"])
-
-        def edges(v):
-            v = np.array(v)
-            if len(v) == 1:
-                return np.array([v[0] - 0.5, v[0] + 0.5])
-            mid = (v[1:] + v[:-1]) / 2
-            return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
-
-        fx, ay = edges(fills), edges(angles)
-        for (f, a), bs in cells.items():
-            b, mixed = majority(bs)
-            present.add(b)
-            i, j = fills.index(f), angles.index(a)
-            ax.add_patch(matplotlib.patches.Rectangle((fx[i], ay[j]), fx[i + 1] - fx[i], ay[j + 1] - ay[j],
-                                                      facecolor=BEHAVIOUR_COLOURS[b], edgecolor="white", lw=0.3,
-                                                      hatch="////" if mixed else None))
-        ax.set_xlim(fx[0], fx[-1])
-        ax.set_ylim(ay[0], ay[-1])
-        ax.set_title(panel_title(keys, values), fontsize=9)
-        ax.set_xlabel("fill ratio r")
-        ax.set_ylabel("ramp angle theta (deg)")
-    handles = [matplotlib.patches.Patch(color=BEHAVIOUR_COLOURS[b], label=BEHAVIOUR_LABELS[b]) for b in BEHAVIOURS
-               if b in present]
-    handles.append(matplotlib.patches.Patch(facecolor="white", edgecolor="grey", hatch="////",
-                                            label="seeds disagree (majority shown)"))
-    visible = [ax for ax in axes if ax.get_visible()]
-    if visible:
-        visible[-1].legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8)
-    fig.suptitle("Which behaviour occurs where, over fill ratio and ramp angle", fontsize=10)
-    path = os.path.join(out, "behaviour_map.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def speed_vs_time(run_dirs, out):
-    if not run_dirs:
-        return None
-    fig, ax = plt.subplots(figsize=(9, 4.8))
-    colours = plt.get_cmap("tab10")
-    for k, d in enumerate(run_dirs):
-        traj = read_rows(os.path.join(d, "trajectory.csv"))
-        impacts = read_rows(os.path.join(d, "impacts.csv"))
-        with open(os.path.join(d, "summary.json")) as f:
-            summary = json.load(f)
-        s, res = summary["scene"], summary["results"]
-        t = np.array([float(r["time_s"]) for r in traj])
-        v = np.array([float(r["speed_m_s"]) for r in traj])
-        label = (f"n = {s['shell']['sides']}, {s['fill']['material'].get('preset', 'custom')}, "
-                 f"r = {s['fill']['ratio']:g}, {s['ramp']['angle_deg']:g} deg, {s['run']['model']}: "
-                 f"{BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}")
-        c = colours(k % 10)
-        ax.plot(t, v, color=c, lw=1.2, label=label)
-        if impacts:
-            ti = np.array([float(r["time_s"]) for r in impacts])
-            ax.plot(ti, np.interp(ti, t, v), "o", ms=3, color=c, mfc="white")
-    ax.plot([], [], "o", ms=3, color="grey", mfc="white", label="face impacts")
-    ax.set_xlabel("time since release (s)")
-    ax.set_ylabel("lid centre speed along the ramp (m/s)")
-    ax.set_title("Speed against time (sampled at the run's sample rate; circles: face impacts)", fontsize=10)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="upper left")
-    fig.tight_layout()
-    path = os.path.join(out, "speed_vs_time.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def sweep_figures(args):
-    rows = read_rows(args.results)
-    if not rows:
-        sys.exit(f"polyroll figures: {args.results} has no rows")
-    made = [distance_vs_angle(rows, args.out), terminal_velocity_vs_fill(rows, args.out), behaviour_map(rows, args.out),
-            speed_vs_time(args.trajectory or [], args.out)]
-    for m in made:
-        if m:
-            print(m)
-    skipped = {"distance_vs_angle.png": made[0], "terminal_velocity_vs_fill.png": made[1],
-               "speed_vs_time.png": made[3]}
-    for name, m in skipped.items():
-        if not m:
-            print(f"polyroll figures: no {name}: no run in the table shows it", file=sys.stderr)
 
 
 def pareto(points):
@@ -427,10 +203,10 @@ def csv_cell(v):
     return v
 
 
-def save_validate_figure(fig, table, columns, out, stem):
-    """The figure as PNG and SVG and the numbers it plots as CSV, side by side; returns the paths."""
+def save_validate_figure(fig, table, columns, out, stem, formats=("png", "svg")):
+    """The figure in each format (PNG, SVG) and the numbers it plots as CSV, side by side; returns the paths."""
     paths = []
-    for ext in ("png", "svg"):
+    for ext in formats:
         path = os.path.join(out, f"{stem}.{ext}")
         write_whole(path, lambda tmp, ext=ext: fig.savefig(tmp, dpi=VALIDATE_DPI, format=ext))
         paths.append(path)
@@ -502,15 +278,31 @@ def d_vs_angle_figure(observation, runs):
     lo, hi = e["angle_range_deg"]
     tol = e.get("angle_tolerance_deg", 0.0)
     length_m = max((r["ramp_length_m"] for r in runs), default=1.0)
-    table = []
     fig, ax = plt.subplots(figsize=(8.2, 6.6), layout="constrained")
+    sim_fit, band = observation["details"].get("fit"), observation["details"].get("band_deg")
+    table = draw_d_vs_angle(ax, runs, length_m, (lo, hi, tol), e.get("linear_fit"),
+                            (sim_fit, band) if sim_fit and band else None)
+    angles = sorted({r["angle_deg"] for r in runs}) or [lo, hi]
+    half_step = (angles[1] - angles[0]) / 2 if len(angles) > 1 else 0.5
+    ax.set_xlim(min(angles[0], lo - tol) - half_step, max(angles[-1], hi + tol) + half_step)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2, fontsize=7.5, frameon=False)
+    ax.set_title(d_vs_angle_title(observation, runs), fontsize=9, loc="left")
+    return fig, table
 
-    # The paper's band, and how far each of its ends may be off.
-    # Light greys: the band is the background the runs and lines are read against, not a datum.
-    ax.axvspan(lo - tol, hi + tol, color="#f2f2f2", lw=0, gid="paper_band_tolerance",
-               label=f"paper's band \u00b1 {tol:g} deg (tolerance)")
-    ax.axvspan(lo, hi, color="#dcdcdc", lw=0, gid="paper_band", label=f"paper's band, {lo:.1f} to {hi:.1f} deg")
-    table += two_point("paper_band_tolerance", lo - tol, hi + tol) + two_point("paper_band", lo, hi)
+
+def draw_d_vs_angle(ax, runs, length_m, band=None, paper_fit=None, sim_fit=None, counted=True):
+    """D against theta on one axis from 0 to the ramp's length: every run by its outcome, the median and
+    range over seeds, the experiment's band (lo, hi, tolerance) and fit, and the simulation's fit
+    ((fit, (from, to)) over the third behaviour). Returns the table of what it plots (polyroll validate
+    and polyroll figures draw it alike)."""
+    table = []
+    if band:
+        lo, hi, tol = band
+        # Light greys: the band is the background the runs and lines are read against, not a datum.
+        ax.axvspan(lo - tol, hi + tol, color="#f2f2f2", lw=0, gid="paper_band_tolerance",
+                   label=f"paper's band \u00b1 {tol:g} deg (tolerance)")
+        ax.axvspan(lo, hi, color="#dcdcdc", lw=0, gid="paper_band", label=f"paper's band, {lo:.1f} to {hi:.1f} deg")
+        table += two_point("paper_band_tolerance", lo - tol, hi + tol) + two_point("paper_band", lo, hi)
 
     ax.axhline(length_m, ls=":", color="#555555", lw=1, gid="ramp_end", label=f"end of the ramp ({length_m:g} m)")
 
@@ -531,35 +323,30 @@ def d_vs_angle_figure(observation, runs):
         colour = BEHAVIOUR_COLOURS[b]
         ax.plot([r["angle_deg"] for r in mine], [drawn_distance_m(r) for r in mine], ls="none", ms=6, mew=1.2,
                 marker=style["marker"], color=colour, mfc=style["mfc"] or colour, alpha=0.85, gid=f"run:{b}",
-                label=f"{style['label']}: {len(mine)}", clip_on=False, zorder=3)
+                label=f"{style['label']}: {len(mine)}" if counted else style["label"], clip_on=False, zorder=3)
         table += [dict(element="run", angle_deg=r["angle_deg"], distance_m=drawn_distance_m(r), behaviour=b,
                        seed=r["seed"], run_id=r["run_id"]) for r in mine]
 
-    fit = e.get("linear_fit")
-    if fit:
-        ys = [fit["slope_m_per_deg"] * x + fit["intercept_m"] for x in (lo, hi)]
+    if paper_fit and band:
+        lo, hi = band[0], band[1]
+        ys = [paper_fit["slope_m_per_deg"] * x + paper_fit["intercept_m"] for x in (lo, hi)]
         ax.plot([lo, hi], ys, "-", color="black", lw=2, gid="paper_fit",
-                label=f"paper: {line_text(fit['slope_m_per_deg'], fit['intercept_m'])}, over its band")
+                label=f"paper: {line_text(paper_fit['slope_m_per_deg'], paper_fit['intercept_m'])}, over its band")
         table += two_point("paper_fit", lo, hi, *ys)
-    sim_fit, band = observation["details"].get("fit"), observation["details"].get("band_deg")
-    if sim_fit and band:
-        ys = [sim_fit["slope_m_per_deg"] * x + sim_fit["intercept_m"] for x in band]
-        ax.plot(band, ys, "--", color=BEHAVIOUR_COLOURS["stopped"], lw=2, gid="simulation_fit",
-                label=f"simulation: {line_text(sim_fit['slope_m_per_deg'], sim_fit['intercept_m'])} "
-                      f"(R\u00b2 {sim_fit['r_squared']:.2f}), over its band {band[0]:g} to {band[1]:g} deg")
-        table += two_point("simulation_fit", band[0], band[1], *ys)
+    if sim_fit:
+        fit, (x0, x1) = sim_fit
+        ys = [fit["slope_m_per_deg"] * x + fit["intercept_m"] for x in (x0, x1)]
+        ax.plot([x0, x1], ys, "--", color=BEHAVIOUR_COLOURS["stopped"], lw=2, gid="simulation_fit",
+                label=f"simulation, third behaviour: {line_text(fit['slope_m_per_deg'], fit['intercept_m'])}"
+                      + (f" (R\u00b2 {fit['r_squared']:.2f})" if fit.get("r_squared") is not None else "")
+                      + f", over {x0:g} to {x1:g} deg")
+        table += two_point("simulation_fit", x0, x1, *ys)
     table.append(dict(element="ramp_end", distance_m=length_m))
-
-    angles = sorted({r["angle_deg"] for r in runs}) or [lo, hi]
-    half_step = (angles[1] - angles[0]) / 2 if len(angles) > 1 else 0.5
-    ax.set_xlim(min(angles[0], lo - tol) - half_step, max(angles[-1], hi + tol) + half_step)
     ax.set_ylim(-0.04 * length_m, 1.06 * length_m)
     ax.set_xlabel("ramp angle \u03b8 (deg)")
     ax.set_ylabel("distance before stopping D (m)")
     ax.grid(alpha=0.3)
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncol=2, fontsize=7.5, frameon=False)
-    ax.set_title(d_vs_angle_title(observation, runs), fontsize=9, loc="left")
-    return fig, table
+    return table
 
 
 def d_vs_angle_title(observation, runs):
@@ -753,6 +540,314 @@ def validate_figures(args):
         print(f"  figure     {path}")
 
 
+# ---------------------------------------------------------------------------------------------------
+# polyroll figures on a sweep folder: D against theta, terminal velocity against fill, the behaviour
+# map and speed against time, each as PNG (and SVG with --format) with a CSV of what it plots. The
+# C++ side passes a context file: each run's ramp length (rolls to the end are drawn there) and the
+# experiment's angle-range observations with a linear fit (drawn where a panel matches one's scene).
+
+# Observation scene fields and the results.csv column each is matched against.
+OBSERVATION_COLUMNS = {"shell.preset": "polygon", "shell.sides": "sides", "fill.ratio": "fill_ratio",
+                       "fill.material": "material", "ramp.preset": "ramp", "release.pose": "release"}
+# A seed's terminal velocity this many times its point's median is a runaway (bounding) run.
+RUNAWAY_FACTOR = 1.5
+SWEEP_D_COLUMNS = ["panel"] + D_COLUMNS
+VT_COLUMNS = ["panel", "element", "fill_ratio", "angle_deg", "terminal_velocity_m_s", "low_m_s", "high_m_s", "seeds",
+              "seed", "run_id"]
+SWEEP_MAP_COLUMNS = ["panel", "fill_ratio", "angle_deg", "fill_from", "fill_to", "angle_from_deg", "angle_to_deg",
+                     "shown", "runs", "counts", "mixed"]
+SPEED_COLUMNS = ["run", "element", "time_s", "speed_m_s"]
+
+
+def sweep_runs(rows, lengths):
+    """results.csv rows as the runs draw_d_vs_angle draws (outcome, drawn where)."""
+    runs = []
+    for r in rows:
+        run = dict(r, angle_deg=num(r["angle_deg"]), distance_m=num(r["distance_m"]),
+                   ramp_length_m=float(lengths.get(r["run_id"], math.nan)))
+        run["outcome"] = outcome(run)
+        runs.append(run)
+    return runs
+
+
+def panel_label(keys, values):
+    return panel_title(keys, values)
+
+
+def matching_observation(observations, grows):
+    """The first observation whose scene every row of the panel shows (only fields results.csv holds)."""
+    for o in observations:
+        scene = o.get("scene", {})
+        if not scene or any(k not in OBSERVATION_COLUMNS for k in scene):
+            continue
+        if all(all(same_value(r[OBSERVATION_COLUMNS[k]], v) for r in grows) for k, v in scene.items()):
+            return o
+    return None
+
+
+def same_value(cell, value):
+    try:
+        return math.isclose(float(cell), float(value), rel_tol=1e-9, abs_tol=1e-12)
+    except (TypeError, ValueError):
+        return str(cell) == str(value)
+
+
+def third_behaviour_fit(runs):
+    """Least squares over every run that rolled, then stopped, when they span two angles or more."""
+    pts = [(r["angle_deg"], r["distance_m"]) for r in runs if r["outcome"] == "stopped"]
+    if len({a for a, _ in pts}) < 2:
+        return None
+    x, y = np.array([p[0] for p in pts]), np.array([p[1] for p in pts])
+    slope, intercept = np.polyfit(x, y, 1)
+    residual = float(((y - (slope * x + intercept)) ** 2).sum())
+    total = float(((y - y.mean()) ** 2).sum())
+    r2 = 1.0 - residual / total if total > 0 else None
+    return dict(slope_m_per_deg=float(slope), intercept_m=float(intercept), r_squared=r2), (float(x.min()),
+                                                                                             float(x.max()))
+
+
+def shared_handles(axes):
+    """The legend entries of every panel, once each: one legend in its own row under the panels."""
+    seen = OrderedDict()
+    for ax in axes:
+        for h, label in zip(*ax.get_legend_handles_labels()):
+            seen.setdefault(label, h)
+    return seen
+
+
+# A printed page's width: the figures are drawn at the size a paper prints them, fonts 7 to 9 pt.
+PAGE_WIDTH_IN = 7.2
+
+
+def panels_with_legend_row(n, height=2.5, max_cols=3, legend_rows=3):
+    """Panels sharing their axes, up to three a row across a page, and a row under them for the legend."""
+    cols = min(max_cols, max(1, n))
+    rows = max(1, math.ceil(n / cols))
+    legend_in = 0.17 * legend_rows + 0.2
+    fig = plt.figure(figsize=(PAGE_WIDTH_IN, height * rows + legend_in + 0.6), layout="constrained")
+    grid = fig.add_gridspec(rows + 1, cols, height_ratios=[height] * rows + [legend_in])
+    axes, first = [], None
+    for k in range(n):
+        ax = fig.add_subplot(grid[k // cols, k % cols], sharex=first, sharey=first)
+        first = first or ax
+        if k % cols:  # shared y axis: its numbers and name once, on the left panel of each row
+            ax.tick_params(labelleft=False)
+        axes.append(ax)
+    legend_ax = fig.add_subplot(grid[rows, :])
+    legend_ax.axis("off")
+    return fig, axes, legend_ax
+
+
+def left_panel(ax, axes, cols=3):
+    return axes.index(ax) % min(cols, len(axes)) == 0
+
+
+def page_title(fig, text):
+    fig.suptitle("\n".join(textwrap.wrap(text, 110)), fontsize=8.5)
+
+
+def d_vs_angle_sweep(rows, lengths, observations):
+    runs = sweep_runs(rows, lengths)
+    keys, groups = facets(runs, exclude={"angle_deg"})
+    fig, axes, legend_ax = panels_with_legend_row(len(groups), legend_rows=4)
+    length_m = max((r["ramp_length_m"] for r in runs if math.isfinite(r["ramp_length_m"])), default=1.0)
+    table, matched = [], []
+    for ax, (values, grows) in zip(axes, groups):
+        name = panel_label(keys, values)
+        o = matching_observation(observations, grows)
+        band = paper_fit = None
+        if o:
+            matched.append(o["id"])
+            band = (o["angle_range_deg"][0], o["angle_range_deg"][1], o.get("angle_tolerance_deg", 0.0))
+            paper_fit = o["linear_fit"]
+        part = draw_d_vs_angle(ax, grows, length_m, band, paper_fit, third_behaviour_fit(grows), counted=False)
+        table += [dict(t, panel=name) for t in part]
+        ax.set_title(name + (f"\nexp. {o['id']}" if o else ""), fontsize=7.5, loc="left")
+        ax.tick_params(labelsize=7.5)
+        ax.xaxis.label.set_size(8)
+        ax.yaxis.label.set_size(8)
+        if not left_panel(ax, axes):
+            ax.set_ylabel("")
+    handles = shared_handles(axes)
+    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=2, fontsize=7, frameon=False)
+    page_title(fig, "Distance before stopping D against ramp angle \u03b8, every run "
+               f"({seeds_count(rows)} seed{'s' if seeds_count(rows) != 1 else ''} per point); "
+               "dashed: linear fit over the runs that rolled, then stopped")
+    return fig, table
+
+
+def seeds_count(rows):
+    return len({r["seed"] for r in rows})
+
+
+def vt_points(grows):
+    """Per (angle, fill): the median terminal velocity over the seeds that rolled to the end, its range
+    without runaway seeds, and the runaway seeds (RUNAWAY_FACTOR times the median or more)."""
+    by_point = defaultdict(list)
+    for r in grows:
+        v = num(r["terminal_velocity_m_s"])
+        if r["status"] == "ok" and r["behaviour"] == "rolled_to_end" and math.isfinite(v):
+            by_point[(float(r["angle_deg"]), float(r["fill_ratio"]))].append((v, r))
+    points = []
+    for (angle, fill), vs in sorted(by_point.items()):
+        median = float(np.median([v for v, _ in vs]))
+        runaway = [(v, r) for v, r in vs if len(vs) > 1 and v >= RUNAWAY_FACTOR * median]
+        kept = [v for v, _ in vs if all(v != w for w, _ in runaway)]
+        median = float(np.median(kept))
+        points.append(dict(angle=angle, fill=fill, median=median, low=min(kept), high=max(kept), seeds=len(vs),
+                           runaway=runaway))
+    return points
+
+
+def terminal_velocity_sweep(rows):
+    keys, groups = facets(rows, exclude={"fill_ratio", "angle_deg"})
+    per_panel = [(values, vt_points(grows)) for values, grows in groups]
+    if not any(points for _, points in per_panel):
+        return None
+    all_angles = sorted({p["angle"] for _, points in per_panel for p in points})
+    cmap = plt.get_cmap("viridis")
+    norm = matplotlib.colors.Normalize(all_angles[0], all_angles[-1] if len(all_angles) > 1 else all_angles[0] + 1)
+    fig, axes, legend_ax = panels_with_legend_row(len(per_panel), legend_rows=2 + len(all_angles) // 6)
+    # The y scale is set by the medians and ranges, never by a runaway seed: those sit on the top edge.
+    top = 1.15 * max((p["high"] for _, points in per_panel for p in points), default=1.0)
+    table = []
+    for ax, (values, points) in zip(axes, per_panel):
+        name = panel_label(keys, values)
+        for angle in sorted({p["angle"] for p in points}):
+            mine = [p for p in points if p["angle"] == angle]
+            colour = cmap(norm(angle)) if len(all_angles) > 1 else "#4477aa"
+            xs, med = [p["fill"] for p in mine], [p["median"] for p in mine]
+            yerr = [[m - p["low"] for m, p in zip(med, mine)], [p["high"] - m for m, p in zip(med, mine)]]
+            ax.errorbar(xs, med, yerr=yerr, fmt="o-", ms=3.5, lw=1, capsize=2, color=colour, label=f"\u03b8 = {angle:g} deg",
+                        gid=f"median:{angle:g}")
+            for p in mine:
+                table.append(dict(panel=name, element="median", fill_ratio=p["fill"], angle_deg=angle,
+                                  terminal_velocity_m_s=p["median"], low_m_s=p["low"], high_m_s=p["high"],
+                                  seeds=p["seeds"]))
+                for v, r in p["runaway"]:
+                    ax.plot([p["fill"]], [top], marker="^", ms=7, ls="none", color=colour, mec="black", clip_on=False,
+                            zorder=4, gid="runaway", label="runaway seed (bounding), off scale: value in the CSV")
+                    table.append(dict(panel=name, element="runaway", fill_ratio=p["fill"], angle_deg=angle,
+                                      terminal_velocity_m_s=v, seed=r["seed"], run_id=r["run_id"]))
+        ax.set_title(name, fontsize=8, loc="left")
+        ax.set_xlabel("fill ratio r", fontsize=8)
+        ax.set_ylabel("terminal velocity Vt (m/s)", fontsize=8)
+        ax.tick_params(labelsize=7.5)
+        ax.set_xlim(-0.05, 1.05)
+        ax.set_ylim(0, top)
+        ax.grid(alpha=0.3)
+        if not left_panel(ax, axes):
+            ax.set_ylabel("")
+    handles = shared_handles(axes)
+    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=4, fontsize=7, frameon=False)
+    page_title(fig, "Terminal velocity against fill ratio, runs that rolled to the end: median over seeds, bars the "
+               f"least to greatest seed (a seed at {RUNAWAY_FACTOR:g}x its point's median or more is a runaway, "
+               "marked on the top edge and left out of the median and range)")
+    return fig, table
+
+
+def behaviour_map_sweep(rows):
+    for r in rows:
+        r["_b"] = r["behaviour"] if r["status"] == "ok" or r["behaviour"] == "diverged" else "failed"
+    keys, groups = facets(rows, exclude={"fill_ratio", "angle_deg"})
+    fig, axes, legend_ax = panels_with_legend_row(len(groups), legend_rows=2)
+    present, table = set(), []
+    for ax, (values, grows) in zip(axes, groups):
+        name = panel_label(keys, values)
+        fills = sorted({float(r["fill_ratio"]) for r in grows})
+        angles = sorted({float(r["angle_deg"]) for r in grows})
+        cells = defaultdict(list)
+        for r in grows:
+            cells[(float(r["fill_ratio"]), float(r["angle_deg"]))].append(r["_b"])
+        # Cells centred on the swept values: each reaches half way to its neighbours.
+        fx, ay = cell_edges(fills, 0.1), cell_edges(angles, 1.0)
+        for (f, a), bs in sorted(cells.items()):
+            b, mixed = majority(bs)
+            present.add(b)
+            i, j = fills.index(f), angles.index(a)
+            ax.add_patch(matplotlib.patches.Rectangle((fx[i], ay[j]), fx[i + 1] - fx[i], ay[j + 1] - ay[j],
+                                                      facecolor=BEHAVIOUR_COLOURS[b], edgecolor="white", lw=0.5,
+                                                      hatch="////" if mixed else None))
+            table.append(dict(panel=name, fill_ratio=f, angle_deg=a, fill_from=float(fx[i]), fill_to=float(fx[i + 1]),
+                              angle_from_deg=float(ay[j]), angle_to_deg=float(ay[j + 1]), shown=b, runs=len(bs),
+                              counts="; ".join(f"{k} {bs.count(k)}" for k in BEHAVIOURS if k in bs),
+                              mixed="yes" if mixed else "no"))
+        ax.set_xlim(fx[0], fx[-1])
+        ax.set_ylim(ay[0], ay[-1])
+        if len(fills) <= 9:
+            ax.set_xticks(fills)
+        if len(angles) <= 12:
+            ax.set_yticks(angles)
+        ax.tick_params(labelsize=7.5)
+        ax.set_title(name, fontsize=8, loc="left")
+        ax.set_xlabel("fill ratio r", fontsize=8)
+        ax.set_ylabel("ramp angle \u03b8 (deg)" if left_panel(ax, axes) else "", fontsize=8)
+    handles = [matplotlib.patches.Patch(color=BEHAVIOUR_COLOURS[b], label=BEHAVIOUR_LABELS[b]) for b in BEHAVIOURS
+               if b in present]
+    handles.append(matplotlib.patches.Patch(facecolor="white", edgecolor="grey", hatch="////",
+                                            label="seeds disagree (majority shown)"))
+    legend_ax.legend(handles=handles, loc="center", ncol=3, fontsize=7.5, frameon=False)
+    page_title(fig, f"Behaviour over fill ratio and ramp angle ({seeds_count(rows)} seeds per cell; cells centred on "
+               "the swept values)")
+    return fig, table
+
+
+def speed_vs_time_figure(run_dirs):
+    """Speed against time of each run folder, face impacts marked: (figure, table of what it plots)."""
+    fig, ax = plt.subplots(figsize=(7.5, 4.6), layout="constrained")
+    colours = plt.get_cmap("tab10")
+    table = []
+    for k, d in enumerate(run_dirs):
+        traj = read_rows(os.path.join(d, "trajectory.csv"))
+        impacts = read_rows(os.path.join(d, "impacts.csv"))
+        with open(os.path.join(d, "summary.json")) as f:
+            summary = json.load(f)
+        s, res = summary["scene"], summary["results"]
+        t = np.array([float(r["time_s"]) for r in traj])
+        v = np.array([float(r["speed_m_s"]) for r in traj])
+        label = (f"n = {s['shell']['sides']}, {s['fill']['material'].get('preset', 'custom')}, "
+                 f"r = {s['fill']['ratio']:g}, {s['ramp']['angle_deg']:g} deg, {s['run']['model']}: "
+                 f"{BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}")
+        c = colours(k % 10)
+        name = os.path.basename(os.path.normpath(d))
+        ax.plot(t, v, color=c, lw=1.2, label=label, gid=f"speed:{name}")
+        table += [dict(run=name, element="speed", time_s=a, speed_m_s=b) for a, b in zip(t, v)]
+        if impacts:
+            ti = np.array([float(r["time_s"]) for r in impacts])
+            vi = np.interp(ti, t, v)
+            ax.plot(ti, vi, "o", ms=3, color=c, mfc="white", gid=f"impacts:{name}")
+            table += [dict(run=name, element="impact", time_s=a, speed_m_s=b) for a, b in zip(ti, vi)]
+    ax.plot([], [], "o", ms=3, color="grey", mfc="white", label="face impacts")
+    ax.set_xlabel("time since release (s)")
+    ax.set_ylabel("lid centre speed along the ramp (m/s)")
+    ax.set_title("Speed against time (circles: face impacts)", fontsize=9, loc="left")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
+    return fig, table
+
+
+def sweep_figures(args):
+    rows = read_rows(args.results)
+    if not rows:
+        sys.exit(f"polyroll figures: {args.results} has no rows")
+    context = {}
+    if args.context:
+        with open(args.context) as f:
+            context = json.load(f)
+    lengths, observations = context.get("ramp_length_m", {}), context.get("observations", [])
+    formats = args.format.split(",")
+    made = [("distance_vs_angle", d_vs_angle_sweep(rows, lengths, observations), SWEEP_D_COLUMNS),
+            ("terminal_velocity_vs_fill", terminal_velocity_sweep(rows), VT_COLUMNS),
+            ("behaviour_map", behaviour_map_sweep(rows), SWEEP_MAP_COLUMNS),
+            ("speed_vs_time", speed_vs_time_figure(args.trajectory) if args.trajectory else None, SPEED_COLUMNS)]
+    for stem, drawn, columns in made:
+        if drawn is None:
+            print(f"polyroll figures: no {stem}: no run in the table shows it", file=sys.stderr)
+            continue
+        for path in save_validate_figure(drawn[0], drawn[1], columns, args.out, stem, formats):
+            print(f"  figure     {path}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="what", required=True)
@@ -760,6 +855,8 @@ def main():
     s.add_argument("results")
     s.add_argument("out")
     s.add_argument("--trajectory", action="append", help="a run folder with trajectory.csv, impacts.csv, summary.json")
+    s.add_argument("--context", help="JSON: ramp_length_m by run id, the experiment's observations to draw")
+    s.add_argument("--format", default="png", help="png, svg or png,svg")
     t = sub.add_parser("tradeoff")
     t.add_argument("points")
     t.add_argument("out")
