@@ -1,6 +1,8 @@
-// polyroll figures: the PNG figures of a sweep folder (distance against angle, terminal velocity
-// against fill, the behaviour map, speed against time), drawn by src/figures/polyroll_figures.py.
+// polyroll figures: the figures of a sweep folder (distance against angle, terminal velocity against
+// fill, the behaviour map, speed against time), of one run folder or of one compare folder (speed and
+// energy against time), drawn by src/figures/polyroll_figures.py, each with a CSV of what it plots.
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include <fmt/format.h>
@@ -9,6 +11,8 @@
 #include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/scene_json.h"
+#include "sweep/observations.h"
 #include "sweep/results_table.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_runner.h"
@@ -20,11 +24,69 @@ namespace {
 namespace fs = std::filesystem;
 
 struct FiguresArgs {
-    std::string sweep_dir;
+    std::string folder;
     std::string out = "figures";
     std::string runs;
+    std::string format = "png";
     bool force = false;
 };
+
+enum class FolderKind { sweep, run, compare };
+
+const char* const kCompareModels[] = {"grains", "segments", "rigid"};
+
+bool is_run_folder(const fs::path& dir) {
+    return fs::is_regular_file(dir / "summary.json") && fs::is_regular_file(dir / "trajectory.csv") &&
+           fs::is_regular_file(dir / "impacts.csv");
+}
+
+// What `polyroll sweep --out`, `run --out` or `compare --out` left in the folder; InputError otherwise.
+FolderKind folder_kind(const std::string& folder) {
+    const fs::path dir = folder;
+    if (fs::is_regular_file(dir / "plan.json")) return FolderKind::sweep;
+    if (is_run_folder(dir)) return FolderKind::run;
+    if (std::all_of(std::begin(kCompareModels), std::end(kCompareModels),
+                    [&](const char* m) { return is_run_folder(dir / m); }))
+        return FolderKind::compare;
+    throw InputError(fmt::format("'{}' is not a sweep, run or compare folder (allowed: a folder with plan.json from "
+                                 "polyroll sweep --out, summary.json, trajectory.csv and impacts.csv from polyroll run "
+                                 "--out, or grains/, segments/ and rigid/ from polyroll compare --out)",
+                                 folder));
+}
+
+// "png", "svg" or both, comma-separated; InputError naming the value otherwise.
+void check_format(const std::string& format) {
+    std::set<std::string> seen;
+    std::size_t pos = 0;
+    while (pos <= format.size()) {
+        const std::size_t comma = std::min(format.find(',', pos), format.size());
+        const std::string f = format.substr(pos, comma - pos);
+        pos = comma + 1;
+        if ((f != "png" && f != "svg") || !seen.insert(f).second)
+            throw InputError(fmt::format("--format: '{}' is not allowed (allowed: png, svg or png,svg)", format));
+    }
+}
+
+// What the script cannot read from results.csv: each run's ramp length (a run that rolled to the end
+// is drawn there) and the experiment's angle-range observations with a linear fit (drawn in the
+// panels whose runs match the observation's scene).
+nlohmann::json figure_context(const sweep::SweepPlan& plan) {
+    nlohmann::json lengths = nlohmann::json::object();
+    for (const sweep::PlannedRun& run : plan.runs)
+        lengths[run.id] = resolve_scene(sweep::run_layers(plan, run)).ramp.length_m;
+    nlohmann::json observations = nlohmann::json::array();
+    for (const sweep::Observation& o : sweep::read_observations("").observations) {
+        if (!o.angle_range_deg || !o.linear_fit) continue;
+        observations.push_back({{"id", o.id},
+                                {"scene", o.scene},
+                                {"angle_range_deg", {o.angle_range_deg->first, o.angle_range_deg->second}},
+                                {"angle_tolerance_deg", o.angle_tolerance_deg},
+                                {"linear_fit",
+                                 {{"slope_m_per_deg", o.linear_fit->slope_m_per_deg},
+                                  {"intercept_m", o.linear_fit->intercept_m}}}});
+    }
+    return {{"ramp_length_m", lengths}, {"observations", observations}};
+}
 
 // The runs shown against time: the ids given, or one per behaviour, all from the scene group (sides,
 // material, fill, model, fidelity) of the first run that rolled and then stopped, when there is one.
@@ -76,21 +138,26 @@ std::vector<std::size_t> chosen_runs(const sweep::SweepPlan& plan, const sweep::
     return out;
 }
 
-int run(const FiguresArgs& a) {
-    const fs::path dir = a.sweep_dir;
+int sweep_figures(const FiguresArgs& a) {
+    const fs::path dir = a.folder;
     const sweep::SweepPlan plan = sweep::read_plan(dir);
     const fs::path results = dir / "results.csv";
     const sweep::TableFile table = sweep::read_table(results);
     if (table.rows.empty())
         throw InputError(fmt::format("{}: no results yet (allowed: a sweep folder with results.csv; run the sweep, or "
-                                     "'polyroll sweep --merge {}' after shards)", results.string(), a.sweep_dir));
+                                     "'polyroll sweep --merge {}' after shards)", results.string(), a.folder));
     const std::vector<std::size_t> runs = chosen_runs(plan, table, a.runs);
+    const nlohmann::json context = figure_context(plan);
     // Checked before the output folder is made: a missing matplotlib leaves nothing behind.
     figures::figures_python();
     figures::figures_script();
     const auto created = prepare_output_dir(a.out, a.force);
+    // The context goes to the script as a file (a large sweep's would not fit a command line), removed after.
+    const fs::path context_file = fs::path(a.out) / ".figures-context.json";
     try {
-        std::vector<std::string> args = {"sweep", results.string(), a.out};
+        write_file_atomic(context_file, context.dump());
+        std::vector<std::string> args = {"sweep", results.string(), a.out, "--format", a.format, "--context",
+                                         context_file.string()};
         for (std::size_t i : runs) {
             const sweep::PlannedRun& run = plan.runs[i];
             fs::path run_dir = dir / "runs" / run.id;
@@ -105,6 +172,31 @@ int run(const FiguresArgs& a) {
             args.push_back(run_dir.string());
         }
         const int code = figures::run_figures_script(args);
+        fs::remove(context_file);
+        if (code != 0) throw std::runtime_error(fmt::format("the figure script failed (exit code {})", code));
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(context_file, ec);
+        if (created) fs::remove_all(*created, ec);
+        throw;
+    }
+    return kExitOk;
+}
+
+// A run folder or a compare folder: speed and energy against time, one run or the three models.
+int run_figures(const FiguresArgs& a, FolderKind kind) {
+    if (!a.runs.empty())
+        throw InputError(fmt::format("--runs '{}': only for a sweep folder, and '{}' is a {} folder", a.runs, a.folder,
+                                     kind == FolderKind::run ? "run" : "compare"));
+    figures::figures_python();
+    figures::figures_script();
+    const auto created = prepare_output_dir(a.out, a.force);
+    try {
+        std::vector<std::string> args = {kind == FolderKind::run ? "run" : "compare", a.out, "--format", a.format};
+        if (kind == FolderKind::run) args.push_back(a.folder);
+        else
+            for (const char* m : kCompareModels) args.push_back((fs::path(a.folder) / m).string());
+        const int code = figures::run_figures_script(args);
         if (code != 0) throw std::runtime_error(fmt::format("the figure script failed (exit code {})", code));
     } catch (...) {
         std::error_code ec;
@@ -114,19 +206,32 @@ int run(const FiguresArgs& a) {
     return kExitOk;
 }
 
+int run(const FiguresArgs& a) {
+    check_format(a.format);
+    const FolderKind kind = folder_kind(a.folder);
+    return kind == FolderKind::sweep ? sweep_figures(a) : run_figures(a, kind);
+}
+
 }  // namespace
 
 Action add_figures_command(CLI::App& app) {
     auto a = std::make_shared<FiguresArgs>();
-    CLI::App* sub = app.add_subcommand("figures", "draw the PNG figures of a sweep folder (python3-matplotlib)");
+    CLI::App* sub = app.add_subcommand(
+        "figures", "draw the figures of a sweep, run or compare folder, each with a CSV of what it plots "
+                   "(python3-matplotlib)");
     sub->footer(
-        "Figures: distance_vs_angle.png, terminal_velocity_vs_fill.png, behaviour_map.png, speed_vs_time.png.\n"
-        "Example:\n"
+        "A sweep folder: distance_vs_angle, terminal_velocity_vs_fill, behaviour_map, speed_vs_time.\n"
+        "A run folder (polyroll run --out) or a compare folder (polyroll compare --out): speed_vs_time and\n"
+        "energy_vs_time. Each figure as .png (and .svg with --format png,svg) beside a .csv of its numbers.\n"
+        "Examples:\n"
         "  polyroll figures sweeps/grid --out figures/\n"
+        "  polyroll figures runs/cmp --out figures/cmp --format png,svg\n"
         "Runs shown against time whose trajectory the sweep did not keep (sweep --trajectories) are run again\n"
         "into OUT/runs/<id>/. Exit codes: 0 done, 2 bad input, 1 other failure (e.g. matplotlib missing).");
-    sub->add_option("sweep", a->sweep_dir, "sweep folder (with plan.json and results.csv)")->required();
-    sub->add_option("--out", a->out, "folder for the PNG files (default: figures)");
+    sub->add_option("folder", a->folder, "sweep folder (plan.json, results.csv), run folder or compare folder")
+        ->required();
+    sub->add_option("--out", a->out, "folder for the figures (default: figures)");
+    sub->add_option("--format", a->format, "png, svg or png,svg (default: png)");
     sub->add_option("--runs", a->runs, "run ids for speed_vs_time.png, comma-separated (default: one run per "
                                        "behaviour)");
     sub->add_flag("--force", a->force, "write into an existing non-empty --out folder");

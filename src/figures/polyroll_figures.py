@@ -4,6 +4,7 @@
 polyroll figures, polyroll tradeoff and polyroll validate run this script; it only reads files the
 C++ side wrote:
   polyroll_figures.py sweep RESULTS_CSV OUT_DIR [--trajectory RUN_DIR ...] [--context JSON] [--format png,svg]
+  polyroll_figures.py run|compare OUT_DIR RUN_DIR ... [--format png,svg]
   polyroll_figures.py tradeoff POINTS_CSV OUT_PNG
   polyroll_figures.py validate SCORECARD_JSON RESULTS_CSV OUT_DIR
 Every axis says its unit; spreads over seeds are the median and the full seed range. Each figure is
@@ -548,7 +549,8 @@ def validate_figures(args):
 
 # Observation scene fields and the results.csv column each is matched against.
 OBSERVATION_COLUMNS = {"shell.preset": "polygon", "shell.sides": "sides", "fill.ratio": "fill_ratio",
-                       "fill.material": "material", "ramp.preset": "ramp", "release.pose": "release"}
+                       "fill.material.preset": "material", "fill.material": "material", "ramp.preset": "ramp",
+                       "release.pose": "release"}
 # A seed's terminal velocity this many times its point's median is a runaway (bounding) run.
 RUNAWAY_FACTOR = 1.5
 SWEEP_D_COLUMNS = ["panel"] + D_COLUMNS
@@ -848,6 +850,54 @@ def sweep_figures(args):
             print(f"  figure     {path}")
 
 
+# ---------------------------------------------------------------------------------------------------
+# polyroll figures on a run folder (polyroll run --out) or a compare folder (polyroll compare --out):
+# speed against time with the face impacts, and the energy against time, one panel per run.
+
+ENERGY_COLUMNS = ["run", "time_s", "kinetic_J", "potential_J", "dissipated_J"]
+ENERGY_STYLES = [("kinetic_J", "kinetic", "#4477aa", "-"), ("potential_J", "potential (from release)", "#228833", "--"),
+                 ("dissipated_J", "dissipated", "#ee6677", ":")]
+
+
+def run_name(summary, d):
+    return summary["scene"]["run"]["model"] if summary else os.path.basename(os.path.normpath(d))
+
+
+def energy_vs_time_figure(run_dirs):
+    """Kinetic, potential and dissipated energy against time, one panel per run, axes shared."""
+    fig, axes, legend_ax = panels_with_legend_row(len(run_dirs), height=2.4, legend_rows=1)
+    table = []
+    for ax, d in zip(axes, run_dirs):
+        traj = read_rows(os.path.join(d, "trajectory.csv"))
+        with open(os.path.join(d, "summary.json")) as f:
+            summary = json.load(f)
+        name = run_name(summary, d)
+        t = [float(r["time_s"]) for r in traj]
+        for col, label, colour, style in ENERGY_STYLES:
+            ax.plot(t, [num(r[col]) for r in traj], style, color=colour, lw=1.2, label=label, gid=f"{col}:{name}")
+        table += [dict(run=name, time_s=float(r["time_s"]), kinetic_J=num(r["kinetic_J"]),
+                       potential_J=num(r["potential_J"]), dissipated_J=num(r["dissipated_J"])) for r in traj]
+        res = summary["results"]
+        ax.set_title(f"{name}: {BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}", fontsize=8, loc="left")
+        ax.set_xlabel("time since release (s)", fontsize=8)
+        ax.set_ylabel("energy (J)" if left_panel(ax, axes) else "", fontsize=8)
+        ax.tick_params(labelsize=7.5)
+        ax.grid(alpha=0.3)
+    handles = shared_handles(axes)
+    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=3, fontsize=7, frameon=False)
+    page_title(fig, "Energy against time: kinetic, potential (relative to the release) and dissipated")
+    return fig, table
+
+
+def run_figures(args):
+    formats = args.format.split(",")
+    made = [("speed_vs_time", speed_vs_time_figure(args.runs), SPEED_COLUMNS),
+            ("energy_vs_time", energy_vs_time_figure(args.runs), ENERGY_COLUMNS)]
+    for stem, (fig, table), columns in made:
+        for path in save_validate_figure(fig, table, columns, args.out, stem, formats):
+            print(f"  figure     {path}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="what", required=True)
@@ -857,6 +907,11 @@ def main():
     s.add_argument("--trajectory", action="append", help="a run folder with trajectory.csv, impacts.csv, summary.json")
     s.add_argument("--context", help="JSON: ramp_length_m by run id, the experiment's observations to draw")
     s.add_argument("--format", default="png", help="png, svg or png,svg")
+    for what in ("run", "compare"):
+        r = sub.add_parser(what)
+        r.add_argument("out")
+        r.add_argument("runs", nargs="+", help="run folders with trajectory.csv, impacts.csv, summary.json")
+        r.add_argument("--format", default="png", help="png, svg or png,svg")
     t = sub.add_parser("tradeoff")
     t.add_argument("points")
     t.add_argument("out")
@@ -867,6 +922,8 @@ def main():
     args = p.parse_args()
     if args.what == "sweep":
         sweep_figures(args)
+    elif args.what in ("run", "compare"):
+        run_figures(args)
     elif args.what == "validate":
         validate_figures(args)
     else:
