@@ -7,6 +7,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli/scene_options.h"
@@ -23,6 +24,7 @@ struct CompareOptions {
     SceneOptions scene;
     std::string out;
     bool force = false;
+    bool json = false;
 };
 
 std::string optional_number(const std::optional<double>& v, const char* format) {
@@ -76,6 +78,31 @@ void print_table(const std::vector<RunResult>& runs) {
                "wall_s: one run on one core (grains: building and settling included); speed_up: over the grain model.\n");
 }
 
+// The table as JSON: the same rows and numbers, unrounded, null where the table prints '-'.
+void print_json(const std::vector<RunResult>& runs, const std::string& out) {
+    const RunResult& ref = runs.front();
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    auto optional = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; };
+    for (const RunResult& r : runs) {
+        const Measurements& m = r.measured;
+        rows.push_back({{"model", to_string(r.scene.run.model)},
+                        {"behaviour", to_string(m.behaviour)},
+                        {"distance_m", m.distance_m},
+                        {"terminal_velocity_m_s", optional(m.terminal_velocity_m_s)},
+                        {"impacts", m.impacts.size()},
+                        {"mean_impact_energy_ratio",
+                         m.impacts.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(mean_impact_ratio(m))},
+                        {"wall_time_s", r.wall_time_s},
+                        {"speed_up", r.wall_time_s > 0.0 ? nlohmann::ordered_json(ref.wall_time_s / r.wall_time_s)
+                                                         : nlohmann::ordered_json(nullptr)},
+                        {"model_valid", r.model_valid},
+                        {"model_invalid_time_s", optional(r.model_invalid_time_s)}});
+    }
+    nlohmann::ordered_json doc = {{"scene", scene_to_json(ref.scene)}, {"runs", rows}};
+    if (!out.empty()) doc["out"] = out;
+    fmt::print("{}\n", doc.dump(2));
+}
+
 int compare(const CompareOptions& o) {
     const Scene base = o.scene.resolve();
     std::optional<std::filesystem::path> created;
@@ -101,8 +128,9 @@ int compare(const CompareOptions& o) {
         if (created) std::filesystem::remove_all(*created, ec);
         throw;
     }
-    print_table(runs);
-    if (!o.out.empty())
+    if (o.json) print_json(runs, o.out);
+    else print_table(runs);
+    if (!o.out.empty() && !o.json)
         fmt::print("files: {0}/{{grains,segments,rigid}}/summary.json, trajectory.csv, impacts.csv; "
                    "{0}/speed_vs_time.csv\n",
                    o.out);
@@ -126,6 +154,7 @@ Action add_compare_command(CLI::App& app) {
         "Examples:\n"
         "  polyroll compare\n"
         "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
+        "  polyroll compare --json > compare.json\n"
         "Any --model flag is ignored: every model runs.\n"
         "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.");
     opts->scene.add_to(*sub);
@@ -134,6 +163,8 @@ Action add_compare_command(CLI::App& app) {
                     "and speed_vs_time.csv")
         ->group("Output");
     sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
+    sub->add_flag("--json", opts->json, "print the table as JSON (the scene, then one object per model) instead")
+        ->group("Output");
     return [opts] { return compare(*opts); };
 }
 

@@ -1,0 +1,115 @@
+// polyroll figures on a run folder and a compare folder (speed and energy against time, each with
+// its CSV), its refusals (a folder of no known kind, a bad --format, --runs without a sweep), and
+// polyroll compare --json holding the same rows as the printed table.
+#include <catch2/catch.hpp>
+
+#include "test_helpers.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using polyroll::test::read_file;
+using polyroll::test::run_command;
+
+const std::string exe = POLYROLL_EXE;
+// A short scene at draft fidelity: fast and deterministic.
+const std::string kScene = " --polygon octagon-small --fill 0.125 --angle 10 --fidelity draft --time-limit 1.5";
+
+bool have_matplotlib() { return run_command("/usr/bin/python3 -c 'import matplotlib, numpy'").exit_code == 0; }
+
+size_t line_count(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+// The start of compare's printed row for a model, as print_table lays it out.
+std::string fmt_row(const std::string& model, const std::string& behaviour, double distance_m) {
+    return fmt::format("{:<9} {:<24} {:>10.3f}", model, behaviour, distance_m);
+}
+
+}  // namespace
+
+TEST_CASE("figures: a run folder and a compare folder give speed and energy against time, each with its CSV",
+          "[figures][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("figures-cli-runs", true);
+    REQUIRE(run_command(exe + " run" + kScene + " --out " + (scratch / "run").string()).exit_code == 0);
+    REQUIRE(run_command(exe + " compare" + kScene + " --out " + (scratch / "cmp").string()).exit_code == 0);
+    if (!have_matplotlib()) {
+        WARN("no matplotlib for /usr/bin/python3: the figures are not drawn");
+        return;
+    }
+    for (const char* folder : {"run", "cmp"}) {
+        const fs::path out = scratch / (std::string("fig-") + folder);
+        const auto r = run_command(exe + " figures " + (scratch / folder).string() + " --out " + out.string() +
+                                   " --format png,svg");
+        INFO(folder << ": " << r.out);
+        REQUIRE(r.exit_code == 0);
+        for (const char* stem : {"speed_vs_time", "energy_vs_time"})
+            for (const char* ext : {".png", ".svg", ".csv"}) CHECK(fs::is_regular_file(out / (std::string(stem) + ext)));
+        // The CSV holds every trajectory row of every run drawn, plus the impacts marked.
+        const std::string energy = read_file(out / "energy_vs_time.csv");
+        CHECK(energy.rfind("run,time_s,kinetic_J,potential_J,dissipated_J\n", 0) == 0);
+        const std::string models = std::string(folder) == "run" ? "grains" : "grains segments rigid";
+        std::istringstream names(models);
+        size_t trajectory_rows = 0;
+        for (std::string m; names >> m;) {
+            const fs::path run_dir = std::string(folder) == "run" ? scratch / "run" : scratch / "cmp" / m;
+            trajectory_rows += line_count(read_file(run_dir / "trajectory.csv")) - 1;
+            CHECK(energy.find("\n" + m + ",") != std::string::npos);
+        }
+        CHECK(line_count(energy) - 1 == trajectory_rows);
+    }
+}
+
+TEST_CASE("figures: a folder of no known kind, a bad --format, --runs without a sweep: one line, exit 2, nothing "
+          "written", "[figures][cli][bad-input]") {
+    const fs::path scratch = polyroll::test::scratch_dir("figures-cli-bad", true);
+    REQUIRE(run_command(exe + " run" + kScene + " --out " + (scratch / "run").string()).exit_code == 0);
+    fs::create_directories(scratch / "empty");
+    const fs::path out = scratch / "out";
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {(scratch / "empty").string(), {"empty", "not a sweep, run or compare folder", "plan.json", "summary.json"}},
+        {(scratch / "run").string() + " --format jpg", {"--format", "jpg", "png, svg or png,svg"}},
+        {(scratch / "run").string() + " --format png,png", {"--format", "png,png"}},
+        {(scratch / "run").string() + " --runs 0001", {"--runs", "0001", "only for a sweep folder"}},
+    };
+    for (const Case& c : cases) {
+        // No matplotlib needed: the input is refused before the script is looked for.
+        const auto r = run_command("POLYROLL_PYTHON=/bin/false " + exe + " figures " + c.args + " --out " + out.string());
+        INFO("polyroll figures " << c.args << " -> " << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(line_count(r.out) == 1);
+        for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
+        CHECK(!fs::exists(out));
+    }
+}
+
+TEST_CASE("compare --json: the table's rows as JSON, the same behaviours and numbers", "[compare][cli]") {
+    const auto text = run_command(exe + " compare" + kScene);
+    const auto json = run_command(exe + " compare" + kScene + " --json");
+    REQUIRE(text.exit_code == 0);
+    REQUIRE(json.exit_code == 0);
+    const auto doc = nlohmann::json::parse(json.out);
+    REQUIRE(doc["runs"].size() == 3);
+    CHECK(doc["scene"]["ramp"]["angle_deg"] == 10.0);
+    const std::vector<std::string> models = {"grains", "segments", "rigid"};
+    for (size_t i = 0; i < models.size(); ++i) {
+        const auto& row = doc["runs"][i];
+        CHECK(row["model"] == models[i]);
+        // The printed table's row for this model: "model behaviour distance_m ..." (distance rounded to mm).
+        const std::string behaviour = row["behaviour"].get<std::string>();
+        const std::string printed = fmt_row(models[i], behaviour, row["distance_m"].get<double>());
+        INFO(text.out);
+        CHECK(text.out.find(printed) != std::string::npos);
+        CHECK(row["impacts"].get<int>() >= 0);
+        CHECK(row.contains("terminal_velocity_m_s"));
+    }
+}
