@@ -720,8 +720,9 @@ def terminal_velocity_sweep(rows):
             colour = cmap(norm(angle)) if len(all_angles) > 1 else "#4477aa"
             xs, med = [p["fill"] for p in mine], [p["median"] for p in mine]
             yerr = [[m - p["low"] for m, p in zip(med, mine)], [p["high"] - m for m, p in zip(med, mine)]]
-            ax.errorbar(xs, med, yerr=yerr, fmt="o-", ms=3.5, lw=1, capsize=2, color=colour, label=f"\u03b8 = {angle:g} deg",
-                        gid=f"median:{angle:g}")
+            bars = ax.errorbar(xs, med, yerr=yerr, fmt="o-", ms=3.5, lw=1, capsize=2, color=colour,
+                               label=f"\u03b8 = {angle:g} deg")
+            bars.lines[0].set_gid(f"median:{angle:g}")
             for p in mine:
                 table.append(dict(panel=name, element="median", fill_ratio=p["fill"], angle_deg=angle,
                                   terminal_velocity_m_s=p["median"], low_m_s=p["low"], high_m_s=p["high"],
