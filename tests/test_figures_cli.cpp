@@ -6,6 +6,7 @@
 #include "test_helpers.h"
 
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -62,6 +63,21 @@ TEST_CASE("figures: a run folder and a compare folder give speed and energy agai
             CHECK(energy.find("\n" + m + ",") != std::string::npos);
         }
         CHECK(line_count(energy) - 1 == trajectory_rows);
+        // The short report: a row per run, each with the behaviour its summary.json states.
+        const std::string report = read_file(out / "report.md");
+        std::istringstream again(models);
+        for (std::string m; again >> m;) {
+            const fs::path run_dir = std::string(folder) == "run" ? scratch / "run" : scratch / "cmp" / m;
+            const auto summary = nlohmann::json::parse(read_file(run_dir / "summary.json"));
+            const std::string behaviour = summary["results"]["behaviour"];
+            const std::map<std::string, std::string> words_of = {{"stopped", "rolls, then stops"},
+                                                                 {"rolled_to_end", "rolls to the end"},
+                                                                 {"stopped_at_first_impact", "stops at first impact"},
+                                                                 {"time_limit", "time limit reached"}};
+            REQUIRE(words_of.count(behaviour) == 1);
+            const std::string words = words_of.at(behaviour);
+            CHECK(report.find("| " + m + " | " + words + " |") != std::string::npos);
+        }
     }
 }
 

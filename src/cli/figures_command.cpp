@@ -221,8 +221,9 @@ Action add_figures_command(CLI::App& app) {
                    "(python3-matplotlib)");
     sub->footer(
         "A sweep folder: distance_vs_angle, terminal_velocity_vs_fill, behaviour_map, speed_vs_time.\n"
-        "A run folder (polyroll run --out) or a compare folder (polyroll compare --out): speed_vs_time and\n"
-        "energy_vs_time. Each figure as .png (and .svg with --format png,svg) beside a .csv of its numbers.\n"
+        "A run folder (polyroll run --out) or a compare folder (polyroll compare --out): speed_vs_time,\n"
+        "energy_vs_time and report.md (a row per run).\n"
+        "Each figure as .png (.svg too with --format png,svg) beside a .csv of the numbers it plots.\n"
         "Examples:\n"
         "  polyroll figures sweeps/grid --out figures/\n"
         "  polyroll figures runs/cmp --out figures/cmp --format png,svg\n"

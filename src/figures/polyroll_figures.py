@@ -890,8 +890,37 @@ def energy_vs_time_figure(run_dirs):
     return fig, table
 
 
+def report_text(run_dirs):
+    """A short report of one run or one compare: the scene, then a row per run of what it showed."""
+    lines, scene_line = [], None
+    for d in run_dirs:
+        with open(os.path.join(d, "summary.json")) as f:
+            summary = json.load(f)
+        s, res = summary["scene"], summary["results"]
+        scene_line = scene_line or (f"{s['shell'].get('preset') or 'custom shell'} (n = {s['shell']['sides']}), "
+                                    f"{s['fill']['material'].get('preset', 'custom material')}, r = {s['fill']['ratio']:g}, "
+                                    f"{s['ramp'].get('preset') or 'custom ramp'} at {s['ramp']['angle_deg']:g} deg, "
+                                    f"{s['fidelity'].get('preset') or 'custom'} fidelity")
+        vt = res.get("terminal_velocity_m_s")
+        lines.append(f"| {run_name(summary, d)} | {BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])} | "
+                     f"{res['distance_m']:.3f} | {'-' if vt is None else f'{vt:.3f}'} | {res['impacts']} | "
+                     f"{'yes' if res.get('model_valid', True) else 'no'} |")
+    return "\n".join([f"# {'Run' if len(run_dirs) == 1 else 'Compare'}: {scene_line}", "",
+                      "| model | behaviour | distance D (m) | terminal velocity Vt (m/s) | face impacts | model valid |",
+                      "| --- | --- | ---: | ---: | ---: | --- |"] + lines +
+                     ["", "Figures: speed_vs_time (face impacts marked), energy_vs_time; each with a CSV of what it "
+                      "plots.", ""])
+
+
 def run_figures(args):
     formats = args.format.split(",")
+    report = os.path.join(args.out, "report.md")
+    text = report_text(args.runs)
+    def write(tmp):
+        with open(tmp, "w") as f:
+            f.write(text)
+    write_whole(report, write)
+    print(f"  report     {report}")
     made = [("speed_vs_time", speed_vs_time_figure(args.runs), SPEED_COLUMNS),
             ("energy_vs_time", energy_vs_time_figure(args.runs), ENERGY_COLUMNS)]
     for stem, (fig, table), columns in made:
