@@ -562,11 +562,15 @@ SPEED_COLUMNS = ["run", "element", "time_s", "speed_m_s"]
 
 
 def sweep_runs(rows, lengths):
-    """results.csv rows as the runs draw_d_vs_angle draws (outcome, drawn where)."""
+    """results.csv rows as the runs draw_d_vs_angle draws (outcome, drawn where). Without the ramp's
+    length from the C++ side (the script run by hand), the farthest run that rolled to the end stands
+    for it."""
+    reached = [num(r["distance_m"]) for r in rows if r["behaviour"] == "rolled_to_end"]
+    fallback = max([d for d in reached if math.isfinite(d)], default=1.0)
     runs = []
     for r in rows:
         run = dict(r, angle_deg=num(r["angle_deg"]), distance_m=num(r["distance_m"]),
-                   ramp_length_m=float(lengths.get(r["run_id"], math.nan)))
+                   ramp_length_m=float(lengths.get(r["run_id"], fallback)))
         run["outcome"] = outcome(run)
         runs.append(run)
     return runs
