@@ -129,3 +129,33 @@ TEST_CASE("compare --json: the table's rows as JSON, the same behaviours and num
         CHECK(row.contains("terminal_velocity_m_s"));
     }
 }
+
+TEST_CASE("figures: a sweep matching the experiment's fig. 2A draws its line, rolls to the end at the ramp's end",
+          "[figures][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("figures-cli-sweep", true);
+    const fs::path sweep = scratch / "sweep", out = scratch / "fig";
+    // The octagon of fig2a-octagon-third-behaviour (assets/experiment.json), rigid model: fast.
+    REQUIRE(run_command(exe + " sweep --polygon octagon-small --fill 0.375 --material bb --ramp air-track "
+                              "--angle 12,30 --model rigid --seeds 1 -q -j 1 --out " + sweep.string())
+                .exit_code == 0);
+    if (!have_matplotlib()) {
+        WARN("no matplotlib for /usr/bin/python3: the figures are not drawn");
+        return;
+    }
+    const auto r = run_command(exe + " figures " + sweep.string() + " --out " + out.string() + " --format svg");
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    for (const char* stem : {"distance_vs_angle", "behaviour_map"}) {
+        CHECK(fs::is_regular_file(out / (std::string(stem) + ".svg")));
+        CHECK(fs::is_regular_file(out / (std::string(stem) + ".csv")));
+        CHECK(!fs::exists(out / (std::string(stem) + ".png")));  // --format svg: no PNG
+    }
+    CHECK(!fs::exists(out / ".figures-context.json"));  // the script's input, removed after
+    const std::string d = read_file(out / "distance_vs_angle.csv");
+    // The paper's line over its band (11 to 15.2 deg), and the ramp's end at the air track's length.
+    CHECK(d.find(",paper_fit,11,") != std::string::npos);
+    CHECK(d.find(",paper_fit,15.2,") != std::string::npos);
+    CHECK(d.find(",ramp_end,,2.539,") != std::string::npos);
+    // The 30 deg run rolls to the end and is drawn there.
+    CHECK(d.find(",run,30,2.539,,,rolled_to_end,") != std::string::npos);
+}
