@@ -22,6 +22,7 @@
 #include "app/sandbox_state.h"
 #include "app/scene_view.h"
 #include "app/sim_clock.h"
+#include "app/slider_text.h"
 #include "app/view_control.h"
 #include "render/font.h"
 #include "render/ticks.h"
@@ -511,6 +512,50 @@ TEST_CASE("readouts say what is known, in SI units", "[app]") {
     CHECK(r.distance == "2.400 m");
     CHECK(r.terminal == "0.610 m/s");
     CHECK(r.behaviour == "rolled to the end");
+}
+
+TEST_CASE("the status line makes one speed statement: the chosen rate, or what the computer reaches", "[app]") {
+    CHECK(speed_statement(1, true, true, 1.0) == "real time");
+    CHECK(speed_statement(4, true, true, 0.25) == "1/4\u00D7 slow motion (4\u00D7 slower)");
+    // Falling behind: the rate reached, with two significant digits, and what was asked; never
+    // "real time" beside a lower figure.
+    const std::string behind = speed_statement(1, true, false, 0.2412);
+    CHECK(behind == "0.24\u00D7 real time: as fast as this computer can (real time asked)");
+    CHECK(speed_statement(4, true, false, 0.031) == "0.031\u00D7 real time: as fast as this computer can (1/4\u00D7 asked)");
+    // Paused or ended: the clock's last verdict no longer applies.
+    CHECK(speed_statement(1, false, false, 0.24) == "real time");
+}
+
+TEST_CASE("a slider's value is drawn beside its knob, never under it, and inside its frame", "[app]") {
+    // The panel's sliders: about 260 px wide at scale 1, twice that at scale 2, knob 10-20 px.
+    for (const float scale : {1.0f, 1.5f, 2.0f}) {
+        const float x0 = 8.0f * scale, x1 = x0 + 260.0f * scale;
+        const float text_w = 52.0f * scale;  // "20.0\u00B0", "0.00", "1.00\u00D7"
+        const float gap = 4.0f * scale;
+        for (const int values : {0, 18}) {
+            for (int k = 0; k <= 100; ++k) {
+                const double fraction = k / 100.0;
+                const KnobSpan knob = slider_knob(x0, x1, fraction, 10.0f * scale, values);
+                INFO("scale " << scale << " fraction " << fraction << " integer values " << values);
+                REQUIRE(knob.min_x >= x0);
+                REQUIRE(knob.max_x <= x1);
+                const float tx = slider_value_x(x0, x1, knob, text_w, gap);
+                const bool beside = tx + text_w <= knob.min_x || tx >= knob.max_x;
+                CHECK(beside);
+                CHECK(tx >= x0);
+                CHECK(tx + text_w <= x1);
+            }
+        }
+    }
+    // The knob moves with the value: at the left end, at the right end, and the text changes side.
+    const KnobSpan left = slider_knob(0, 200, 0.0, 10), right = slider_knob(0, 200, 1.0, 10);
+    CHECK(left.min_x == Approx(2.0f));
+    CHECK(right.max_x == Approx(198.0f));
+    CHECK(slider_value_x(0, 200, left, 40, 4) > left.max_x);
+    CHECK(slider_value_x(0, 200, right, 40, 4) < right.min_x);
+    // An integer slider with few values shares the frame among them (ImGui's wider knob).
+    const KnobSpan wide = slider_knob(0, 204, 0.5, 10, 4);
+    CHECK(wide.max_x - wide.min_x == Approx(50.0f));
 }
 
 TEST_CASE("exports write polyroll run's files per lane under numbered names", "[app]") {

@@ -4,16 +4,20 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <type_traits>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/plot_data.h"
 #include "app/readouts.h"
 #include "app/sandbox_presets.h"
 #include "app/scene_view.h"
+#include "app/slider_text.h"
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
@@ -66,8 +70,47 @@ bool preset_combo(const char* label, assets::Kind kind, std::string& value) {
     return changed;
 }
 
+// A slider whose value is written beside its knob, never under it (slider_text.h): ImGui's own
+// centred value is drawn transparent, then the value is drawn where the knob leaves room. While
+// Ctrl+click typing is active the field is ImGui's, drawn as usual. The label is drawn after the
+// frame, as ImGui does; the group makes the tooltip answer to the frame and the label both.
+template <class T>
+bool knob_slider(const char* label, ImGuiDataType type, T& v, T lo, T hi, const char* format) {
+    ImGui::BeginGroup();
+    ImGui::PushID(label);
+    const ImGuiID id = ImGui::GetID("##slider");
+    const bool typing = ImGui::TempInputIsActive(id);
+    if (!typing) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(0, 0, 0, 0));
+    const bool changed = ImGui::SliderScalar("##slider", type, &v, &lo, &hi, format);
+    if (!typing) ImGui::PopStyleColor();
+    if (!typing) {
+        const ImVec2 f0 = ImGui::GetItemRectMin(), f1 = ImGui::GetItemRectMax();
+        const double span = static_cast<double>(hi) - static_cast<double>(lo);
+        const double fraction = span > 0 ? (static_cast<double>(v) - static_cast<double>(lo)) / span : 0.0;
+        const int values = type == ImGuiDataType_S32 ? static_cast<int>(hi - lo) + 1 : 0;
+        const KnobSpan knob = slider_knob(f0.x, f1.x, fraction, ImGui::GetStyle().GrabMinSize, values);
+        char text[64];
+        if constexpr (std::is_integral_v<T>) std::snprintf(text, sizeof text, format, v);
+        else std::snprintf(text, sizeof text, format, static_cast<double>(v));
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        const float x = slider_value_x(f0.x, f1.x, knob, size.x, ImGui::GetStyle().FramePadding.x);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(f0, f1, true);
+        dl->AddText({x, 0.5f * (f0.y + f1.y - size.y)}, ImGui::GetColorU32(ImGuiCol_Text), text);
+        dl->PopClipRect();
+    }
+    ImGui::PopID();
+    const char* shown_end = ImGui::FindRenderedTextEnd(label);
+    if (shown_end != label) {
+        ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted(label, shown_end);
+    }
+    ImGui::EndGroup();
+    return changed;
+}
+
 bool slider_double(const char* label, double& v, double lo, double hi, const char* format) {
-    return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format);
+    return knob_slider(label, ImGuiDataType_Double, v, lo, hi, format);
 }
 
 // A field's tooltip: its help and what it allows (sim/scene_fields.cpp), then what the panel adds.
@@ -75,6 +118,19 @@ std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
     std::string text = field_help(f);
     if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
     return text + "." + (panel_note.empty() ? "" : " " + panel_note);
+}
+
+// The last value typed (Ctrl+click) outside its field's limits and clamped by the control's setter,
+// said under the panel's controls as the command line would refuse it; cleared by the next edit.
+std::string clamp_note;
+
+void note_clamping(const SceneField& f, double typed) {
+    if (typed >= f.min && typed <= f.max) {
+        clamp_note.clear();
+        return;
+    }
+    const double kept = std::clamp(typed, f.min, f.max);
+    clamp_note = fmt::format("{} = {:g} is outside {:g} to {:g}: set to {:g}.", f.label, typed, f.min, f.max, kept);
 }
 
 // The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
@@ -97,7 +153,10 @@ bool slider_control(const SceneField& f, Controls& c, double value, const char* 
                     std::optional<double> slider_max = std::nullopt) {
     const bool edited =
         slider_double(std::string(f.label).c_str(), value, f.min, slider_max.value_or(f.max), format);
-    if (edited) set(c, value);
+    if (edited) {
+        set(c, value);
+        note_clamping(f, value);
+    }
     tip(field_tip(f, panel_note));
     return edited;
 }
@@ -157,8 +216,10 @@ void lane_controls(SandboxState& s, UiRequests& req) {
                                   "This lane's shell; n below can change its number of sides.");
     const SceneField& sides = scene_field("shell.sides");
     int n = c.sides;
-    if (ImGui::SliderInt(std::string(sides.label).c_str(), &n, static_cast<int>(sides.min), kSidesSliderMax)) {
+    if (knob_slider(std::string(sides.label).c_str(), ImGuiDataType_S32, n, static_cast<int>(sides.min), kSidesSliderMax,
+                    "%d")) {
         set_sides(c, n);
+        note_clamping(sides, n);
         changed = true;
     }
     tip(field_tip(sides, fmt::format("Ctrl+click to type more than {}.", kSidesSliderMax)));
@@ -250,7 +311,7 @@ void view_controls(SandboxState& s, UiRequests& req) {
     tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles).",
                     kDefaultColourSpeedMax_m_s));
     float scale = s.ui_scale;
-    if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
+    if (knob_slider("UI scale", ImGuiDataType_Float, scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
     tip("Size of the panel's text and the scene's labels, for a projector at the back of the room.");
     ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
     tip("Dark text on pale panels with strong borders; off: ImGui's dark theme.");
@@ -426,6 +487,11 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     if (s.changes_pending && !s.restart_on_change) {
         ImGui::TextColored(kWarnColour, "controls changed: Reset applies them");
     }
+    if (!clamp_note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kWarnColour);
+        ImGui::TextWrapped("%s", clamp_note.c_str());
+        ImGui::PopStyleColor();
+    }
     if (!ctx.control_error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
         ImGui::TextWrapped("%s", ctx.control_error.c_str());
@@ -572,16 +638,15 @@ void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L)
             state = lanes.size() == 1 ? "run ended: " + behaviour_label(lanes.lane(0).measured().behaviour)
                                       : std::string("run ended");
         else state = s.playing ? "\u25B6 playing" : "\u275A\u275A paused";
-        const std::string speed = divisor == 1 ? std::string("real time") : fmt::format("1/{}\u00D7 slow motion", divisor);
-        ImGui::Text("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
+        const bool stepping = s.playing && !lanes.all_finished() && !lanes.trouble() && !ctx.running_to_end;
+        const std::string speed =
+            speed_statement(divisor, stepping, ctx.clock->keeping_up(), ctx.clock->realtime_ratio());
+        // Wrapped at the status box's width: nothing runs off the window's edge.
+        ImGui::PushTextWrapPos(L.width - L.panel_w - 4 * pad);
+        ImGui::TextWrapped("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
+        ImGui::PopTextWrapPos();
     }
     if (ctx.large_font) ImGui::PopFont();
-    const bool stepping = lanes.ready() && s.playing && !lanes.all_finished() && !lanes.trouble();
-    if (stepping && !ctx.running_to_end && !ctx.clock->keeping_up())
-        ImGui::TextColored(kWarnColour,
-                           "This computer simulates only %.2f\u00D7 real time for this scene: the simulation is "
-                           "slowed down to keep the window responsive.",
-                           ctx.clock->realtime_ratio());
     if (!lanes.build_error().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
         ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
