@@ -491,6 +491,42 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
     CHECK(lane_colour(0) != lane_colour(1));
 }
 
+TEST_CASE("the scene view's text stays inside the view: no ramp label behind the panel", "[app]") {
+    // The large hexagon full of rice: the tallest clearance, so the ramp is fitted by its height and
+    // its labels sit nearest the view's left and right edges.
+    const Scene s = test::scene_with(json::parse(R"({"shell": {"preset": "hexagon-large"}})"));
+    LaneSet lanes;
+    lanes.rebuild({s});
+    lanes.wait_until_built();
+    for (const float scale : {1.0f, 1.5f, 2.0f}) {
+        const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(scale));
+        SceneViewOptions o;
+        o.width_px = 1280;
+        o.height_px = 800;
+        o.unit = scale;
+        const float panel_w = std::min(400.0f * scale, 640.0f);  // sandbox_ui.cpp's ui_layout
+        o.area = {panel_w, 47, 1280 - panel_w, 465};
+        const render::DrawList dl = build_scene_view({lanes.lane(0).snapshot()}, {"a"}, o, font);
+        // A glyph wholly outside its layer's clip is not drawn; one that is drawn lies wholly inside
+        // the clip (no letter cut at an edge) and inside the view (none behind the panel).
+        int shown = 0;
+        for (const render::Layer& l : dl.layers) {
+            const render::ClipRect c = l.clip.value_or(render::ClipRect{0, 0, 1280, 800});
+            for (const render::GlyphQuad& g : l.glyphs) {
+                const bool outside = g.p1.x <= c.x || g.p0.x >= c.x + c.width || g.p1.y <= c.y || g.p0.y >= c.y + c.height;
+                if (outside) continue;
+                ++shown;
+                INFO("scale " << scale << " glyph at " << g.p0.x << ", " << g.p0.y);
+                CHECK(g.p0.x >= std::max<float>(o.area.x, c.x));
+                CHECK(g.p1.x <= std::min<float>(o.area.x + o.area.width, c.x + c.width));
+                CHECK(g.p0.y >= std::max<float>(o.area.y, c.y));
+                CHECK(g.p1.y <= std::min<float>(o.area.y + o.area.height, c.y + c.height));
+            }
+        }
+        CHECK(shown > 0);
+    }
+}
+
 TEST_CASE("readouts say what is known, in SI units", "[app]") {
     const Scene s = test::scene_with(json::parse(R"({"fill": {"ratio": 0.4}})"));
     Measurements m;
