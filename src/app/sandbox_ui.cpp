@@ -35,6 +35,14 @@ ImVec4 im_vec(render::Rgba c) { return {c.r, c.g, c.b, c.a}; }
 const ImVec4 kErrorColour{0.75f, 0.05f, 0.05f, 1.0f};
 const ImVec4 kWarnColour{0.70f, 0.35f, 0.0f, 1.0f};
 
+// A colour for text on the panels: as given on the projector theme's pale panels; on the dark
+// theme mixed halfway to white, so the lane colours, warnings and errors stay readable there too
+// (the saturated red of lane 1 on dark grey was barely legible).
+ImVec4 on_panel(ImVec4 c, bool high_contrast) {
+    if (high_contrast) return c;
+    return {0.5f * (c.x + 1.0f), 0.5f * (c.y + 1.0f), 0.5f * (c.z + 1.0f), c.w};
+}
+
 // A tooltip for the last item: what the control is and its unit.
 void tip(const std::string& text) {
     if (!ImGui::IsItemHovered()) return;
@@ -330,32 +338,67 @@ struct Markers {
     ImU32 colour;
 };
 
+// A plot drawn with ImGui's draw list, on a white card in every theme (so its text is always dark):
+// the title, then the legend in a row of its own above the data (never over a trace), then the
+// axes, with as many ticks as the card's size leaves room for (no numbers running together at a
+// large UI scale or in a narrow window).
 void draw_plot(const char* title, const char* unit, const PlotRange& r, const std::vector<Trace>& traces,
                const std::vector<Markers>& markers, ImVec2 size) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     ImGui::Dummy(size);
     const float fs = ImGui::GetFontSize();
-    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+    const ImU32 text = IM_COL32(20, 22, 26, 255);
     const ImU32 grid = IM_COL32(205, 208, 215, 255);
     const ImU32 axis = IM_COL32(60, 62, 66, 255);
+    const float thick = std::max(2.0f, fs * 0.14f);
+    const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+    dl->AddRectFilled(p0, p1, IM_COL32(255, 255, 255, 255), 3.0f);
+    dl->PushClipRect(p0, p1, true);
+    // The title, shortened to what fits.
+    std::string heading = fmt::format("{}: {} against time (s)", title, unit);
+    if (ImGui::CalcTextSize(heading.c_str()).x > size.x - fs * 0.8f) heading = fmt::format("{} ({})", title, unit);
+    dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, heading.c_str());
+    // The legend: entries left to right, wrapping to a new row when the card is narrow.
+    float lx = p0.x + fs * 0.4f, ly = p0.y + fs * 1.35f;
+    bool any_legend = false;
+    for (const Trace& tr : traces) {
+        if (tr.legend.empty()) continue;
+        const float w = fs * 1.3f + ImGui::CalcTextSize(tr.legend.c_str()).x;
+        if (any_legend && lx + w > p1.x - fs * 0.4f) {
+            lx = p0.x + fs * 0.4f;
+            ly += fs * 1.15f;
+        }
+        any_legend = true;
+        dl->AddLine({lx, ly + fs * 0.55f}, {lx + fs * 0.9f, ly + fs * 0.55f}, tr.colour, thick);
+        dl->AddText({lx + fs * 1.1f, ly}, text, tr.legend.c_str());
+        lx += w + fs * 0.8f;
+    }
+    const float top = any_legend ? ly + fs * 1.35f : p0.y + fs * 1.5f;
     // Plot area inside the labels.
-    const ImVec2 a0{p0.x + fs * 3.6f, p0.y + fs * 1.5f};
-    const ImVec2 a1{p0.x + size.x - fs * 0.6f, p0.y + size.y - fs * 1.5f};
-    if (a1.x <= a0.x + 10 || a1.y <= a0.y + 10) return;
-    dl->AddRectFilled(p0, {p0.x + size.x, p0.y + size.y}, IM_COL32(255, 255, 255, 255), 3.0f);
-    dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, fmt::format("{}: {} against time (s)", title, unit).c_str());
+    const ImVec2 a0{p0.x + fs * 3.6f, top};
+    const ImVec2 a1{p1.x - fs * 0.9f, p1.y - fs * 1.5f};
+    if (a1.x <= a0.x + 10 || a1.y <= a0.y + 10) {
+        dl->PopClipRect();
+        return;
+    }
     auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
     auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
-    // Ticks: the frames' plot's rules (render/ticks.h), five intervals in time and four in value.
-    const render::AxisTicks t_ticks = render::axis_ticks(0.0, r.t_max_s, 5.0);
+    // Ticks: the frames' plot's rules (render/ticks.h), up to five intervals in time and four in
+    // value, fewer when a label (about 3.5 em wide, 2 lines tall) would not fit between them.
+    const double t_intervals = std::clamp(std::floor((a1.x - a0.x) / (fs * 3.5f)), 1.0f, 5.0f);
+    const double y_intervals = std::clamp(std::floor((a1.y - a0.y) / (fs * 2.0f)), 1.0f, 4.0f);
+    const render::AxisTicks t_ticks = render::axis_ticks(0.0, r.t_max_s, t_intervals);
     for (int k = 0; k < t_ticks.count; ++k) {
         const double t = t_ticks.at(k);
         dl->AddLine({X(t), a0.y}, {X(t), a1.y}, grid);
         const std::string l = fmt::format("{:g}", std::round(t * 1000.0) / 1000.0);
-        dl->AddText({X(t) - ImGui::CalcTextSize(l.c_str()).x / 2, a1.y + fs * 0.15f}, text, l.c_str());
+        const float w = ImGui::CalcTextSize(l.c_str()).x;
+        // The last label kept inside the card.
+        const float x = std::min(X(t) - w / 2, p1.x - w - fs * 0.2f);
+        dl->AddText({x, a1.y + fs * 0.15f}, text, l.c_str());
     }
-    const render::AxisTicks y_ticks = render::axis_ticks(r.y_min, r.y_max, 4.0);
+    const render::AxisTicks y_ticks = render::axis_ticks(r.y_min, r.y_max, y_intervals);
     for (int k = 0; k < y_ticks.count; ++k) {
         const double v = y_ticks.at(k);
         dl->AddLine({a0.x, Y(v)}, {a1.x, Y(v)}, std::fabs(v) < 1e-12 ? axis : grid);
@@ -364,8 +407,8 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
         dl->AddText({a0.x - ImGui::CalcTextSize(l.c_str()).x - fs * 0.3f, Y(v) - fs / 2}, text, l.c_str());
     }
     dl->AddRect(a0, a1, axis, 0.0f, 0, 1.5f);
+    dl->PopClipRect();
     dl->PushClipRect(a0, a1, true);
-    const float thick = std::max(2.0f, fs * 0.14f);
     for (const Trace& tr : traces) {
         std::vector<ImVec2> pts;
         pts.reserve(tr.points.size());
@@ -378,17 +421,6 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
             dl->AddCircle({X(p.t_s), Y(p.y)}, fs * 0.28f, axis, 0, 1.0f);
         }
     dl->PopClipRect();
-    // Legend, top right inside the plot.
-    float ly = a0.y + fs * 0.2f;
-    for (const Trace& tr : traces) {
-        if (tr.legend.empty()) continue;
-        const float w = ImGui::CalcTextSize(tr.legend.c_str()).x;
-        const ImVec2 at{a1.x - w - fs * 0.5f, ly};
-        dl->AddRectFilled({at.x - fs * 1.4f, ly}, {a1.x - fs * 0.2f, ly + fs * 1.1f}, IM_COL32(255, 255, 255, 220));
-        dl->AddLine({at.x - fs * 1.2f, ly + fs * 0.55f}, {at.x - fs * 0.3f, ly + fs * 0.55f}, tr.colour, thick);
-        dl->AddText(at, text, tr.legend.c_str());
-        ly += fs * 1.15f;
-    }
 }
 
 }  // namespace
@@ -443,7 +475,7 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     if (ImGui::BeginTabBar("lanes")) {
         for (size_t i = 0; i < s.lanes.size(); ++i) {
             const std::string name = fmt::format("Lane {}", i + 1);
-            ImGui::PushStyleColor(ImGuiCol_Text, im_vec(lane_colour(i)));
+            ImGui::PushStyleColor(ImGuiCol_Text, on_panel(im_vec(lane_colour(i)), s.high_contrast));
             const bool open = ImGui::BeginTabItem(name.c_str());
             ImGui::PopStyleColor();
             if (open) {
@@ -485,15 +517,15 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     ImGui::Checkbox("restart when a control changes", &s.restart_on_change);
     tip("On: every change rebuilds the scene and starts again. Off: changes wait for Reset.");
     if (s.changes_pending && !s.restart_on_change) {
-        ImGui::TextColored(kWarnColour, "controls changed: Reset applies them");
+        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "controls changed: Reset applies them");
     }
     if (!clamp_note.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kWarnColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
         ImGui::TextWrapped("%s", clamp_note.c_str());
         ImGui::PopStyleColor();
     }
     if (!ctx.control_error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::TextWrapped("%s", ctx.control_error.c_str());
         ImGui::PopStyleColor();
     }
@@ -516,19 +548,39 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float gap = ImGui::GetStyle().ItemSpacing.x;
     const float fs = ImGui::GetFontSize();
-    const float table_w = std::min(avail.x * 0.55f, fs * (6.5f + 6.6f * static_cast<float>(lanes.size())));
+    std::vector<LaneReadout> r;
+    for (size_t i = 0; i < lanes.size(); ++i)
+        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
+    // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
+    // 60% of the width; past that its cells wrap rather than cut their text.
+    const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
+                                             "behaviour", "distance", "terminal v"};
+    const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
+    float needed_w = 0;
+    for (const std::string& l : labels) needed_w = std::max(needed_w, ImGui::CalcTextSize(l.c_str()).x);
+    needed_w += cell_pad;
+    for (const LaneReadout& lr : r) {
+        float w = fs * 2.0f;
+        for (const std::string* f : {&lr.polygon, &lr.fill, &lr.position, &lr.speed, &lr.impacts, &lr.behaviour,
+                                     &lr.distance, &lr.terminal})
+            w = std::max(w, ImGui::CalcTextSize(f->c_str()).x);
+        needed_w += w + cell_pad;
+    }
+    const bool table_fits = needed_w <= avail.x * 0.6f;
+    const float table_w = table_fits ? needed_w : avail.x * 0.6f;
     // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
     // so the readout columns and the plot both stay wide enough to read.
     const bool racing = lanes.size() > 1;
-    const float plot_w = racing ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
+    // Tabs also when two plots side by side would be narrower than about 16 em each (a large UI
+    // scale or a small window): one readable plot rather than two slivers.
+    const bool tabbed = racing || (avail.x - table_w - 2 * gap) / 2.0f < fs * 16.0f;
+    const float plot_w = tabbed ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
 
     // Readouts: one column per lane (the time is the status line's: the lanes started together).
     ImGui::BeginChild("table", {table_w, avail.y});
-    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
+                               (table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
     if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
-        std::vector<LaneReadout> r;
-        for (size_t i = 0; i < lanes.size(); ++i)
-            r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
         if (racing) {
             ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
             ImGui::TableSetColumnIndex(0);
@@ -536,7 +588,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             for (size_t i = 0; i < lanes.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (ctx.large_font) ImGui::PushFont(ctx.large_font);
-                ImGui::TextColored(im_vec(lane_colour(i)), "%zu", i + 1);
+                ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
                 if (ctx.large_font) ImGui::PopFont();
             }
         }
@@ -547,7 +599,8 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             tip(what);
             for (size_t i = 0; i < lanes.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                ImGui::TextUnformatted((r[i].*field).c_str());
+                if (table_fits) ImGui::TextUnformatted((r[i].*field).c_str());
+                else ImGui::TextWrapped("%s", (r[i].*field).c_str());
             }
         };
         row("polygon", &LaneReadout::polygon, "The number of sides n.");
@@ -591,7 +644,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
     };
     ImGui::SameLine();
-    if (!racing) {
+    if (!tabbed) {
         speed_plot(avail.y);
         ImGui::SameLine();
         energy_plot(avail.y);
@@ -599,11 +652,12 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         ImGui::BeginGroup();
         const float tab_h = ImGui::GetFrameHeightWithSpacing();
         if (ImGui::BeginTabBar("plots")) {
-            if (ImGui::BeginTabItem("speed, all lanes")) {
+            if (ImGui::BeginTabItem(racing ? "speed, all lanes" : "speed")) {
                 speed_plot(avail.y - tab_h);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem(fmt::format("energy, lane {}###energy", sel + 1).c_str())) {
+            const std::string energy_tab = racing ? fmt::format("energy, lane {}###energy", sel + 1) : "energy###energy";
+            if (ImGui::BeginTabItem(energy_tab.c_str())) {
                 energy_plot(avail.y - tab_h);
                 ImGui::EndTabItem();
             }
@@ -648,21 +702,21 @@ void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L)
     }
     if (ctx.large_font) ImGui::PopFont();
     if (!lanes.build_error().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
         ImGui::TextWrapped("The scene could not be built: %s", lanes.build_error().c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
     }
     if (lanes.trouble()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
         ImGui::TextWrapped("%s", lanes.trouble()->c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
     }
     if (s.changes_pending && !s.restart_on_change)
-        ImGui::TextColored(kWarnColour, "Controls changed: press Reset (R) to apply them.");
+        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "Controls changed: press Reset (R) to apply them.");
     ImGui::End();
 }
 
