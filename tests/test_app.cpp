@@ -527,6 +527,40 @@ TEST_CASE("the scene view's text stays inside the view: no ramp label behind the
     }
 }
 
+TEST_CASE("with four lanes the close-up hides no lane's start", "[app]") {
+    const Scene s = test::scene_with(json::object());
+    LaneSet lanes;
+    lanes.rebuild({s, s, s, s});
+    lanes.wait_until_built();
+    std::vector<render::Snapshot> snaps;
+    for (size_t i = 0; i < 4; ++i) snaps.push_back(lanes.lane(i).snapshot());
+    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
+    SceneViewOptions o;
+    o.width_px = 1280;
+    o.height_px = 800;
+    o.area = {400, 47, 880, 465};
+    const render::DrawList dl = build_scene_view(snaps, {"a", "b", "c", "d"}, o, font);
+    // The inset's box: the bounds of its background triangles.
+    float top = 1e9f, right = -1e9f;
+    for (const render::Layer& l : dl.layers)
+        for (const render::Triangle& t : l.triangles)
+            if (t.tag == render::Tag::inset_frame)
+                for (const render::Px& p : {t.a, t.b, t.c}) {
+                    top = std::min(top, p.y);
+                    right = std::max(right, p.x);
+                }
+    REQUIRE(right > o.area.x);
+    const LaneLayout L = lane_layout(snaps, o.area, false, 1.0f, ViewTransform{});
+    for (size_t i = 0; i < 4; ++i) {
+        // Each ramp's first half metre (its start and the "0 m" label under it) is clear of the inset.
+        for (const double x_m : {0.0, 0.25, 0.5}) {
+            const render::Px p = L.cameras[i].to_px(render::ramp_to_world({x_m, 0.0}, s.ramp.angle_deg));
+            INFO("lane " << i + 1 << " at " << x_m << " m: " << p.x << ", " << p.y << "; inset top " << top);
+            CHECK((p.x > right || p.y < top));
+        }
+    }
+}
+
 TEST_CASE("readouts say what is known, in SI units", "[app]") {
     const Scene s = test::scene_with(json::parse(R"({"fill": {"ratio": 0.4}})"));
     Measurements m;
