@@ -44,7 +44,9 @@ void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camer
     style.marker = lane_colour(lane);
     style.border = lane_colour(lane);
     if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
-    draw_close_up(s, main_cam, style, st, font, dl);
+    WorldStyle lane_st = st;
+    if (racing) lane_st.shell_wall = lane_colour(lane);
+    draw_close_up(s, main_cam, style, lane_st, font, dl);
 }
 
 }  // namespace
@@ -67,7 +69,11 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
     const ClipRect clip{static_cast<int>(std::floor(o.area.x)), static_cast<int>(std::floor(o.area.y)),
                         static_cast<int>(std::ceil(o.area.width)), static_cast<int>(std::ceil(o.area.height))};
     const WorldStyle st = world_style(o.unit, o.area, o.colouring, o.colour_speed_max_m_s);
-    for (size_t i = 0; i < lanes.size(); ++i) draw_world(lanes[i], layout.cameras[i], st, font, dl.new_layer(clip));
+    for (size_t i = 0; i < lanes.size(); ++i) {
+        WorldStyle lane_st = st;
+        if (lanes.size() > 1) lane_st.shell_wall = lane_colour(i);
+        draw_world(lanes[i], layout.cameras[i], lane_st, font, dl.new_layer(clip));
+    }
     if (!o.follow && o.close_up_lane >= 0 && static_cast<size_t>(o.close_up_lane) < lanes.size()) {
         const size_t k = static_cast<size_t>(o.close_up_lane);
         draw_lane_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], lanes.back(), layout.cameras.back(), o, st,

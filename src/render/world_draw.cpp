@@ -95,8 +95,8 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
         out.triangles.push_back({inner[0], inner[i], inner[i + 1], palette::shell_inside, Tag::shell_inside});
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
-        out.triangles.push_back({inner[i], outer[i], outer[j], palette::shell_wall, Tag::shell_wall});
-        out.triangles.push_back({inner[i], outer[j], inner[j], palette::shell_wall, Tag::shell_wall});
+        out.triangles.push_back({inner[i], outer[i], outer[j], st.shell_wall, Tag::shell_wall});
+        out.triangles.push_back({inner[i], outer[j], inner[j], st.shell_wall, Tag::shell_wall});
     }
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
