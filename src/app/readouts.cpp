@@ -44,8 +44,8 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
 }
 
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio) {
-    const std::string asked = slow_divisor == 1 ? std::string("real time")
-                                                : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);
+    std::string asked = slow_divisor == 1 ? std::string("real time")
+                                          : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);
     if (!stepping || keeping_up) return asked;
     // Two significant digits: a slow scene reads 0.24x or 0.031x, never 0x.
     return fmt::format("{:.2g}\u00D7 real time: as fast as this computer can ({} asked)", ratio,
