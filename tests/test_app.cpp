@@ -596,6 +596,17 @@ TEST_CASE("the status line makes one speed statement: the chosen rate, or what t
     CHECK(speed_statement(1, false, false, 0.24) == "real time");
 }
 
+TEST_CASE("a value typed outside a control's range is clamped with a note saying so", "[app]") {
+    const SceneField& r = scene_field("fill.ratio");
+    CHECK(clamp_note(r.label, 50, r.min, r.max) == "r (fill) = 50 is outside 0 to 1: set to 1.");
+    CHECK(clamp_note(r.label, -2, r.min, r.max) == "r (fill) = -2 is outside 0 to 1: set to 0.");
+    CHECK(clamp_note(r.label, 0.5, r.min, r.max).empty());
+    // The control itself keeps the clamped value (controls.h), as the note says.
+    LaneControls c;
+    set_fill_ratio(c, 50);
+    CHECK(c.fill_ratio == r.max);
+}
+
 TEST_CASE("a slider's value is drawn beside its knob, never under it, and inside its frame", "[app]") {
     // The panel's sliders: about 260 px wide at scale 1, twice that at scale 2, knob 10-20 px.
     for (const float scale : {1.0f, 1.5f, 2.0f}) {

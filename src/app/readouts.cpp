@@ -1,6 +1,7 @@
 // Lane readouts as text: see readouts.h.
 #include "app/readouts.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -50,6 +51,12 @@ std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, do
     // Two significant digits: a slow scene reads 0.24x or 0.031x, never 0x.
     return fmt::format("{:.2g}\u00D7 real time: as fast as this computer can ({} asked)", ratio,
                        slow_divisor == 1 ? asked : fmt::format("1/{}\u00D7", slow_divisor));
+}
+
+std::string clamp_note(std::string_view label, double typed, double min, double max) {
+    if (typed >= min && typed <= max) return "";
+    return fmt::format("{} = {:g} is outside {:g} to {:g}: set to {:g}.", label, typed, min, max,
+                       std::clamp(typed, min, max));
 }
 
 }  // namespace polyroll::app

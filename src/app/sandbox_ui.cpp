@@ -130,16 +130,9 @@ std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
 
 // The last value typed (Ctrl+click) outside its field's limits and clamped by the control's setter,
 // said under the panel's controls as the command line would refuse it; cleared by the next edit.
-std::string clamp_note;
+std::string last_clamp_note;
 
-void note_clamping(const SceneField& f, double typed) {
-    if (typed >= f.min && typed <= f.max) {
-        clamp_note.clear();
-        return;
-    }
-    const double kept = std::clamp(typed, f.min, f.max);
-    clamp_note = fmt::format("{} = {:g} is outside {:g} to {:g}: set to {:g}.", f.label, typed, f.min, f.max, kept);
-}
+void note_clamping(const SceneField& f, double typed) { last_clamp_note = clamp_note(f.label, typed, f.min, f.max); }
 
 // The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
 // setter (controls.h), which checks the name or clamps the number: the panel never writes a value
@@ -519,9 +512,9 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     if (s.changes_pending && !s.restart_on_change) {
         ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "controls changed: Reset applies them");
     }
-    if (!clamp_note.empty()) {
+    if (!last_clamp_note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-        ImGui::TextWrapped("%s", clamp_note.c_str());
+        ImGui::TextWrapped("%s", last_clamp_note.c_str());
         ImGui::PopStyleColor();
     }
     if (!ctx.control_error.empty()) {
