@@ -22,6 +22,7 @@
 #include "app/sandbox_state.h"
 #include "app/scene_view.h"
 #include "app/sim_clock.h"
+#include "app/slider_text.h"
 #include "app/view_control.h"
 #include "render/font.h"
 #include "render/ticks.h"
@@ -490,6 +491,76 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
     CHECK(lane_colour(0) != lane_colour(1));
 }
 
+TEST_CASE("the scene view's text stays inside the view: no ramp label behind the panel", "[app]") {
+    // The large hexagon full of rice: the tallest clearance, so the ramp is fitted by its height and
+    // its labels sit nearest the view's left and right edges.
+    const Scene s = test::scene_with(json::parse(R"({"shell": {"preset": "hexagon-large"}})"));
+    LaneSet lanes;
+    lanes.rebuild({s});
+    lanes.wait_until_built();
+    for (const float scale : {1.0f, 1.5f, 2.0f}) {
+        const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(scale));
+        SceneViewOptions o;
+        o.width_px = 1280;
+        o.height_px = 800;
+        o.unit = scale;
+        const float panel_w = std::min(400.0f * scale, 640.0f);  // sandbox_ui.cpp's ui_layout
+        o.area = {panel_w, 47, 1280 - panel_w, 465};
+        const render::DrawList dl = build_scene_view({lanes.lane(0).snapshot()}, {"a"}, o, font);
+        // A glyph wholly outside its layer's clip is not drawn; one that is drawn lies wholly inside
+        // the clip (no letter cut at an edge) and inside the view (none behind the panel).
+        int shown = 0;
+        for (const render::Layer& l : dl.layers) {
+            const render::ClipRect c = l.clip.value_or(render::ClipRect{0, 0, 1280, 800});
+            for (const render::GlyphQuad& g : l.glyphs) {
+                const bool outside = g.p1.x <= c.x || g.p0.x >= c.x + c.width || g.p1.y <= c.y || g.p0.y >= c.y + c.height;
+                if (outside) continue;
+                ++shown;
+                INFO("scale " << scale << " glyph at " << g.p0.x << ", " << g.p0.y);
+                CHECK(g.p0.x >= std::max<float>(o.area.x, c.x));
+                CHECK(g.p1.x <= std::min<float>(o.area.x + o.area.width, c.x + c.width));
+                CHECK(g.p0.y >= std::max<float>(o.area.y, c.y));
+                CHECK(g.p1.y <= std::min<float>(o.area.y + o.area.height, c.y + c.height));
+            }
+        }
+        CHECK(shown > 0);
+    }
+}
+
+TEST_CASE("with four lanes the close-up hides no lane's start", "[app]") {
+    const Scene s = test::scene_with(json::object());
+    LaneSet lanes;
+    lanes.rebuild({s, s, s, s});
+    lanes.wait_until_built();
+    std::vector<render::Snapshot> snaps;
+    for (size_t i = 0; i < 4; ++i) snaps.push_back(lanes.lane(i).snapshot());
+    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
+    SceneViewOptions o;
+    o.width_px = 1280;
+    o.height_px = 800;
+    o.area = {400, 47, 880, 465};
+    const render::DrawList dl = build_scene_view(snaps, {"a", "b", "c", "d"}, o, font);
+    // The inset's box: the bounds of its background triangles.
+    float top = 1e9f, right = -1e9f;
+    for (const render::Layer& l : dl.layers)
+        for (const render::Triangle& t : l.triangles)
+            if (t.tag == render::Tag::inset_frame)
+                for (const render::Px& p : {t.a, t.b, t.c}) {
+                    top = std::min(top, p.y);
+                    right = std::max(right, p.x);
+                }
+    REQUIRE(right > o.area.x);
+    const LaneLayout L = lane_layout(snaps, o.area, false, 1.0f, ViewTransform{});
+    for (size_t i = 0; i < 4; ++i) {
+        // Each ramp's first half metre (its start and the "0 m" label under it) is clear of the inset.
+        for (const double x_m : {0.0, 0.25, 0.5}) {
+            const render::Px p = L.cameras[i].to_px(render::ramp_to_world({x_m, 0.0}, s.ramp.angle_deg));
+            INFO("lane " << i + 1 << " at " << x_m << " m: " << p.x << ", " << p.y << "; inset top " << top);
+            CHECK((p.x > right || p.y < top));
+        }
+    }
+}
+
 TEST_CASE("readouts say what is known, in SI units", "[app]") {
     const Scene s = test::scene_with(json::parse(R"({"fill": {"ratio": 0.4}})"));
     Measurements m;
@@ -511,6 +582,61 @@ TEST_CASE("readouts say what is known, in SI units", "[app]") {
     CHECK(r.distance == "2.400 m");
     CHECK(r.terminal == "0.610 m/s");
     CHECK(r.behaviour == "rolled to the end");
+}
+
+TEST_CASE("the status line makes one speed statement: the chosen rate, or what the computer reaches", "[app]") {
+    CHECK(speed_statement(1, true, true, 1.0) == "real time");
+    CHECK(speed_statement(4, true, true, 0.25) == "1/4\u00D7 slow motion (4\u00D7 slower)");
+    // Falling behind: the rate reached, with two significant digits, and what was asked; never
+    // "real time" beside a lower figure.
+    const std::string behind = speed_statement(1, true, false, 0.2412);
+    CHECK(behind == "0.24\u00D7 real time: as fast as this computer can (real time asked)");
+    CHECK(speed_statement(4, true, false, 0.031) == "0.031\u00D7 real time: as fast as this computer can (1/4\u00D7 asked)");
+    // Paused or ended: the clock's last verdict no longer applies.
+    CHECK(speed_statement(1, false, false, 0.24) == "real time");
+}
+
+TEST_CASE("a value typed outside a control's range is clamped with a note saying so", "[app]") {
+    const SceneField& r = scene_field("fill.ratio");
+    CHECK(clamp_note(r.label, 50, r.min, r.max) == "r (fill) = 50 is outside 0 to 1: set to 1.");
+    CHECK(clamp_note(r.label, -2, r.min, r.max) == "r (fill) = -2 is outside 0 to 1: set to 0.");
+    CHECK(clamp_note(r.label, 0.5, r.min, r.max).empty());
+    // The control itself keeps the clamped value (controls.h), as the note says.
+    LaneControls c;
+    set_fill_ratio(c, 50);
+    CHECK(c.fill_ratio == r.max);
+}
+
+TEST_CASE("a slider's value is drawn beside its knob, never under it, and inside its frame", "[app]") {
+    // The panel's sliders: about 260 px wide at scale 1, twice that at scale 2, knob 10-20 px.
+    for (const float scale : {1.0f, 1.5f, 2.0f}) {
+        const float x0 = 8.0f * scale, x1 = x0 + 260.0f * scale;
+        const float text_w = 52.0f * scale;  // "20.0\u00B0", "0.00", "1.00\u00D7"
+        const float gap = 4.0f * scale;
+        for (const int values : {0, 18}) {
+            for (int k = 0; k <= 100; ++k) {
+                const double fraction = k / 100.0;
+                const KnobSpan knob = slider_knob(x0, x1, fraction, 10.0f * scale, values);
+                INFO("scale " << scale << " fraction " << fraction << " integer values " << values);
+                REQUIRE(knob.min_x >= x0);
+                REQUIRE(knob.max_x <= x1);
+                const float tx = slider_value_x(x0, x1, knob, text_w, gap);
+                const bool beside = tx + text_w <= knob.min_x || tx >= knob.max_x;
+                CHECK(beside);
+                CHECK(tx >= x0);
+                CHECK(tx + text_w <= x1);
+            }
+        }
+    }
+    // The knob moves with the value: at the left end, at the right end, and the text changes side.
+    const KnobSpan left = slider_knob(0, 200, 0.0, 10), right = slider_knob(0, 200, 1.0, 10);
+    CHECK(left.min_x == Approx(2.0f));
+    CHECK(right.max_x == Approx(198.0f));
+    CHECK(slider_value_x(0, 200, left, 40, 4) > left.max_x);
+    CHECK(slider_value_x(0, 200, right, 40, 4) < right.min_x);
+    // An integer slider with few values shares the frame among them (ImGui's wider knob).
+    const KnobSpan wide = slider_knob(0, 204, 0.5, 10, 4);
+    CHECK(wide.max_x - wide.min_x == Approx(50.0f));
 }
 
 TEST_CASE("exports write polyroll run's files per lane under numbered names", "[app]") {

@@ -10,6 +10,7 @@
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/overlay.h"
+#include "render/render_sequence.h"
 #include "render/snapshot.h"
 #include "render/ticks.h"
 #include "render/world_draw.h"
@@ -292,4 +293,48 @@ TEST_CASE("a snapshot copies the simulation's state in metres", "[render]") {
     }
     CHECK(s.time_s == Approx(0.05));
     CHECK(s.speed_history.back().time_s == Approx(s.time_s));
+}
+
+namespace {
+int glyph_count(const DrawList& dl) {
+    int n = 0;
+    for (const Layer& l : dl.layers) n += static_cast<int>(l.glyphs.size());
+    return n;
+}
+}  // namespace
+
+TEST_CASE("a frame says the run's outcome at the end and marks slow motion", "[render]") {
+    Measurements m;
+    m.behaviour = Behaviour::stopped;
+    m.distance_m = 0.14;
+    CHECK(outcome_text(m) == "stopped after 0.14 m");
+    m.behaviour = Behaviour::rolled_to_end;
+    m.distance_m = 2.5;
+    CHECK(outcome_text(m) == "rolled to the end (2.50 m)");
+    m.behaviour = Behaviour::running;
+    CHECK(outcome_text(m).empty());
+
+    const Snapshot s = known_snapshot();
+    FrameOptions o;
+    const FontAtlas& font = atlas_for(o);
+    const int plain = glyph_count(build_frame(s, o, font));
+    // The banner: its letters (spaces aside) added, every one inside the frame and below the
+    // panel and the plot, so it hides neither.
+    FrameOptions ended = o;
+    ended.outcome = "stopped after 0.14 m";
+    const DrawList with_banner = build_frame(s, ended, font);
+    CHECK(glyph_count(with_banner) == plain + 17);
+    const FrameLayout L = frame_layout(ended);
+    const Layer& overlay = with_banner.layers.back();
+    REQUIRE(overlay.glyphs.size() >= 17);
+    for (size_t i = overlay.glyphs.size() - 17; i < overlay.glyphs.size(); ++i) {
+        const GlyphQuad& g = overlay.glyphs[i];
+        CHECK(g.p0.x >= 0);
+        CHECK(g.p1.x <= static_cast<float>(ended.width_px));
+        CHECK(g.p0.y >= std::max(L.panel.y + L.panel.height, L.plot.y + L.plot.height));
+    }
+    // Slow motion: the time column's label says how much slower ("time (4x slower)").
+    FrameOptions slow = o;
+    slow.slow_motion = 4;
+    CHECK(glyph_count(build_frame(s, slow, font)) > plain);
 }

@@ -144,7 +144,9 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
 TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][sandbox]") {
     for (const std::string& args : {std::string("--preset nope"), std::string("--frames -3"),
                                     std::string("--ui-scale 9"), std::string("--size 10x10"),
-                                    std::string("--screenshot x.png")}) {
+                                    std::string("--screenshot x.png"),
+                                    // 0 frames would run forever (issue 16 row 7): refused, not "unlimited".
+                                    std::string("--frames 0"), std::string("--theme light")}) {
         INFO(args);
         const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + args);
         CHECK(r.exit_code == 2);

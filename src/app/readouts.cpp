@@ -1,6 +1,7 @@
 // Lane readouts as text: see readouts.h.
 #include "app/readouts.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -41,6 +42,21 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
     r.distance = ended ? fmt::format("{:.3f} m", m.distance_m) : std::string("-");
     r.terminal = m.terminal_velocity_m_s ? fmt::format("{:.3f} m/s", *m.terminal_velocity_m_s) : std::string("-");
     return r;
+}
+
+std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio) {
+    std::string asked = slow_divisor == 1 ? std::string("real time")
+                                          : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);
+    if (!stepping || keeping_up) return asked;
+    // Two significant digits: a slow scene reads 0.24x or 0.031x, never 0x.
+    return fmt::format("{:.2g}\u00D7 real time: as fast as this computer can ({} asked)", ratio,
+                       slow_divisor == 1 ? asked : fmt::format("1/{}\u00D7", slow_divisor));
+}
+
+std::string clamp_note(std::string_view label, double typed, double min, double max) {
+    if (typed >= min && typed <= max) return "";
+    return fmt::format("{} = {:g} is outside {:g} to {:g}: set to {:g}.", label, typed, min, max,
+                       std::clamp(typed, min, max));
 }
 
 }  // namespace polyroll::app

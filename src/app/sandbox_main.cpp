@@ -44,6 +44,9 @@ using SteadyClock = std::chrono::steady_clock;
 
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 constexpr long kMaxFrames = 10'000'000;
+// Longest sleep of an idle window between frames: input wakes it at once; this bounds how late a
+// tooltip or a finished background job shows.
+constexpr double kIdleWaitS = 0.25;
 constexpr long kDefaultBenchFrames = 600;  // 10 s at 60 frames/s: long enough for a stable mean
 constexpr const char* kBenchPreset = "hexagon-large-rice";  // the issue: the largest of the experiment's scenes
 
@@ -55,8 +58,10 @@ double now_s() {
 struct Options {
     std::string preset;
     std::string screenshot;
-    long frames = 0;
+    long frames = 0;             // 0: not given (run until closed)
+    bool frames_given = false;   // an explicit --frames 0 is refused, not taken as "forever"
     bool bench = false;
+    std::string theme = "projector";
     std::string out = kDefaultOutDir;
     std::string size = fmt::format("{}x{}", kDefaultWidthPx, kDefaultHeightPx);
     float ui_scale = kDefaultUiScale;
@@ -77,13 +82,15 @@ void check(Options& o) {
     o.height_px = std::stoi(m[2]);
     if (o.width_px < 640 || o.width_px > 7680 || o.height_px < 480 || o.height_px > 4320)
         throw InputError(fmt::format("--size {}: out of range ({})", o.size, allowed));
-    if (o.frames < 0 || o.frames > kMaxFrames)
+    if (o.frames_given && (o.frames < 1 || o.frames > kMaxFrames))
         throw InputError(fmt::format("--frames {}: out of range (allowed: 1 to {})", o.frames, kMaxFrames));
-    if (!o.screenshot.empty() && o.frames == 0)
+    if (!o.screenshot.empty() && o.frames < 1)
         throw InputError(fmt::format("--screenshot {}: needs --frames N (the frame after which it is taken)", o.screenshot));
     if (!(o.ui_scale >= kUiScaleMin && o.ui_scale <= kUiScaleMax))
         throw InputError(fmt::format("--ui-scale {:g}: out of range (allowed: {:g} to {:g})", o.ui_scale, kUiScaleMin,
                                      kUiScaleMax));
+    if (o.theme != "projector" && o.theme != "dark")
+        throw InputError(fmt::format("--theme {}: unknown (allowed: projector, dark)", o.theme));
     if (o.colour_by != "material" && o.colour_by != "speed")
         throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
     if (!o.screenshot.empty()) {
@@ -166,7 +173,7 @@ public:
             fmt::print(stderr, "polyroll-sandbox: the scene could not be built: {}\n", lanes().build_error());
             return kExitFailure;
         }
-        const long frames = o_.bench && o_.frames == 0 ? kDefaultBenchFrames : o_.frames;
+        const long frames = o_.bench && o_.frames < 1 ? kDefaultBenchFrames : o_.frames;
         BenchStats bench;
         bench.wall_start_s = now_s();
         double last = now_s();
@@ -190,6 +197,11 @@ public:
                 // Without vsync (Xvfb, some drivers) do not spin a core drawing frames nobody sees.
                 const double left = 1.0 / kFrameRateCapHz - (now_s() - t0);
                 if (left > 0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
+                // Nothing moves (the run ended, or paused, and no build or run to the end under way):
+                // sleep until the user does something. The timeout lets a tooltip's hover delay pass.
+                const bool moving = !lanes().ready() || last_.running_to_end || (s_.playing && !last_.run_over());
+                if (!moving) win_.wait_events(kIdleWaitS);
+
             }
         }
         if (o_.bench) {
@@ -449,8 +461,11 @@ int sandbox_main(int argc, char** argv) {
     cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
     cli.add_flag("--paused", o.paused, "start paused");
     cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
+    cli.add_option("--theme", o.theme,
+                   "panel colours: projector (default; dark text on pale panels, strong borders) or dark (ImGui's)");
     try {
         cli.parse(argc, argv);
+        o.frames_given = cli.count("--frames") > 0;
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
@@ -471,6 +486,7 @@ int sandbox_main(int argc, char** argv) {
     state.colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
     state.ui_scale = o.ui_scale;
     state.playing = !o.paused;
+    state.high_contrast = o.theme == "projector";
 
     std::string why;
     std::unique_ptr<Window> win = Window::open(o.width_px, o.height_px, !(o.capture() || o.bench), why);

@@ -4,16 +4,20 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <type_traits>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/plot_data.h"
 #include "app/readouts.h"
 #include "app/sandbox_presets.h"
 #include "app/scene_view.h"
+#include "app/slider_text.h"
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
@@ -30,6 +34,14 @@ ImVec4 im_vec(render::Rgba c) { return {c.r, c.g, c.b, c.a}; }
 
 const ImVec4 kErrorColour{0.75f, 0.05f, 0.05f, 1.0f};
 const ImVec4 kWarnColour{0.70f, 0.35f, 0.0f, 1.0f};
+
+// A colour for text on the panels: as given on the projector theme's pale panels; on the dark
+// theme mixed halfway to white, so the lane colours, warnings and errors stay readable there too
+// (the saturated red of lane 1 on dark grey was barely legible).
+ImVec4 on_panel(ImVec4 c, bool high_contrast) {
+    if (high_contrast) return c;
+    return {0.5f * (c.x + 1.0f), 0.5f * (c.y + 1.0f), 0.5f * (c.z + 1.0f), c.w};
+}
 
 // A tooltip for the last item: what the control is and its unit.
 void tip(const std::string& text) {
@@ -66,8 +78,47 @@ bool preset_combo(const char* label, assets::Kind kind, std::string& value) {
     return changed;
 }
 
+// A slider whose value is written beside its knob, never under it (slider_text.h): ImGui's own
+// centred value is drawn transparent, then the value is drawn where the knob leaves room. While
+// Ctrl+click typing is active the field is ImGui's, drawn as usual. The label is drawn after the
+// frame, as ImGui does; the group makes the tooltip answer to the frame and the label both.
+template <class T>
+bool knob_slider(const char* label, ImGuiDataType type, T& v, T lo, T hi, const char* format) {
+    ImGui::BeginGroup();
+    ImGui::PushID(label);
+    const ImGuiID id = ImGui::GetID("##slider");
+    const bool typing = ImGui::TempInputIsActive(id);
+    if (!typing) ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(0, 0, 0, 0));
+    const bool changed = ImGui::SliderScalar("##slider", type, &v, &lo, &hi, format);
+    if (!typing) ImGui::PopStyleColor();
+    if (!typing) {
+        const ImVec2 f0 = ImGui::GetItemRectMin(), f1 = ImGui::GetItemRectMax();
+        const double span = static_cast<double>(hi) - static_cast<double>(lo);
+        const double fraction = span > 0 ? (static_cast<double>(v) - static_cast<double>(lo)) / span : 0.0;
+        const int values = type == ImGuiDataType_S32 ? static_cast<int>(hi - lo) + 1 : 0;
+        const KnobSpan knob = slider_knob(f0.x, f1.x, fraction, ImGui::GetStyle().GrabMinSize, values);
+        char text[64];
+        if constexpr (std::is_integral_v<T>) std::snprintf(text, sizeof text, format, v);
+        else std::snprintf(text, sizeof text, format, static_cast<double>(v));
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        const float x = slider_value_x(f0.x, f1.x, knob, size.x, ImGui::GetStyle().FramePadding.x);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(f0, f1, true);
+        dl->AddText({x, 0.5f * (f0.y + f1.y - size.y)}, ImGui::GetColorU32(ImGuiCol_Text), text);
+        dl->PopClipRect();
+    }
+    ImGui::PopID();
+    const char* shown_end = ImGui::FindRenderedTextEnd(label);
+    if (shown_end != label) {
+        ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted(label, shown_end);
+    }
+    ImGui::EndGroup();
+    return changed;
+}
+
 bool slider_double(const char* label, double& v, double lo, double hi, const char* format) {
-    return ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &lo, &hi, format);
+    return knob_slider(label, ImGuiDataType_Double, v, lo, hi, format);
 }
 
 // A field's tooltip: its help and what it allows (sim/scene_fields.cpp), then what the panel adds.
@@ -76,6 +127,12 @@ std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
     if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
     return text + "." + (panel_note.empty() ? "" : " " + panel_note);
 }
+
+// The last value typed (Ctrl+click) outside its field's limits and clamped by the control's setter,
+// said under the panel's controls as the command line would refuse it; cleared by the next edit.
+std::string last_clamp_note;
+
+void note_clamping(const SceneField& f, double typed) { last_clamp_note = clamp_note(f.label, typed, f.min, f.max); }
 
 // The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
 // setter (controls.h), which checks the name or clamps the number: the panel never writes a value
@@ -97,7 +154,10 @@ bool slider_control(const SceneField& f, Controls& c, double value, const char* 
                     std::optional<double> slider_max = std::nullopt) {
     const bool edited =
         slider_double(std::string(f.label).c_str(), value, f.min, slider_max.value_or(f.max), format);
-    if (edited) set(c, value);
+    if (edited) {
+        set(c, value);
+        note_clamping(f, value);
+    }
     tip(field_tip(f, panel_note));
     return edited;
 }
@@ -157,8 +217,10 @@ void lane_controls(SandboxState& s, UiRequests& req) {
                                   "This lane's shell; n below can change its number of sides.");
     const SceneField& sides = scene_field("shell.sides");
     int n = c.sides;
-    if (ImGui::SliderInt(std::string(sides.label).c_str(), &n, static_cast<int>(sides.min), kSidesSliderMax)) {
+    if (knob_slider(std::string(sides.label).c_str(), ImGuiDataType_S32, n, static_cast<int>(sides.min), kSidesSliderMax,
+                    "%d")) {
         set_sides(c, n);
+        note_clamping(sides, n);
         changed = true;
     }
     tip(field_tip(sides, fmt::format("Ctrl+click to type more than {}.", kSidesSliderMax)));
@@ -250,7 +312,7 @@ void view_controls(SandboxState& s, UiRequests& req) {
     tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles).",
                     kDefaultColourSpeedMax_m_s));
     float scale = s.ui_scale;
-    if (ImGui::SliderFloat("UI scale", &scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
+    if (knob_slider("UI scale", ImGuiDataType_Float, scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
     tip("Size of the panel's text and the scene's labels, for a projector at the back of the room.");
     ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
     tip("Dark text on pale panels with strong borders; off: ImGui's dark theme.");
@@ -269,32 +331,67 @@ struct Markers {
     ImU32 colour;
 };
 
+// A plot drawn with ImGui's draw list, on a white card in every theme (so its text is always dark):
+// the title, then the legend in a row of its own above the data (never over a trace), then the
+// axes, with as many ticks as the card's size leaves room for (no numbers running together at a
+// large UI scale or in a narrow window).
 void draw_plot(const char* title, const char* unit, const PlotRange& r, const std::vector<Trace>& traces,
                const std::vector<Markers>& markers, ImVec2 size) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     ImGui::Dummy(size);
     const float fs = ImGui::GetFontSize();
-    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+    const ImU32 text = IM_COL32(20, 22, 26, 255);
     const ImU32 grid = IM_COL32(205, 208, 215, 255);
     const ImU32 axis = IM_COL32(60, 62, 66, 255);
+    const float thick = std::max(2.0f, fs * 0.14f);
+    const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+    dl->AddRectFilled(p0, p1, IM_COL32(255, 255, 255, 255), 3.0f);
+    dl->PushClipRect(p0, p1, true);
+    // The title, shortened to what fits.
+    std::string heading = fmt::format("{}: {} against time (s)", title, unit);
+    if (ImGui::CalcTextSize(heading.c_str()).x > size.x - fs * 0.8f) heading = fmt::format("{} ({})", title, unit);
+    dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, heading.c_str());
+    // The legend: entries left to right, wrapping to a new row when the card is narrow.
+    float lx = p0.x + fs * 0.4f, ly = p0.y + fs * 1.35f;
+    bool any_legend = false;
+    for (const Trace& tr : traces) {
+        if (tr.legend.empty()) continue;
+        const float w = fs * 1.3f + ImGui::CalcTextSize(tr.legend.c_str()).x;
+        if (any_legend && lx + w > p1.x - fs * 0.4f) {
+            lx = p0.x + fs * 0.4f;
+            ly += fs * 1.15f;
+        }
+        any_legend = true;
+        dl->AddLine({lx, ly + fs * 0.55f}, {lx + fs * 0.9f, ly + fs * 0.55f}, tr.colour, thick);
+        dl->AddText({lx + fs * 1.1f, ly}, text, tr.legend.c_str());
+        lx += w + fs * 0.8f;
+    }
+    const float top = any_legend ? ly + fs * 1.35f : p0.y + fs * 1.5f;
     // Plot area inside the labels.
-    const ImVec2 a0{p0.x + fs * 3.6f, p0.y + fs * 1.5f};
-    const ImVec2 a1{p0.x + size.x - fs * 0.6f, p0.y + size.y - fs * 1.5f};
-    if (a1.x <= a0.x + 10 || a1.y <= a0.y + 10) return;
-    dl->AddRectFilled(p0, {p0.x + size.x, p0.y + size.y}, IM_COL32(255, 255, 255, 255), 3.0f);
-    dl->AddText({p0.x + fs * 0.4f, p0.y + fs * 0.15f}, text, fmt::format("{}: {} against time (s)", title, unit).c_str());
+    const ImVec2 a0{p0.x + fs * 3.6f, top};
+    const ImVec2 a1{p1.x - fs * 0.9f, p1.y - fs * 1.5f};
+    if (a1.x <= a0.x + 10 || a1.y <= a0.y + 10) {
+        dl->PopClipRect();
+        return;
+    }
     auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
     auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
-    // Ticks: the frames' plot's rules (render/ticks.h), five intervals in time and four in value.
-    const render::AxisTicks t_ticks = render::axis_ticks(0.0, r.t_max_s, 5.0);
+    // Ticks: the frames' plot's rules (render/ticks.h), up to five intervals in time and four in
+    // value, fewer when a label (about 3.5 em wide, 2 lines tall) would not fit between them.
+    const double t_intervals = std::clamp(std::floor((a1.x - a0.x) / (fs * 3.5f)), 1.0f, 5.0f);
+    const double y_intervals = std::clamp(std::floor((a1.y - a0.y) / (fs * 2.0f)), 1.0f, 4.0f);
+    const render::AxisTicks t_ticks = render::axis_ticks(0.0, r.t_max_s, t_intervals);
     for (int k = 0; k < t_ticks.count; ++k) {
         const double t = t_ticks.at(k);
         dl->AddLine({X(t), a0.y}, {X(t), a1.y}, grid);
         const std::string l = fmt::format("{:g}", std::round(t * 1000.0) / 1000.0);
-        dl->AddText({X(t) - ImGui::CalcTextSize(l.c_str()).x / 2, a1.y + fs * 0.15f}, text, l.c_str());
+        const float w = ImGui::CalcTextSize(l.c_str()).x;
+        // The last label kept inside the card.
+        const float x = std::min(X(t) - w / 2, p1.x - w - fs * 0.2f);
+        dl->AddText({x, a1.y + fs * 0.15f}, text, l.c_str());
     }
-    const render::AxisTicks y_ticks = render::axis_ticks(r.y_min, r.y_max, 4.0);
+    const render::AxisTicks y_ticks = render::axis_ticks(r.y_min, r.y_max, y_intervals);
     for (int k = 0; k < y_ticks.count; ++k) {
         const double v = y_ticks.at(k);
         dl->AddLine({a0.x, Y(v)}, {a1.x, Y(v)}, std::fabs(v) < 1e-12 ? axis : grid);
@@ -303,8 +400,8 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
         dl->AddText({a0.x - ImGui::CalcTextSize(l.c_str()).x - fs * 0.3f, Y(v) - fs / 2}, text, l.c_str());
     }
     dl->AddRect(a0, a1, axis, 0.0f, 0, 1.5f);
+    dl->PopClipRect();
     dl->PushClipRect(a0, a1, true);
-    const float thick = std::max(2.0f, fs * 0.14f);
     for (const Trace& tr : traces) {
         std::vector<ImVec2> pts;
         pts.reserve(tr.points.size());
@@ -317,17 +414,6 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
             dl->AddCircle({X(p.t_s), Y(p.y)}, fs * 0.28f, axis, 0, 1.0f);
         }
     dl->PopClipRect();
-    // Legend, top right inside the plot.
-    float ly = a0.y + fs * 0.2f;
-    for (const Trace& tr : traces) {
-        if (tr.legend.empty()) continue;
-        const float w = ImGui::CalcTextSize(tr.legend.c_str()).x;
-        const ImVec2 at{a1.x - w - fs * 0.5f, ly};
-        dl->AddRectFilled({at.x - fs * 1.4f, ly}, {a1.x - fs * 0.2f, ly + fs * 1.1f}, IM_COL32(255, 255, 255, 220));
-        dl->AddLine({at.x - fs * 1.2f, ly + fs * 0.55f}, {at.x - fs * 0.3f, ly + fs * 0.55f}, tr.colour, thick);
-        dl->AddText(at, text, tr.legend.c_str());
-        ly += fs * 1.15f;
-    }
 }
 
 }  // namespace
@@ -382,7 +468,7 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     if (ImGui::BeginTabBar("lanes")) {
         for (size_t i = 0; i < s.lanes.size(); ++i) {
             const std::string name = fmt::format("Lane {}", i + 1);
-            ImGui::PushStyleColor(ImGuiCol_Text, im_vec(lane_colour(i)));
+            ImGui::PushStyleColor(ImGuiCol_Text, on_panel(im_vec(lane_colour(i)), s.high_contrast));
             const bool open = ImGui::BeginTabItem(name.c_str());
             ImGui::PopStyleColor();
             if (open) {
@@ -424,10 +510,15 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     ImGui::Checkbox("restart when a control changes", &s.restart_on_change);
     tip("On: every change rebuilds the scene and starts again. Off: changes wait for Reset.");
     if (s.changes_pending && !s.restart_on_change) {
-        ImGui::TextColored(kWarnColour, "controls changed: Reset applies them");
+        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "controls changed: Reset applies them");
+    }
+    if (!last_clamp_note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
+        ImGui::TextWrapped("%s", last_clamp_note.c_str());
+        ImGui::PopStyleColor();
     }
     if (!ctx.control_error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::TextWrapped("%s", ctx.control_error.c_str());
         ImGui::PopStyleColor();
     }
@@ -450,19 +541,39 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float gap = ImGui::GetStyle().ItemSpacing.x;
     const float fs = ImGui::GetFontSize();
-    const float table_w = std::min(avail.x * 0.55f, fs * (6.5f + 6.6f * static_cast<float>(lanes.size())));
+    std::vector<LaneReadout> r;
+    for (size_t i = 0; i < lanes.size(); ++i)
+        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
+    // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
+    // 60% of the width; past that its cells wrap rather than cut their text.
+    const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
+                                             "behaviour", "distance", "terminal v"};
+    const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
+    float needed_w = 0;
+    for (const std::string& l : labels) needed_w = std::max(needed_w, ImGui::CalcTextSize(l.c_str()).x);
+    needed_w += cell_pad;
+    for (const LaneReadout& lr : r) {
+        float w = fs * 2.0f;
+        for (const std::string* f : {&lr.polygon, &lr.fill, &lr.position, &lr.speed, &lr.impacts, &lr.behaviour,
+                                     &lr.distance, &lr.terminal})
+            w = std::max(w, ImGui::CalcTextSize(f->c_str()).x);
+        needed_w += w + cell_pad;
+    }
+    const bool table_fits = needed_w <= avail.x * 0.6f;
+    const float table_w = table_fits ? needed_w : avail.x * 0.6f;
     // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
     // so the readout columns and the plot both stay wide enough to read.
     const bool racing = lanes.size() > 1;
-    const float plot_w = racing ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
+    // Tabs also when two plots side by side would be narrower than about 16 em each (a large UI
+    // scale or a small window): one readable plot rather than two slivers.
+    const bool tabbed = racing || (avail.x - table_w - 2 * gap) / 2.0f < fs * 16.0f;
+    const float plot_w = tabbed ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
 
     // Readouts: one column per lane (the time is the status line's: the lanes started together).
     ImGui::BeginChild("table", {table_w, avail.y});
-    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
+                               (table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
     if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
-        std::vector<LaneReadout> r;
-        for (size_t i = 0; i < lanes.size(); ++i)
-            r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
         if (racing) {
             ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
             ImGui::TableSetColumnIndex(0);
@@ -470,7 +581,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             for (size_t i = 0; i < lanes.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (ctx.large_font) ImGui::PushFont(ctx.large_font);
-                ImGui::TextColored(im_vec(lane_colour(i)), "%zu", i + 1);
+                ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
                 if (ctx.large_font) ImGui::PopFont();
             }
         }
@@ -481,7 +592,8 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             tip(what);
             for (size_t i = 0; i < lanes.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                ImGui::TextUnformatted((r[i].*field).c_str());
+                if (table_fits) ImGui::TextUnformatted((r[i].*field).c_str());
+                else ImGui::TextWrapped("%s", (r[i].*field).c_str());
             }
         };
         row("polygon", &LaneReadout::polygon, "The number of sides n.");
@@ -525,7 +637,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
     };
     ImGui::SameLine();
-    if (!racing) {
+    if (!tabbed) {
         speed_plot(avail.y);
         ImGui::SameLine();
         energy_plot(avail.y);
@@ -533,11 +645,12 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         ImGui::BeginGroup();
         const float tab_h = ImGui::GetFrameHeightWithSpacing();
         if (ImGui::BeginTabBar("plots")) {
-            if (ImGui::BeginTabItem("speed, all lanes")) {
+            if (ImGui::BeginTabItem(racing ? "speed, all lanes" : "speed")) {
                 speed_plot(avail.y - tab_h);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem(fmt::format("energy, lane {}###energy", sel + 1).c_str())) {
+            const std::string energy_tab = racing ? fmt::format("energy, lane {}###energy", sel + 1) : "energy###energy";
+            if (ImGui::BeginTabItem(energy_tab.c_str())) {
                 energy_plot(avail.y - tab_h);
                 ImGui::EndTabItem();
             }
@@ -572,32 +685,31 @@ void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L)
             state = lanes.size() == 1 ? "run ended: " + behaviour_label(lanes.lane(0).measured().behaviour)
                                       : std::string("run ended");
         else state = s.playing ? "\u25B6 playing" : "\u275A\u275A paused";
-        const std::string speed = divisor == 1 ? std::string("real time") : fmt::format("1/{}\u00D7 slow motion", divisor);
-        ImGui::Text("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
+        const bool stepping = s.playing && !lanes.all_finished() && !lanes.trouble() && !ctx.running_to_end;
+        const std::string speed =
+            speed_statement(divisor, stepping, ctx.clock->keeping_up(), ctx.clock->realtime_ratio());
+        // Wrapped at the status box's width: nothing runs off the window's edge.
+        ImGui::PushTextWrapPos(L.width - L.panel_w - 4 * pad);
+        ImGui::TextWrapped("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
+        ImGui::PopTextWrapPos();
     }
     if (ctx.large_font) ImGui::PopFont();
-    const bool stepping = lanes.ready() && s.playing && !lanes.all_finished() && !lanes.trouble();
-    if (stepping && !ctx.running_to_end && !ctx.clock->keeping_up())
-        ImGui::TextColored(kWarnColour,
-                           "This computer simulates only %.2f\u00D7 real time for this scene: the simulation is "
-                           "slowed down to keep the window responsive.",
-                           ctx.clock->realtime_ratio());
     if (!lanes.build_error().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
         ImGui::TextWrapped("The scene could not be built: %s", lanes.build_error().c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
     }
     if (lanes.trouble()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
         ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
         ImGui::TextWrapped("%s", lanes.trouble()->c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
     }
     if (s.changes_pending && !s.restart_on_change)
-        ImGui::TextColored(kWarnColour, "Controls changed: press Reset (R) to apply them.");
+        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "Controls changed: press Reset (R) to apply them.");
     ImGui::End();
 }
 

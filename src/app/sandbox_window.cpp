@@ -165,6 +165,8 @@ void Window::render_ui() {
 
 void Window::swap() { glfwSwapBuffers(window_); }
 
+void Window::wait_events(double timeout_s) const { glfwWaitEventsTimeout(timeout_s); }
+
 void Window::framebuffer_size(int& w, int& h) const { glfwGetFramebufferSize(window_, &w, &h); }
 
 float Window::pixel_ratio() const {

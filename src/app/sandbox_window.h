@@ -27,6 +27,9 @@ public:
     // Renders ImGui's draw data over whatever was drawn (the scene).
     void render_ui();
     void swap();
+    // Sleeps until an input event arrives or `timeout_s` passes: the loop calls it when nothing
+    // moves (run ended, paused), so an idle window costs no CPU (issue 16 row 7).
+    void wait_events(double timeout_s) const;
 
     void framebuffer_size(int& width_px, int& height_px) const;
     // Framebuffer pixels per window coordinate (1 except on high-density displays).

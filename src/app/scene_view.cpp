@@ -24,16 +24,29 @@ namespace {
 
 // The close-up: bottom left of the view, under the ramp, following one lane's polygon, framed and
 // marked in the lane's colour; the main view marks where it looks.
-void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const SceneViewOptions& o,
-                        const WorldStyle& st, const FontAtlas& font, DrawList& dl) {
+// Its top is kept below the lowest ramp (with its body and labels) where that ramp passes over the
+// inset, so with three or four lanes the inset no longer hides the start of the lower lanes; it
+// shrinks down to a quarter of the view's height for that, and past it overlaps as before.
+void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const Snapshot& lowest,
+                        const Camera& lowest_cam, const SceneViewOptions& o, const WorldStyle& st,
+                        const FontAtlas& font, DrawList& dl) {
     const float u = o.unit;
     const float m = 12.0f * u;
-    const float w = std::round(0.36f * o.area.width), h = std::round(0.50f * o.area.height);
-    CloseUpStyle style = close_up_style({o.area.x + m, o.area.y + o.area.height - h - m, w, h}, u);
+    const float w = std::round(0.36f * o.area.width);
+    const float bottom = o.area.y + o.area.height - m;
+    const Px a = lowest_cam.to_px(ramp_to_world({0.0, 0.0}, lowest.ramp_angle_deg));
+    const Px b = lowest_cam.to_px(ramp_to_world({lowest.ramp_length_m, 0.0}, lowest.ramp_angle_deg));
+    const float x = std::clamp(o.area.x + m + w, std::min(a.x, b.x), std::max(a.x, b.x));
+    const float ramp_y = std::fabs(b.x - a.x) > 1e-3f ? a.y + (x - a.x) * (b.y - a.y) / (b.x - a.x) : std::max(a.y, b.y);
+    const float clear_top = ramp_y + render::kRampBelowDesignPx * u + m;
+    const float h = std::round(std::clamp(bottom - clear_top, 0.25f * o.area.height, 0.50f * o.area.height));
+    CloseUpStyle style = close_up_style({o.area.x + m, bottom - h, w, h}, u);
     style.marker = lane_colour(lane);
     style.border = lane_colour(lane);
     if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
-    draw_close_up(s, main_cam, style, st, font, dl);
+    WorldStyle lane_st = st;
+    if (racing) lane_st.shell_wall = lane_colour(lane);
+    draw_close_up(s, main_cam, style, lane_st, font, dl);
 }
 
 }  // namespace
@@ -56,10 +69,15 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
     const ClipRect clip{static_cast<int>(std::floor(o.area.x)), static_cast<int>(std::floor(o.area.y)),
                         static_cast<int>(std::ceil(o.area.width)), static_cast<int>(std::ceil(o.area.height))};
     const WorldStyle st = world_style(o.unit, o.area, o.colouring, o.colour_speed_max_m_s);
-    for (size_t i = 0; i < lanes.size(); ++i) draw_world(lanes[i], layout.cameras[i], st, font, dl.new_layer(clip));
+    for (size_t i = 0; i < lanes.size(); ++i) {
+        WorldStyle lane_st = st;
+        if (lanes.size() > 1) lane_st.shell_wall = lane_colour(i);
+        draw_world(lanes[i], layout.cameras[i], lane_st, font, dl.new_layer(clip));
+    }
     if (!o.follow && o.close_up_lane >= 0 && static_cast<size_t>(o.close_up_lane) < lanes.size()) {
         const size_t k = static_cast<size_t>(o.close_up_lane);
-        draw_lane_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], o, st, font, dl);
+        draw_lane_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], lanes.back(), layout.cameras.back(), o, st,
+                           font, dl);
     }
 
     // When racing: each lane's number in a badge at the top of its ramp (where the polygons start),

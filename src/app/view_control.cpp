@@ -19,6 +19,9 @@ Px centre_of(const PxRect& a) { return {a.x + a.width / 2.0f, a.y + a.height / 2
 
 // Room left of the ramps for the lane badges (scene_view.cpp), in design pixels.
 constexpr float kBadgeMarginDesignPx = 44.0f;
+// Room past each end of a ramp for half of its distance label ("0 m", "2.5 m") and a little air,
+// in design pixels: without it the "0 m" at the ramp's top end sat half behind the panel.
+constexpr float kLabelMarginDesignPx = 30.0f;
 // Room above the surface for a lane's polygon, in outer radii (it may rock onto a vertex).
 constexpr double kClearanceRadii = 2.4;
 
@@ -83,10 +86,9 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
     Camera base;
     for (int pass = 0; pass < 2; ++pass) {
         PxRect fit = area;
-        if (n > 1) {
-            fit.x += kBadgeMarginDesignPx * unit;
-            fit.width = std::max(1.0f, fit.width - kBadgeMarginDesignPx * unit);
-        }
+        const float left = (n > 1 ? kBadgeMarginDesignPx : kLabelMarginDesignPx) * unit;
+        fit.x += left;
+        fit.width = std::max(1.0f, fit.width - left - kLabelMarginDesignPx * unit);
         fit.height = std::max(1.0f, area.height - static_cast<float>(n - 1) * spacing - (n > 1 ? band : 0.0f));
         base = render::whole_ramp_camera(s0.ramp_length_m, s0.ramp_angle_deg, kClearanceRadii * radius, fit);
         spacing = static_cast<float>(kClearanceRadii * radius * base.px_per_m) + band;

@@ -43,6 +43,7 @@ DrawList build_frame(const Snapshot& s, const FrameOptions& o, const FontAtlas& 
     Layer& overlay = dl.new_layer();
     draw_panel(s, o, L, font, overlay);
     draw_plot(s, o, L, font, overlay);
+    draw_outcome(o, L, font, overlay);
     return dl;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/camera.h"
@@ -24,6 +25,12 @@ struct FrameOptions {
     std::optional<double> plot_time_max_s;
     std::optional<double> plot_speed_min_m_s;
     std::optional<double> plot_speed_max_m_s;
+    // Frames per simulated second over real time: above 1 the panel marks the slow motion
+    // ("4\u00D7 slower"), so a viewer does not take a slowed run for a slow polygon.
+    int slow_motion = 1;
+    // The run's outcome in words ("stopped after 0.14 m", "rolled to the end"), shown as a banner
+    // over the world on the final, held frames; empty on the frames before.
+    std::string outcome;
 };
 
 struct FrameLayout {

@@ -37,6 +37,18 @@ void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
     const std::string params =
         fmt::format("n = {}    {}    \u03B8 = {:g}\u00B0", s.sides, fill, s.ramp_angle_deg);
     float content_w = font.layout(params, L.title, {r.x + pad, y}, palette::text, out.glyphs);
+    // The tracked dot's legend on the same line: the black dot is the lid centre, whose distance
+    // and speed the panel and the plot give.
+    {
+        float lx = r.x + pad + content_w + 26.0f * u;
+        const float dot_r = 6.0f * u;
+        const Px c{lx + dot_r, y - font.ascent(L.label) * 0.35f};
+        out.shapes.push_back(disc(c, dot_r + std::max(1.0f, 1.5f * u), palette::lid_dot_ring, Tag::panel));
+        out.shapes.push_back(disc(c, dot_r, palette::lid_dot, Tag::panel));
+        lx += 2.0f * dot_r + 8.0f * u;
+        lx += font.layout("lid centre (measured)", L.label, {lx, y}, palette::text_dim, out.glyphs);
+        content_w = lx - (r.x + pad);
+    }
 
     // Four columns, each as wide as its widest possible value, so nothing jumps between frames.
     struct Column {
@@ -44,7 +56,10 @@ void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
         std::string value;
         const char* widest;
     };
-    const Column cols[4] = {{"time", fmt::format("{:.2f} s", s.time_s), "00.00 s"},
+    // In slow motion the time column says so: the clock shows simulated time, slower than the video's.
+    const std::string time_label =
+        o.slow_motion > 1 ? fmt::format("time ({}\u00D7 slower)", o.slow_motion) : std::string("time");
+    const Column cols[4] = {{time_label.c_str(), fmt::format("{:.2f} s", s.time_s), "00.00 s"},
                             {"speed", signed_fixed(s.now.speed_m_s, 2) + " m/s", "\u22120.00 m/s"},
                             {"distance", signed_fixed(s.now.position_m, 3) + " m", "0.000 m"},
                             {"face impacts", fmt::format("{}", s.impacts), "000"}};
@@ -81,6 +96,20 @@ void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
     r.width = std::max(r.width, content_w + 2.0f * pad);
     out.shapes[box_index] = rounded_box({r.x, r.y}, {r.width, r.height}, 10.0f * u, palette::panel_fill,
                                         std::max(1.0f, 1.5f * u), palette::panel_border, Tag::panel);
+}
+
+void draw_outcome(const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
+    if (o.outcome.empty()) return;
+    const float u = L.unit;
+    const float pad = 16.0f * u;
+    const float tw = font.text_width(o.outcome, L.value);
+    const float w = tw + 2.0f * pad, h = font.line_height(L.value) + 1.5f * pad;
+    // Centred across the frame, just below the panel and the plot.
+    const float top = std::max(L.panel.y + L.panel.height, L.plot.y + L.plot.height) + 14.0f * u;
+    const float x = (static_cast<float>(o.width_px) - w) / 2.0f;
+    out.shapes.push_back(rounded_box({x, top}, {w, h}, 10.0f * u, palette::panel_fill, std::max(1.5f, 2.5f * u),
+                                     palette::plot_curve, Tag::panel));
+    font.layout(o.outcome, L.value, {x + pad, top + 0.75f * pad + font.ascent(L.value)}, palette::text, out.glyphs);
 }
 
 PlotAxes plot_axes(const Snapshot& s, const FrameOptions& o) {

@@ -16,6 +16,9 @@ std::string material_label(const std::string& preset);
 
 void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out);
 
+// The outcome banner (FrameOptions::outcome), centred below the panel; nothing when it is empty.
+void draw_outcome(const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out);
+
 // The plot's axis ranges for a snapshot: the options' fixed values, or grown to fit the data.
 struct PlotAxes {
     double time_max_s = 1.0;

@@ -46,6 +46,19 @@ FrameOptions options_for_run(FrameOptions o, const RunResult& run) {
     return o;
 }
 
+std::string outcome_text(const Measurements& m) {
+    switch (m.behaviour) {
+        case Behaviour::stopped_at_first_impact:
+            return fmt::format("stopped at its first impact, after {:.2f} m", m.distance_m);
+        case Behaviour::stopped: return fmt::format("stopped after {:.2f} m", m.distance_m);
+        case Behaviour::rolled_to_end: return fmt::format("rolled to the end ({:.2f} m)", m.distance_m);
+        case Behaviour::time_limit: return fmt::format("time limit reached after {:.2f} m", m.distance_m);
+        case Behaviour::diverged: return "stopped: the simulation diverged";
+        case Behaviour::running: return "";
+    }
+    return "";
+}
+
 SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, const std::filesystem::path& dir,
                                const std::function<void(const SequenceProgress&)>& progress) {
     SequenceResult result;
@@ -66,7 +79,8 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
     result.hold_frames = sched.hold_frames();
     const long expected = result.run_frames + result.hold_frames;
 
-    const FrameOptions options = options_for_run(st.frame, data);
+    FrameOptions options = options_for_run(st.frame, data);
+    options.slow_motion = st.slow;
     const FontAtlas font(find_font_dir(), frame_fonts(options));
     OffscreenContext context(options.width_px, options.height_px);
     GlRenderer gl;
@@ -82,8 +96,8 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
 
     const auto start = Clock::now();
     long done = 0;
-    auto emit = [&](const Snapshot& snap, int copies) {
-        gl.draw(build_frame(snap, options, font));
+    auto emit = [&](const Snapshot& snap, int copies, const FrameOptions& frame_options) {
+        gl.draw(build_frame(snap, frame_options, font));
         if (encoder) {
             std::vector<std::uint8_t> pixels = encoder->take_buffer(frame_bytes);
             context.read_rgba_bottom_up(pixels.data());
@@ -105,7 +119,7 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
             throw std::logic_error(fmt::format("the render run ended at step {} but the data run went on to step {}: "
                                                "the simulation is not deterministic",
                                                run->steps(), data_steps));
-        emit(run->snapshot(), 1);
+        emit(run->snapshot(), 1, options);
     }
     while (run->step()) {
     }
@@ -114,7 +128,12 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
                                            "is not deterministic",
                                            run->steps(), data_steps));
     // The final state, held: drawn and encoded once, written as many times as it is shown.
-    if (result.hold_frames > 0) emit(run->snapshot(), static_cast<int>(result.hold_frames));
+    // The held frames carry the outcome banner: the run's ending said in words.
+    if (result.hold_frames > 0) {
+        FrameOptions held = options;
+        held.outcome = outcome_text(data.measured);
+        emit(run->snapshot(), static_cast<int>(result.hold_frames), held);
+    }
     if (encoder) {
         encoder->finish();
         result.png_bytes = encoder->bytes_written();

@@ -46,6 +46,9 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& setti
 
 // The frame options for a run whose results are known: the plot's axes cover the whole run and
 // the speed colour map tops out a little above the fastest speed, both rounded to readable values.
+// The outcome banner's words for a finished run: "stopped after 0.14 m", "rolled to the end (2.50 m)".
+std::string outcome_text(const Measurements& m);
+
 FrameOptions options_for_run(FrameOptions base, const RunResult& run);
 
 }  // namespace polyroll::render

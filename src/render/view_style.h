@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/camera.h"
+#include "render/colour.h"
 #include "render/font.h"
 
 namespace polyroll::render {
@@ -35,6 +36,9 @@ struct WorldStyle {
     PxRect visible;       // only ticks inside this rectangle are drawn
     GrainColouring grain_colouring = GrainColouring::material;
     double colour_speed_max_m_s = 1.0;
+    // The shell's wall: the palette's blue, or when several lanes race, each lane's colour, so a
+    // polygon is matched to its badge, legend line and readout column at a glance.
+    Rgba shell_wall = palette::shell_wall;
 };
 
 // The one style builder: the world at `unit`, its ticks kept to `visible`, grains coloured `how`

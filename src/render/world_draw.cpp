@@ -72,6 +72,12 @@ void draw_ramp(const Snapshot& s, const Camera& cam, const WorldStyle& st, const
                                                 : fmt::format("{:g} cm", std::round(x * 1000.0) / 10.0);
         const float tw = font.text_width(label, st.scale_font);
         const Px under = P(x, -band_m - 6.0 * st.unit / cam.px_per_m);
+        // A label that would be cut at the picture's edge (the close-up's bottom, the view's side)
+        // is left out: a whole label or none, never "0." or "1.5" of "1.5 m".
+        const PxRect box{under.x - tw / 2.0f, under.y, tw, font.line_height(st.scale_font)};
+        if (box.x < st.visible.x || box.y < st.visible.y || box.x + box.width > st.visible.x + st.visible.width ||
+            box.y + box.height > st.visible.y + st.visible.height)
+            continue;
         font.layout(label, st.scale_font, {under.x - tw / 2.0f, under.y + font.ascent(st.scale_font)},
                     palette::scale_text, out.glyphs);
     }
@@ -89,8 +95,8 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
         out.triangles.push_back({inner[0], inner[i], inner[i + 1], palette::shell_inside, Tag::shell_inside});
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
-        out.triangles.push_back({inner[i], outer[i], outer[j], palette::shell_wall, Tag::shell_wall});
-        out.triangles.push_back({inner[i], outer[j], inner[j], palette::shell_wall, Tag::shell_wall});
+        out.triangles.push_back({inner[i], outer[i], outer[j], st.shell_wall, Tag::shell_wall});
+        out.triangles.push_back({inner[i], outer[j], inner[j], st.shell_wall, Tag::shell_wall});
     }
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
