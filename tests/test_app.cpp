@@ -17,6 +17,7 @@
 #include "app/lane_set.h"
 #include "app/plot_data.h"
 #include "app/readouts.h"
+#include "sim/scene_names.h"
 #include "app/sandbox_presets.h"
 #include "app/sandbox_settings.h"
 #include "app/sandbox_state.h"
@@ -582,6 +583,24 @@ TEST_CASE("readouts say what is known, in SI units", "[app]") {
     CHECK(r.distance == "2.400 m");
     CHECK(r.terminal == "0.610 m/s");
     CHECK(r.behaviour == "rolled to the end");
+}
+
+TEST_CASE("the model row names the model or what auto chose and when it handed over", "[app]") {
+    const Scene s = test::scene_with(json::parse(R"({"fill": {"ratio": 0.0}})"));
+    CHECK(lane_readout(s, Measurements{}, 0.0).model == to_string(s.run.model));
+    CHECK(lane_readout(s, Measurements{}, 0.0).model_reason.empty());
+    ModelChoice c;
+    c.model = Model::rigid;
+    c.then = Model::grains;
+    c.reason = "empty shell";
+    LaneReadout r = lane_readout(s, Measurements{}, 0.2, &c);
+    CHECK(r.model == "auto: rigid until lift-off");
+    CHECK(r.model_reason == "empty shell");
+    c.hand_over_time_s = 0.412;
+    CHECK(lane_readout(s, Measurements{}, 0.5, &c).model == "auto: grains from 0.41 s");
+    ModelChoice filled;
+    filled.model = Model::grains;
+    CHECK(model_label(s, &filled) == "auto: grains");
 }
 
 TEST_CASE("the status line makes one speed statement: the chosen rate, or what the computer reaches", "[app]") {

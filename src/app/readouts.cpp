@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "render/overlay.h"
+#include "sim/scene_names.h"
 
 namespace polyroll::app {
 
@@ -22,7 +23,17 @@ std::string behaviour_label(Behaviour b) {
     return "unknown";
 }
 
-LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s) {
+std::string model_label(const Scene& scene, const ModelChoice* choice) {
+    if (!choice) return to_string(scene.run.model);
+    if (!choice->then) return "auto: " + to_string(choice->model);
+    // The hand-over is the moment the first model's validity check would fail (lift-off): say
+    // which model runs now, and since when.
+    if (choice->hand_over_time_s)
+        return fmt::format("auto: {} from {:.2f} s", to_string(*choice->then), *choice->hand_over_time_s);
+    return fmt::format("auto: {} until lift-off", to_string(choice->model));
+}
+
+LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s, const ModelChoice* choice) {
     LaneReadout r;
     const std::string fill = scene.fill.ratio > 0.0
                                  ? fmt::format("r = {:g} {}", scene.fill.ratio, render::material_label(scene.fill.material.preset))
@@ -41,6 +52,8 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
     const bool ended = m.behaviour != Behaviour::running;
     r.distance = ended ? fmt::format("{:.3f} m", m.distance_m) : std::string("-");
     r.terminal = m.terminal_velocity_m_s ? fmt::format("{:.3f} m/s", *m.terminal_velocity_m_s) : std::string("-");
+    r.model = model_label(scene, choice);
+    r.model_reason = choice ? choice->reason : std::string();
     return r;
 }
 

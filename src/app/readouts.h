@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "sim/measurements.h"
+#include "sim/model_choice.h"
 #include "sim/scene.h"
 
 namespace polyroll::app {
@@ -22,12 +23,19 @@ struct LaneReadout {
     std::string behaviour;  // "rolling", "stopped", ...
     std::string distance;   // "-" until known
     std::string terminal;   // "-" unless it rolled to the end
+    std::string model;      // "grains", or what auto chose: "auto: rigid until lift-off", "auto: grains from 0.41 s"
+    std::string model_reason;  // auto's reason (its tooltip); empty for a model the user named
 };
 
 // How the panel names a behaviour ("stopped at 1st impact", "rolled to the end", ...).
 std::string behaviour_label(Behaviour b);
 
-LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s);
+// `choice`: what `--model auto` chose for the lane (ModelRun::model_choice), null for a named model.
+LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s,
+                         const ModelChoice* choice = nullptr);
+
+// The model row: the model named, or auto's choice as it stands at this moment of the run.
+std::string model_label(const Scene& scene, const ModelChoice* choice);
 
 // The status line's one statement of how fast the run plays (issue 16 row 9): the chosen rate
 // ("real time", "1/4\u00D7 slow motion (4\u00D7 slower)") while the computer keeps up, else the rate it

@@ -543,11 +543,12 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     const float fs = ImGui::GetFontSize();
     std::vector<LaneReadout> r;
     for (size_t i = 0; i < lanes.size(); ++i)
-        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s()));
+        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s(),
+                                 lanes.lane(i).model_choice()));
     // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
     // 60% of the width; past that its cells wrap rather than cut their text.
     const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
-                                             "behaviour", "distance", "terminal v"};
+                                             "behaviour", "distance", "terminal v", "model"};
     const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
     float needed_w = 0;
     for (const std::string& l : labels) needed_w = std::max(needed_w, ImGui::CalcTextSize(l.c_str()).x);
@@ -555,7 +556,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     for (const LaneReadout& lr : r) {
         float w = fs * 2.0f;
         for (const std::string* f : {&lr.polygon, &lr.fill, &lr.position, &lr.speed, &lr.impacts, &lr.behaviour,
-                                     &lr.distance, &lr.terminal})
+                                     &lr.distance, &lr.terminal, &lr.model})
             w = std::max(w, ImGui::CalcTextSize(f->c_str()).x);
         needed_w += w + cell_pad;
     }
@@ -594,6 +595,8 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (table_fits) ImGui::TextUnformatted((r[i].*field).c_str());
                 else ImGui::TextWrapped("%s", (r[i].*field).c_str());
+                // auto's reason under the pointer, on the lane's model entry.
+                if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason.c_str());
             }
         };
         row("polygon", &LaneReadout::polygon, "The number of sides n.");
@@ -606,6 +609,9 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         row("distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended).");
         row("terminal v", &LaneReadout::terminal,
             "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
+        row("model", &LaneReadout::model,
+            "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty shell, "
+            "handing over to Box2D at lift-off; grains for a filled one. Hover a lane's entry for its reason.");
         ImGui::EndTable();
     }
     ImGui::EndChild();

@@ -30,6 +30,7 @@ public:
 
     // hand_over_time_s is set once the hand-over has happened.
     const ModelChoice& choice() const { return choice_; }
+    const ModelChoice* model_choice() const override { return &choice_; }
 
 private:
     void hand_over_if_due();

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "sim/measurements.h"
+#include "sim/model_choice.h"
 #include "sim/run_result.h"
 #include "sim/run_snapshot.h"
 #include "sim/scene.h"
@@ -40,6 +41,8 @@ public:
     virtual int grains() const = 0;
     // The state another model continues from (registry: continue_run).
     virtual HandOver hand_over() const = 0;
+    // What `--model auto` chose and why (AutoRun); empty for a model the user named.
+    virtual const ModelChoice* model_choice() const { return nullptr; }
     // Steps to the end (a model that knows its whole run may jump there).
     virtual void run_to_end() {
         while (step()) {
