@@ -1,7 +1,9 @@
 // Scene flags on the command line: see scene_options.h.
 #include "cli/scene_options.h"
 
+#include <charconv>
 #include <cstdint>
+#include <system_error>
 #include <type_traits>
 
 #include "sim/scene_fields.h"
@@ -17,12 +19,16 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
     // The value lives on the heap so the flag's reader stays valid however flags_ grows.
     auto value = std::make_shared<T>();
     CLI::Option* o = app.add_option(name, *value, help)->group("Scene");
-    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1): refuse a sign.
+    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1) and clamps a
+    // number past 2^64-1 to 2^64-1: only digits that fit are a value.
     if constexpr (std::is_unsigned_v<T>)
         o->check(CLI::Validator(
             [](const std::string& text) {
-                return text.find('-') == std::string::npos ? std::string()
-                                                           : "must be a whole number from 0 to 2^64-1, got " + text;
+                T parsed = 0;
+                const char* end = text.data() + text.size();
+                const auto [ptr, error] = std::from_chars(text.data(), end, parsed);
+                return error == std::errc() && ptr == end ? std::string()
+                                                          : "must be a whole number from 0 to 2^64-1, got " + text;
             },
             "UINT"));
     flags_.push_back({o, field, [value] { return json(*value); }});
