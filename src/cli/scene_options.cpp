@@ -1,17 +1,42 @@
 // Scene flags on the command line: see scene_options.h.
 #include "cli/scene_options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <exception>
 #include <system_error>
 #include <type_traits>
 
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
+#include "sweep/grid_values.h"
 
 namespace polyroll::cli {
 
 using json = nlohmann::ordered_json;
+
+std::string default_note(const SceneField& f) {
+    static const json defaults = [] {
+        try {
+            return scene_to_json(resolve_scene({}));
+        } catch (const std::exception&) {
+            return json::object();
+        }
+    }();
+    // "a.b.c" -> defaults["a"]["b"]["c"]; a preset field is the section's "preset" key.
+    const json* node = &defaults;
+    const std::string path(f.path);
+    for (std::size_t start = 0; start <= path.size();) {
+        const std::size_t dot = std::min(path.find('.', start), path.size());
+        const std::string key = path.substr(start, dot - start);
+        if (!node->is_object() || !node->contains(key)) return "";
+        node = &node->at(key);
+        start = dot + 1;
+    }
+    if (node->is_null() || node->is_object()) return "";
+    return " (default: " + sweep::value_text(*node) + ")";
+}
 
 template <class T>
 void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::string& field,
@@ -30,7 +55,7 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
                 return error == std::errc() && ptr == end ? std::string()
                                                           : "must be a whole number from 0 to 2^64-1, got " + text;
             },
-            "UINT"));
+            ""));  // no description: help shows the type, UINT, once
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
 
@@ -42,7 +67,7 @@ void SceneOptions::add_to(CLI::App& app) {
     for (const SceneField& f : scene_fields())
         if (!f.flag.empty()) fields.push_back(&f);
     for (const SceneField* f : fields) {
-        const std::string name(f->flag), field(f->path), help = field_help(*f);
+        const std::string name(f->flag), field(f->path), help = field_help(*f) + default_note(*f);
         switch (f->type) {
             case FieldType::integer: add_flag<int>(app, name, field, help); break;
             case FieldType::number:

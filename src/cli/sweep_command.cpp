@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
+#include "cli/scene_options.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
@@ -42,7 +43,7 @@ std::vector<const SceneField*> axis_fields() {
 
 std::string axis_help(const SceneField& f) {
     const bool listed = f.type == FieldType::preset || f.type == FieldType::choice;
-    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step");
+    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step") + default_note(f);
 }
 
 struct SweepArgs {
