@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/message_text.h"
+#include "sim/scene_json.h"
+#include "sim/shell_label.h"
 
 namespace fs = std::filesystem;
 
@@ -213,4 +215,29 @@ TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli]
     CHECK(summary.at("results").at("behaviour") == "diverged");
     CHECK(summary.at("results").at("divergence").get<std::string>().find("finer fidelity") != std::string::npos);
     fs::remove_all(out);
+}
+
+TEST_CASE("the shell is named for what it is: --sides 8 on the small hexagon is an octagon", "[cli]") {
+    // The header and summary.json said "hexagon-small (n = 8)" (issue 16).
+    const fs::path out = scratch("octagon");
+    const Result r = run_polyroll("run --sides 8 --fill 0 --time-limit 0.01 --out " + out.string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("polyroll run: octagon (n = 8) with hexagon-small's size, walls and mass,") != std::string::npos);
+    CHECK(r.out.find("hexagon-small (n = 8)") == std::string::npos);
+    std::ifstream in(out / "summary.json");
+    const auto summary = nlohmann::json::parse(in);
+    CHECK(summary.at("shell").at("label") == "octagon (n = 8) with hexagon-small's size, walls and mass");
+    fs::remove_all(out);
+
+    using namespace polyroll;
+    auto label = [](const std::string& doc) { return shell_label(resolve_scene({parse_scene_text(doc, "t")})); };
+    CHECK(label("{}") == "hexagon-small (n = 6)");
+    CHECK(label(R"({"shell": "octagon-small"})") == "octagon-small (n = 8)");
+    CHECK(label(R"({"shell": {"sides": 3}})") == "triangle (n = 3) with hexagon-small's size, walls and mass");
+    CHECK(label(R"({"shell": {"preset": "hexagon-small", "sides": 8, "mass_kg": 0.05}})") ==
+          "custom octagon (n = 8), from hexagon-small");
+    CHECK(label(R"({"shell": {"preset": "octagon-small", "sides": 8}})") == "octagon-small (n = 8)");
+    CHECK(polygon_name(18) == "octadecagon");
+    CHECK(polygon_name(13) == "13-gon");
 }

@@ -10,6 +10,7 @@
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::cli {
 
@@ -30,8 +31,7 @@ std::string describe_scene(const RunResult& r) {
                               ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
                               : to_string(ran) + " model";
     if (r.model_choice) physics = "auto model, " + physics;
-    return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {}",
-                       s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
+    return fmt::format("{}, {} r = {:g}, {} at {:g} deg, released on a {}, {}", shell_label(s),
                        s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
                        s.fill.ratio, s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
                        to_string(s.release.pose), physics);
