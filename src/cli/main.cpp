@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     // `polyroll help run` is `polyroll run --help`.
     const std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc));
     std::vector<const char*> arg_pointers;
+    arg_pointers.reserve(args.size());
     for (const std::string& a : args) arg_pointers.push_back(a.c_str());
     try {
         app.parse(static_cast<int>(arg_pointers.size()), arg_pointers.data());

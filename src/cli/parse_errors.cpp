@@ -74,7 +74,7 @@ std::string unknown_command(const CLI::App& app, const std::vector<std::string>&
 }
 
 // CLI11 lists the arguments it did not expect last first ("red --colour" for --colour red).
-std::string unexpected(const CLI::App& sub, std::string list) {
+std::string unexpected(const CLI::App& sub, const std::string& list) {
     std::vector<std::string> items;
     for (std::size_t start = 0; start <= list.size();) {
         const std::size_t space = std::min(list.find(' ', start), list.size());
