@@ -84,6 +84,7 @@ TEST_CASE("a mistyped or missing command is named, with the closest one; polyrol
         {"frobnicate", "unknown command 'frobnicate' (allowed: run, presets,"},
         {"", "a command is required (allowed: run,"},
         {"--sides 6", "a command is required before '--sides'"},
+        {"help rnu", "unknown command 'rnu'; did you mean 'run'?"},
     };
     for (const Case& c : cases) {
         const Result r = run_polyroll(c.args);

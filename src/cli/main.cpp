@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     auto commands = add_all_commands(app);
     // `polyroll help run` is `polyroll run --help`.
-    const std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc));
+    const std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc), app);
     std::vector<const char*> arg_pointers;
     arg_pointers.reserve(args.size());
     for (const std::string& a : args) arg_pointers.push_back(a.c_str());

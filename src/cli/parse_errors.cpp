@@ -125,9 +125,11 @@ std::string reworded(const std::string& what, const CLI::App& sub) {
 
 }  // namespace
 
-std::vector<std::string> with_help_command(std::vector<std::string> args) {
+std::vector<std::string> with_help_command(std::vector<std::string> args, const CLI::App& app) {
     if (args.size() < 2 || args[1] != "help") return args;
     if (args.size() == 2) return {args[0], "--help"};
+    const std::vector<std::string> names = command_names(app);
+    if (std::find(names.begin(), names.end(), args[2]) == names.end()) return {args[0], args[2]};
     return {args[0], args[2], "--help"};
 }
 

@@ -10,9 +10,10 @@
 
 namespace polyroll::cli {
 
-// `polyroll help` and `polyroll help CMD` as `polyroll --help` and `polyroll CMD --help`; any other
-// argument list is returned unchanged. args[0] is the program name.
-std::vector<std::string> with_help_command(std::vector<std::string> args);
+// `polyroll help` and `polyroll help CMD` as `polyroll --help` and `polyroll CMD --help`; a CMD that
+// is not one of app's commands is left for the parser to refuse as an unknown command ("did you
+// mean"). Any other argument list is returned unchanged. args[0] is the program name.
+std::vector<std::string> with_help_command(std::vector<std::string> args, const CLI::App& app);
 
 // One line for a parse error of `app` (already parsed as far as it got), ending with where to read
 // more: "(see polyroll run --help)". args are the arguments given, without the program name.
