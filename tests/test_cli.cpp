@@ -72,7 +72,7 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
     }
 }
 
-TEST_CASE("a mistyped or missing command is named, with the closest one; polyroll help CMD is CMD --help",
+TEST_CASE("a mistyped or missing command is named with the closest one, and polyroll help CMD is CMD --help",
           "[cli][bad-input]") {
     struct Case {
         std::string args;

@@ -132,7 +132,7 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
     fs::remove_all(out);
 }
 
-TEST_CASE("sweep: the grid and its time echoed first; lists out of order run ascending; all failed exits 1",
+TEST_CASE("sweep: the grid and its time echoed first, lists out of order run ascending, all failed exits 1",
           "[sweep][cli]") {
     const fs::path out = scratch("echo");
     const Result r = shell(exe + " sweep --fill 0 --angle 12,5 --fidelity draft --time-limit 0.1 -q --jobs 1 --out " +
