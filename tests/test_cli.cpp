@@ -13,6 +13,10 @@
 #include <box2d/box2d.h>
 #include <nlohmann/json.hpp>
 
+#include "sim/message_text.h"
+#include "sim/scene_json.h"
+#include "sim/shell_label.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -49,8 +53,12 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
         {"--material gravel", {"gravel", "bb, rice, peas"}},
         {"--polygon square", {"square", "hexagon-small"}},
         {"--fidelity ultra", {"ultra", "draft"}},
-        {"--sides six", {"--sides", "six"}},
-        {"--bogus 1", {"--bogus"}},
+        {"--sides six", {"--sides six: not a whole number", "3 to 64", "see polyroll run --help"}},
+        {"--fill abc", {"--fill abc: not a number", "0 to 1"}},
+        {"--fill 0.5 --fill 0.6", {"--fill is given 2 times (allowed: once)"}},
+        {"--sides 6 8", {"unexpected value '8'"}},
+        {"--bogus 1", {"unknown flag '--bogus'", "see polyroll run --help"}},
+        {"--fil 0.3", {"unknown flag '--fil'; did you mean '--fill'?"}},
     };
     for (const Case& c : cases) {
         const Result r = run_polyroll("run " + c.args + " --out " + out.string());
@@ -58,8 +66,54 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
         CHECK(r.exit_code == 2);
         CHECK(line_count(r.out) == 1);
         for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
+        // CLI11's own wording is replaced by the program's (issue 16).
+        for (const char* cli11 : {"Could not convert", "At Most", "required but received", "not expected"})
+            CHECK(r.out.find(cli11) == std::string::npos);
         CHECK(!fs::exists(out));
     }
+}
+
+TEST_CASE("a mistyped or missing command is named with the closest one, and polyroll help CMD is CMD --help",
+          "[cli][bad-input]") {
+    struct Case {
+        std::string args;
+        std::string words;
+    };
+    const std::vector<Case> cases = {
+        {"rnu", "unknown command 'rnu'; did you mean 'run'?"},
+        {"swep --fill 0.5", "unknown command 'swep'; did you mean 'sweep'?"},
+        {"frobnicate", "unknown command 'frobnicate' (allowed: run, presets,"},
+        {"", "a command is required (allowed: run,"},
+        {"--sides 6", "a command is required before '--sides'"},
+        {"help rnu", "unknown command 'rnu'; did you mean 'run'?"},
+    };
+    for (const Case& c : cases) {
+        const Result r = run_polyroll(c.args);
+        INFO("polyroll " << c.args << " -> " << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(line_count(r.out) == 1);
+        CHECK(r.out.find(c.words) != std::string::npos);
+        CHECK(r.out.find("(see polyroll --help)") != std::string::npos);
+        CHECK(r.out.find("subcommand") == std::string::npos);
+    }
+    const Result help = run_polyroll("help run");
+    CHECK(help.exit_code == 0);
+    CHECK(help.out == run_polyroll("run --help").out);
+    CHECK(help.out.find("--sides INT") != std::string::npos);
+    // Defaults shown in help: assets/defaults.json's angle and fill.
+    CHECK(help.out.find("0 to 89 degrees (default: 20)") != std::string::npos);
+    CHECK(help.out.find("from 0 to 1 (default: 0.25)") != std::string::npos);
+    CHECK(run_polyroll("help").out == run_polyroll("--help").out);
+}
+
+TEST_CASE("the real-time factor keeps significant digits for slow runs", "[cli]") {
+    // A run at 0.4x real time printed "0x" (issue 16).
+    CHECK(polyroll::real_time_text(1.0, 4.0) == "0.25x real time");
+    CHECK(polyroll::real_time_text(1.0, 2.5) == "0.4x real time");
+    CHECK(polyroll::real_time_text(1.0, 1000.0) == "0.001x real time");
+    CHECK(polyroll::real_time_text(5.3, 1.0) == "5.3x real time");
+    CHECK(polyroll::real_time_text(120.4, 1.0) == "120x real time");
+    CHECK(polyroll::real_time_text(1.0, 0.0) == "too fast to time");
 }
 
 TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][bad-input]") {
@@ -76,7 +130,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
     const std::vector<Case> cases = {
         {"--scene " + (dir / "malformed.json").string() + " --out " + out.string(), "not valid JSON"},
         {"--scene " + (dir / "unknown.json").string() + " --out " + out.string(), "unknown key 'fill.colour'"},
-        {"--scene " + (dir / "missing.json").string() + " --out " + out.string(), "cannot be read"},
+        {"--scene " + (dir / "missing.json").string() + " --out " + out.string(), "cannot be read: no such file"},
         {"--scene " + dir.string() + " --out " + out.string(), "is a directory"},
         {"--out " + (dir / "a-file" / "out").string(), "cannot create the folder"},
         {"--out " + (dir / "a-file").string(), "not a folder"},
@@ -102,10 +156,13 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
 
 TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") {
     const fs::path out = scratch("good-run");
-    const Result r = run_polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string());
+    // A trailing slash, as shells complete folder names: the files line joins it as a path (issue 16).
+    const Result r = run_polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string() + "/");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("rolled_to_end") != std::string::npos);
+    CHECK(r.out.find((out / "summary.json").string() + ", trajectory.csv") != std::string::npos);
+    CHECK(r.out.find("//") == std::string::npos);
     std::ifstream in(out / "summary.json");
     const auto summary = nlohmann::json::parse(in);
     const auto& res = summary.at("results");
@@ -144,6 +201,10 @@ TEST_CASE("presets lists every bundled preset", "[cli]") {
     for (const char* name : {"hexagon-small", "octadecagon-small", "hexagon-large", "bb", "rice", "peas", "air-track",
                              "wooden", "draft", "standard", "precise", "reference"})
         CHECK(r.out.find(name) != std::string::npos);
+    CHECK(r.out.find("fidelity levels (assets/fidelity.json):") != std::string::npos);
+    CHECK(r.out.find("fidelitys") == std::string::npos);
+    // Notes quote the experiment, not a "brief" the user never saw (issue 16).
+    CHECK(run_polyroll("presets --json").out.find("brief") == std::string::npos);
 }
 
 TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli][divergence]") {
@@ -175,4 +236,29 @@ TEST_CASE("polyroll --version and polyroll-sandbox --version name the version, t
         CHECK(r.out.find("build type " POLYROLL_TEST_BUILD_TYPE) != std::string::npos);
     }
     CHECK(run_polyroll("--version").out.rfind("polyroll 0", 0) == 0);
+}
+
+TEST_CASE("the shell is named for what it is: --sides 8 on the small hexagon is an octagon", "[cli]") {
+    // The header and summary.json said "hexagon-small (n = 8)" (issue 16).
+    const fs::path out = scratch("octagon");
+    const Result r = run_polyroll("run --sides 8 --fill 0 --time-limit 0.01 --out " + out.string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("polyroll run: octagon (n = 8) with hexagon-small's size, walls and mass,") != std::string::npos);
+    CHECK(r.out.find("hexagon-small (n = 8)") == std::string::npos);
+    std::ifstream in(out / "summary.json");
+    const auto summary = nlohmann::json::parse(in);
+    CHECK(summary.at("shell").at("label") == "octagon (n = 8) with hexagon-small's size, walls and mass");
+    fs::remove_all(out);
+
+    using namespace polyroll;
+    auto label = [](const std::string& doc) { return shell_label(resolve_scene({parse_scene_text(doc, "t")})); };
+    CHECK(label("{}") == "hexagon-small (n = 6)");
+    CHECK(label(R"({"shell": "octagon-small"})") == "octagon-small (n = 8)");
+    CHECK(label(R"({"shell": {"sides": 3}})") == "triangle (n = 3) with hexagon-small's size, walls and mass");
+    CHECK(label(R"({"shell": {"preset": "hexagon-small", "sides": 8, "mass_kg": 0.05}})") ==
+          "custom octagon (n = 8), from hexagon-small");
+    CHECK(label(R"({"shell": {"preset": "octagon-small", "sides": 8}})") == "octagon-small (n = 8)");
+    CHECK(polygon_name(18) == "octadecagon");
+    CHECK(polygon_name(13) == "13-gon");
 }

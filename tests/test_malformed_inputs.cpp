@@ -103,11 +103,16 @@ TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, n
         {"flag-nan", "", "--angle nan", "ramp.angle_deg"},
         {"flag-infinity", "", "--fill inf", "fill.ratio"},
         {"flag-negative-seed", "", "--seed -1", "--seed"},
+        // CLI11 clamped a number past 2^64-1 to 2^64-1 and ran (issue 15).
+        {"flag-seed-past-2^64", "", "--seed 99999999999999999999", "0 to 2^64-1, got 99999999999999999999"},
+        {"flag-seed-2^64", "", "--seed 18446744073709551616", "--seed"},
+        {"flag-int-past-2^63", "", "--sides 99999999999999999999", "--sides 99999999999999999999: out of range"},
         {"flag-wrong-type", "", "--sides six", "--sides"},
         {"flag-non-utf8", "", "--model $(printf 'gr\\377ains')", "run.model"},
         {"flag-control-bytes", "", "--material \"$(printf 'bb\\033[2J\\nrice')\"", "material"},
         {"flag-unknown", "", "--colour red", "--colour"},
         {"scene-is-directory", "", "--scene " + dir.string(), "is a directory"},
+        {"scene-missing", "", "--scene " + (dir / "missing.json").string(), "no such file"},
         {"scene-endless", "", "--scene /dev/zero", "larger than"},
     };
     for (const Case& c : cases) {

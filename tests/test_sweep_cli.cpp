@@ -11,6 +11,10 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
+#include "sweep/sweep_plan.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -26,9 +30,10 @@ fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
 
-// A small grid: empty and lightly filled shells, two materials, one invalid angle, two seeds.
+// A small grid: empty and lightly filled shells, two materials, three angles, two seeds. (An invalid
+// point is refused before the sweep starts; failed rows are test_sweep.cpp's.)
 const std::string kGrid =
-    "--sides 6,8 --fill 0,0.125 --material bb,rice --angle 10,25,95 --seeds 2 --fidelity draft --ramp wooden "
+    "--sides 6,8 --fill 0,0.125 --material bb,rice --angle 10,25,40 --seeds 2 --fidelity draft --ramp wooden "
     "--time-limit 0.8 -q";
 
 }  // namespace
@@ -57,7 +62,6 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
     CHECK_THAT(merged.out, Catch::Contains("5 tables") && Catch::Contains("48 of 48 runs"));
     const std::string a = read_file(one / "results.csv"), b = read_file(big / "results.csv");
     CHECK(std::count(a.begin(), a.end(), '\n') == 49);
-    CHECK(a.find(",failed,") != std::string::npos);  // the 95-degree points, recorded not fatal
     CHECK(table_without_wall_time(a) == table_without_wall_time(b));
     // Each run's summary is there too, under its id.
     CHECK(std::distance(fs::directory_iterator(big / "runs"), fs::directory_iterator{}) ==
@@ -90,6 +94,14 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         {"--from " + out.string(), {out.string(), "no sweep plan"}},
         {"--fill 0.5 --from " + out.string(), {"not allowed with --from"}},
         {"--fill 0.5", {"exactly one of --out"}},
+        // Points no run could use are refused up front, not found afterwards as failed rows (issue 16).
+        {"--fill 25,50 --angle 14 --out " + out.string(), {"fill.ratio = 25 (from --fill)", "from 0 to 1", "2 of 2 runs"}},
+        {"--fill 0,5 --out " + out.string(), {"fill.ratio = 5", "1 of 2 runs"}},
+        {"--sides 6 --seed 99999999999999999999 --out " + out.string(), {"run.seed", "0 to 2^64-1"}},
+        // CLI11's words replaced by the program's, pointing at the command's help.
+        {"--jobs two --out " + out.string(), {"--jobs two: not a whole number", "see polyroll sweep --help"}},
+        {"--seeds 0 --out " + out.string(), {"--seeds 0 is out of range (allowed: 1 to 100000)"}},
+        {"--force --out " + out.string(), {"unknown flag '--force'"}},
     };
     for (const Case& c : cases) {
         const Result r = shell(exe + " sweep " + c.args);
@@ -99,6 +111,16 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         for (const auto& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
         CHECK_FALSE(fs::exists(out));
     }
+    // A non-empty folder that is no sweep: the message suggests what sweep has, not --force (issue 16).
+    fs::create_directories(out);
+    std::ofstream(out / "notes.txt") << "mine";
+    const Result full = shell(exe + " sweep --fill 0 --out " + out.string());
+    INFO(full.out);
+    CHECK(full.exit_code == 2);
+    CHECK_THAT(full.out, Catch::Contains("not empty") && Catch::Contains("a new or empty folder"));
+    CHECK_THAT(full.out, !Catch::Contains("--force"));
+    CHECK_FALSE(fs::exists(out / "plan.json"));
+    fs::remove_all(out);
     // A folder holding another sweep is not overwritten.
     REQUIRE(shell(exe + " sweep --sides 6 --fill 0 --out " + out.string() + " --plan-only").exit_code == 0);
     const std::string before = read_file(out / "plan.json");
@@ -107,5 +129,38 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds a different sweep"));
     CHECK(read_file(out / "plan.json") == before);
+    fs::remove_all(out);
+}
+
+TEST_CASE("sweep: the grid and its time echoed first, lists out of order run ascending, all failed exits 1",
+          "[sweep][cli]") {
+    const fs::path out = scratch("echo");
+    const Result r = shell(exe + " sweep --fill 0 --angle 12,5 --fidelity draft --time-limit 0.1 -q --jobs 1 --out " +
+                           out.string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const std::size_t grid = r.out.find("polyroll sweep: 2 runs:");
+    const std::size_t done = r.out.find("runs done in this session");
+    CHECK(grid != std::string::npos);
+    CHECK(grid < done);  // before running
+    CHECK_THAT(r.out, Catch::Contains("--angle 5, 12") && Catch::Contains("--angle 12,5 runs in ascending order"));
+    CHECK_THAT(r.out, Catch::Contains("estimated at most"));
+    const std::string table = read_file(out / "results.csv");
+    REQUIRE(table.find(",12,") != std::string::npos);
+    CHECK(table.find(",5,") < table.find(",12,"));
+    fs::remove_all(out);
+
+    // A plan whose points cannot run (written by another version, or edited): run from the folder, every run
+    // fails: exit 1 and the first reason on screen, not exit 0 and a table to open.
+    using namespace polyroll::sweep;
+    const SweepPlan plan = make_grid_plan(nlohmann::ordered_json::object(),
+                                          {SweepAxis{"fill.ratio", "--fill", {25, 50}}});
+    fs::create_directories(out);
+    write_plan(out, plan);
+    const Result failed = shell(exe + " sweep -q --jobs 1 --from " + out.string());
+    INFO(failed.out);
+    CHECK(failed.exit_code == 1);
+    CHECK_THAT(failed.out, Catch::Contains("first failure  invalid point: fill.ratio = 25"));
+    CHECK_THAT(failed.out, Catch::Contains("every run failed; the first: invalid point: fill.ratio = 25"));
     fs::remove_all(out);
 }

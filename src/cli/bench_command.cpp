@@ -14,6 +14,7 @@
 #include "sim/assets.h"
 #include "sim/bare_engine.h"
 #include "sim/model_registry.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::cli {
 
@@ -43,8 +44,8 @@ int bench(const BenchOptions& o) {
     }
     std::vector<std::string> presets = o.presets;
     if (presets.empty()) presets = assets::preset_names(assets::Kind::fidelity);
-    fmt::print("polyroll bench: {} (n = {}), {} r = {:g}, {} at {:g} deg; best of {} on one core\n",
-               base.shell.preset, base.shell.sides, base.fill.material.preset + ",", base.fill.ratio,
+    fmt::print("polyroll bench: {}, {} r = {:g}, {} at {:g} deg; best of {} on one core\n", shell_label(base),
+               base.fill.material.preset + ",", base.fill.ratio,
                base.ramp.preset, base.ramp.angle_deg, o.repeats);
     fmt::print("{:<10} {:>9} {:>7} {:>8} {:>9} {:>9} {:>9} {:>9} {:>9}  {}\n", "fidelity", "step_s", "grains",
                "sim_s", "build_s", "run_s", "run_x_rt", "bare_x_rt", "overhead", "behaviour");

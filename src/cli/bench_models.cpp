@@ -9,6 +9,7 @@
 
 #include "sim/scene_json.h"
 #include "sim/model_registry.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::cli {
 
@@ -49,8 +50,8 @@ void bench_models(const Scene& base, int repeats, std::optional<double> grain_ru
     } else {
         g = time_model(grains, repeats, 0.0);
     }
-    fmt::print("\nreduced models: {} (n = {}), r = {:g}, at {:g} deg; grains at the {} fidelity; one core\n",
-               base.shell.preset, base.shell.sides, base.fill.ratio, base.ramp.angle_deg, base.fidelity.preset);
+    fmt::print("\nreduced models: {}, r = {:g}, at {:g} deg; grains at the {} fidelity; one core\n",
+               shell_label(base), base.fill.ratio, base.ramp.angle_deg, base.fidelity.preset);
     fmt::print("{:<9} {:>12} {:>12} {:>8} {:>6} {:>12} {:>12} {:>10} {:>12}  {}\n", "model", "best_run_s", "mean_run_s",
                "sim_s", "faces", "best_face_s", "wall_per_sim", "speed_up", "speed_up_sim", "behaviour");
     auto row = [&](const char* name, const Timing& t) {

@@ -15,6 +15,7 @@
 #include "sim/results_io.h"
 #include "sim/model_registry.h"
 #include "sim/scene_json.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::cli {
 
@@ -55,8 +56,7 @@ std::string speed_csv(const std::vector<RunResult>& runs) {
 void print_table(const std::vector<RunResult>& runs) {
     const RunResult& ref = runs.front();
     const Scene& s = ref.scene;
-    fmt::print("polyroll compare: {} (n = {}), {} r = {:g}, {} at {:g} deg, {} fidelity for grains\n",
-               s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
+    fmt::print("polyroll compare: {}, {} r = {:g}, {} at {:g} deg, {} fidelity for grains\n", shell_label(s),
                s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",", s.fill.ratio,
                s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
                s.fidelity.preset.empty() ? "custom" : s.fidelity.preset);

@@ -2,10 +2,13 @@
 // never opens a window. Only rendering creates a GL context (OSMesa, offscreen); a data run has none.
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/command_table.h"
+#include "cli/parse_errors.h"
 #include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
@@ -17,8 +20,13 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", polyroll::version_text("polyroll"), "print the version, Box2D's and the build type");
     auto commands = add_all_commands(app);
+    // `polyroll help run` is `polyroll run --help`.
+    const std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc), app);
+    std::vector<const char*> arg_pointers;
+    arg_pointers.reserve(args.size());
+    for (const std::string& a : args) arg_pointers.push_back(a.c_str());
     try {
-        app.parse(argc, argv);
+        app.parse(static_cast<int>(arg_pointers.size()), arg_pointers.data());
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
@@ -26,8 +34,9 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        // One line naming the bad flag or value; usage is one --help away.
-        fmt::print(stderr, "polyroll: {} (see polyroll --help)\n", polyroll::printable_line(e.what()));
+        // One line naming the bad flag or value, in the program's words; usage is one --help away.
+        const std::vector<std::string> given(args.begin() + 1, args.end());
+        fmt::print(stderr, "polyroll: {}\n", polyroll::printable_line(parse_error_text(e, app, given)));
         return kExitBadInput;
     }
     try {

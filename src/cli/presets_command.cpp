@@ -1,5 +1,8 @@
 // polyroll presets: the bundled polygons, materials, ramps and fidelity levels, from assets/ (or the
 // folder POLYROLL_ASSETS names).
+#include <string>
+#include <string_view>
+
 #include <fmt/format.h>
 
 #include "cli/commands.h"
@@ -28,7 +31,10 @@ int list(bool as_json) {
     if (const auto dir = assets::directory(); !dir.empty())
         fmt::print("{}={}: its asset files replace the bundled ones\n\n", assets::kDirectoryVariable, dir.string());
     for (Kind k : kinds) {
-        fmt::print("{}s (assets/{}):\n", assets::kind_label(k), assets::kind_file(k));
+        // Plural by hand: "fidelitys" is not a word.
+        const std::string_view label = assets::kind_label(k);
+        fmt::print("{} (assets/{}):\n", label == "fidelity" ? std::string("fidelity levels") : std::string(label) + "s",
+                   assets::kind_file(k));
         for (const std::string& name : assets::preset_names(k)) {
             const auto& entry = assets::preset_entry(k, name);
             fmt::print("  {:<18} {}\n", name, entry.at("description").get<std::string>());

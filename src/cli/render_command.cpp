@@ -204,9 +204,10 @@ int render(const RenderOptions& o) {
     st.slow = o.slow;
     st.hold_s = o.hold_s;
 
-    fmt::print("polyroll render: n = {}, r = {:g} {}, theta = {:g} deg on the {}, {}x{} at {:g} fps{}{}\n",
+    fmt::print("polyroll render: n = {}, r = {:g} {}, theta = {:g} deg on {}, {}x{} at {:g} fps{}{}\n",
                scene.shell.sides, scene.fill.ratio, scene.fill.material.preset, scene.ramp.angle_deg,
-               scene.ramp.preset.empty() ? "custom ramp" : scene.ramp.preset, size.width, size.height, o.fps,
+               scene.ramp.preset.empty() ? "a custom ramp" : "the " + scene.ramp.preset + " ramp", size.width,
+               size.height, o.fps,
                o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");
     std::fflush(stdout);
     render::SequenceResult res;
@@ -233,7 +234,8 @@ int render(const RenderOptions& o) {
                m.end_time_s, m.distance_m, m.impacts.size(), m.impacts.size() == 1 ? "" : "s");
     fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
                res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
-    fmt::print("  files      {}/summary.json, trajectory.csv, impacts.csv\n", o.out);
+    // Joined as paths: --out frames/ must not print frames//summary.json.
+    fmt::print("  files      {}, trajectory.csv, impacts.csv\n", (fs::path(o.out) / "summary.json").string());
     std::fflush(stdout);
 
     int code = m.behaviour == Behaviour::diverged ? kExitDiverged : kExitOk;

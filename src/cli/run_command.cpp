@@ -6,9 +6,11 @@
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
+#include "sim/message_text.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::cli {
 
@@ -29,8 +31,7 @@ std::string describe_scene(const RunResult& r) {
                               ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
                               : to_string(ran) + " model";
     if (r.model_choice) physics = "auto model, " + physics;
-    return fmt::format("{} (n = {}), {} r = {:g}, {} at {:g} deg, released on a {}, {}",
-                       s.shell.preset.empty() ? "custom shell" : s.shell.preset, s.shell.sides,
+    return fmt::format("{}, {} r = {:g}, {} at {:g} deg, released on a {}, {}", shell_label(s),
                        s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
                        s.fill.ratio, s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
                        to_string(s.release.pose), physics);
@@ -68,9 +69,8 @@ void print_summary(const RunResult& r, const std::string& out) {
     else
         fmt::print("  face impacts       {} (mean kinetic energy ratio {:.3f})\n", m.impacts.size(),
                    mean_impact_ratio(m));
-    const double rtf = r.wall_time_s > 0 ? m.end_time_s / r.wall_time_s : 0.0;
-    fmt::print("  time               {:.3f} s simulated in {:.3g} s ({:.0f}x real time)\n", m.end_time_s,
-               r.wall_time_s, rtf);
+    fmt::print("  time               {:.3f} s simulated in {:.3g} s ({})\n", m.end_time_s,
+               r.wall_time_s, real_time_text(m.end_time_s, r.wall_time_s));
     if (r.grains > 0)
         fmt::print("  grains             {} ({} inside at the end), fill mass {:.4f} kg\n", r.grains, m.grains_inside,
                    r.fill_mass_kg);
@@ -79,7 +79,10 @@ void print_summary(const RunResult& r, const std::string& out) {
                    model_traits(model_that_ran(r)).fill_description, to_string(model_that_ran(r)));
     else
         fmt::print("  grains             none (empty shell)\n");
-    if (!out.empty()) fmt::print("  files              {}/summary.json, trajectory.csv, impacts.csv\n", out);
+    // Joined as paths: --out runs/a/ must not print runs/a//summary.json.
+    if (!out.empty())
+        fmt::print("  files              {}, trajectory.csv, impacts.csv\n",
+                   (std::filesystem::path(out) / "summary.json").string());
 }
 
 int run(const RunOptions& o) {

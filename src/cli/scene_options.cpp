@@ -1,15 +1,42 @@
 // Scene flags on the command line: see scene_options.h.
 #include "cli/scene_options.h"
 
+#include <algorithm>
+#include <charconv>
 #include <cstdint>
+#include <exception>
+#include <system_error>
 #include <type_traits>
 
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
+#include "sweep/grid_values.h"
 
 namespace polyroll::cli {
 
 using json = nlohmann::ordered_json;
+
+std::string default_note(const SceneField& f) {
+    static const json defaults = [] {
+        try {
+            return scene_to_json(resolve_scene({}));
+        } catch (const std::exception&) {
+            return json::object();
+        }
+    }();
+    // "a.b.c" -> defaults["a"]["b"]["c"]; a preset field is the section's "preset" key.
+    const json* node = &defaults;
+    const std::string path(f.path);
+    for (std::size_t start = 0; start <= path.size();) {
+        const std::size_t dot = std::min(path.find('.', start), path.size());
+        const std::string key = path.substr(start, dot - start);
+        if (!node->is_object() || !node->contains(key)) return "";
+        node = &node->at(key);
+        start = dot + 1;
+    }
+    if (node->is_null() || node->is_object()) return "";
+    return " (default: " + sweep::value_text(*node) + ")";
+}
 
 template <class T>
 void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::string& field,
@@ -17,14 +44,18 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
     // The value lives on the heap so the flag's reader stays valid however flags_ grows.
     auto value = std::make_shared<T>();
     CLI::Option* o = app.add_option(name, *value, help)->group("Scene");
-    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1): refuse a sign.
+    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1) and clamps a
+    // number past 2^64-1 to 2^64-1: only digits that fit are a value.
     if constexpr (std::is_unsigned_v<T>)
         o->check(CLI::Validator(
             [](const std::string& text) {
-                return text.find('-') == std::string::npos ? std::string()
-                                                           : "must be a whole number from 0 to 2^64-1, got " + text;
+                T parsed = 0;
+                const char* end = text.data() + text.size();
+                const auto [ptr, error] = std::from_chars(text.data(), end, parsed);
+                return error == std::errc() && ptr == end ? std::string()
+                                                          : "must be a whole number from 0 to 2^64-1, got " + text;
             },
-            "UINT"));
+            ""));  // no description: help shows the type, UINT, once
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
 
@@ -36,7 +67,7 @@ void SceneOptions::add_to(CLI::App& app) {
     for (const SceneField& f : scene_fields())
         if (!f.flag.empty()) fields.push_back(&f);
     for (const SceneField* f : fields) {
-        const std::string name(f->flag), field(f->path), help = field_help(*f);
+        const std::string name(f->flag), field(f->path), help = field_help(*f) + default_note(*f);
         switch (f->type) {
             case FieldType::integer: add_flag<int>(app, name, field, help); break;
             case FieldType::number:

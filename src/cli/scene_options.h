@@ -12,8 +12,13 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/scene.h"
+#include "sim/scene_fields.h"
 
 namespace polyroll::cli {
+
+// The field's value in the default scene (assets/defaults.json) as help shows it: "(default: 20)";
+// "" when it has none or the assets cannot be read while help is set up (the command reports that).
+std::string default_note(const SceneField& f);
 
 class SceneOptions {
 public:

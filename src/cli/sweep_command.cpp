@@ -10,13 +10,16 @@
 
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
+#include "cli/scene_options.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
 #include "sweep/progress.h"
+#include "sweep/run_cost.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_runner.h"
 
@@ -42,7 +45,7 @@ std::vector<const SceneField*> axis_fields() {
 
 std::string axis_help(const SceneField& f) {
     const bool listed = f.type == FieldType::preset || f.type == FieldType::choice;
-    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step");
+    return field_help(f) + (listed ? "; one or a list" : "; a list or start:stop:step") + default_note(f);
 }
 
 struct SweepArgs {
@@ -58,7 +61,19 @@ struct SweepArgs {
 };
 
 
-sweep::SweepPlan plan_from_args(const SweepArgs& a) {
+// A list of numbers given out of order ("--angle 12,5") runs in ascending order, so the table and the
+// figures read in order; the echo says so. Lists of names keep the order given.
+std::vector<json> ascending(const std::string& flag, const std::string& text, std::vector<json> values,
+                            std::vector<std::string>& notes) {
+    const bool numbers = std::all_of(values.begin(), values.end(), [](const json& v) { return v.is_number(); });
+    const auto less = [](const json& x, const json& y) { return x.get<double>() < y.get<double>(); };
+    if (!numbers || std::is_sorted(values.begin(), values.end(), less)) return values;
+    std::stable_sort(values.begin(), values.end(), less);
+    notes.push_back(fmt::format("{} {} runs in ascending order", flag, text));
+    return values;
+}
+
+sweep::SweepPlan plan_from_args(const SweepArgs& a, std::vector<std::string>& notes) {
     json base = json::object();
     if (!a.scene_file.empty()) base = read_scene_file(a.scene_file).doc;
     resolve_scene({SceneLayer{base, a.scene_file.empty() ? "defaults" : a.scene_file, {}}});  // a bad base fails now
@@ -67,7 +82,8 @@ sweep::SweepPlan plan_from_args(const SweepArgs& a) {
         const std::string name(f->flag);
         const auto it = a.axis_text.find(name);
         if (it == a.axis_text.end()) continue;
-        axes.push_back({std::string(f->path), name, sweep::parse_grid_values(name, it->second)});
+        axes.push_back({std::string(f->path), name,
+                        ascending(name, it->second, sweep::parse_grid_values(name, it->second), notes)});
     }
     for (const std::string& s : a.sets) {
         const auto eq = s.find('=');
@@ -78,7 +94,7 @@ sweep::SweepPlan plan_from_args(const SweepArgs& a) {
         sweep::check_scene_field(field, flag);
         if (field == "run.seed")
             throw InputError("--set run.seed: use --seed LIST or --seeds N for seeds");
-        axes.push_back({field, flag, sweep::parse_grid_values(flag, s.substr(eq + 1))});
+        axes.push_back({field, flag, ascending(flag, s.substr(eq + 1), sweep::parse_grid_values(flag, s.substr(eq + 1)), notes)});
     }
     if (!a.seed_list.empty() && a.seeds > 0)
         throw InputError("--seed and --seeds are both given (allowed: one: --seed 1,5,9 or --seeds 3 for 1,2,3)");
@@ -92,6 +108,57 @@ sweep::SweepPlan plan_from_args(const SweepArgs& a) {
     return sweep::make_grid_plan(base, axes);
 }
 
+// Every point resolved before anything runs: how many no run could use (and the first one's
+// reason), and what the valid ones cost at most.
+struct GridCheck {
+    std::size_t invalid = 0;
+    std::string first_invalid;
+    double max_cost_s = 0.0;
+};
+
+GridCheck check_grid(const sweep::SweepPlan& plan) {
+    GridCheck c;
+    for (const sweep::PlannedRun& run : plan.runs) {
+        try {
+            c.max_cost_s += sweep::max_run_seconds(resolve_scene(sweep::run_layers(plan, run)));
+        } catch (const InputError& e) {
+            if (c.invalid++ == 0) c.first_invalid = e.what();
+        }
+    }
+    return c;
+}
+
+std::string duration_text(double s) {
+    if (s < 60.0) return fmt::format("{:.0f} s", std::max(s, 1.0));
+    if (s < 3600.0) return fmt::format("{:.0f} min", s / 60.0);
+    return fmt::format("{:.1f} h", s / 3600.0);
+}
+
+// The grid as planned, each axis with its values in run order, and the cost, before any run starts.
+void print_grid(const sweep::SweepPlan& plan, const GridCheck& c, int jobs, const std::vector<std::string>& notes) {
+    std::string axes;
+    for (std::size_t i = 0; i < plan.fields.size(); ++i) {
+        std::vector<std::string> values;
+        for (const sweep::PlannedRun& run : plan.runs) {
+            const std::string v = sweep::value_text(run.point.at(plan.fields[i]));
+            if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+        }
+        std::string listed;
+        for (std::size_t k = 0; k < values.size() && k < 8; ++k) listed += (k ? ", " : "") + values[k];
+        if (values.size() > 8) listed += fmt::format(", ... ({} values)", values.size());
+        axes += fmt::format("{}{} {}", axes.empty() ? "" : " x ", i < plan.flags.size() ? plan.flags[i] : plan.fields[i],
+                            listed);
+    }
+    fmt::print("polyroll sweep: {} run{}: {}\n", plan.runs.size(), plan.runs.size() == 1 ? "" : "s",
+               axes.empty() ? "the base scene only" : axes);
+    for (const std::string& n : notes) fmt::print("  note: {}\n", n);
+    if (c.invalid > 0)
+        fmt::print("  note: {} of them cannot run and will be failed rows; the first: {}\n", c.invalid, c.first_invalid);
+    fmt::print("  estimated at most {} with {} job{} (each run to its time limit; runs that stop sooner take less)\n",
+               duration_text(c.max_cost_s / std::max(1, jobs)), jobs, jobs == 1 ? "" : "s");
+    std::fflush(stdout);
+}
+
 void print_report(const sweep::SweepReport& r, int jobs) {
     const double per_min = r.wall_time_s > 0 ? 60.0 * static_cast<double>(r.ran) / r.wall_time_s : 0.0;
     fmt::print("polyroll sweep: {} of {} runs done in this session ({} failed), {} found done before; {} with {} "
@@ -101,6 +168,7 @@ void print_report(const sweep::SweepReport& r, int jobs) {
                jobs,
                jobs == 1 ? "" : "s", per_min);
     fmt::print("  table  {}\n", r.table.string());
+    if (r.failed > 0) fmt::print("  first failure  {}\n", r.first_failure);
     if (r.interrupted) fmt::print("  interrupted: run the same command again to resume\n");
 }
 
@@ -138,9 +206,18 @@ int run(const SweepArgs& a) {
 
     fs::path dir;
     sweep::SweepPlan plan;
+    const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::string> notes;
+    GridCheck check;
     if (!a.out.empty()) {
         dir = a.out;
-        plan = plan_from_args(a);
+        plan = plan_from_args(a, notes);
+        // A point no run could use (--fill 25) is refused before anything is written, not found
+        // after the sweep as a table of failed rows (issue 16).
+        check = check_grid(plan);
+        if (check.invalid > 0)
+            throw InputError(fmt::format("sweep: {}; {} of {} runs cannot run, so none was started", check.first_invalid,
+                                         check.invalid, plan.runs.size()));
         std::error_code ec;
         if (fs::exists(sweep::plan_path(dir), ec)) {
             // Resuming: the folder's plan must be this command's.
@@ -150,9 +227,11 @@ int run(const SweepArgs& a) {
                                              "command {}); allowed: a new folder, or the same command to resume",
                                              a.out, existing.runs.size(), plan.runs.size()));
         } else {
-            prepare_output_dir(dir, false);
+            prepare_output_dir(dir, false,
+                               "allowed: a new or empty folder, or the folder of this same sweep to resume it");
             sweep::write_plan(dir, plan);
         }
+        print_grid(plan, check, jobs, notes);
         if (a.plan_only) {
             fmt::print("polyroll sweep: plan of {} runs written to {}\n", plan.runs.size(),
                        sweep::plan_path(dir).string());
@@ -163,11 +242,13 @@ int run(const SweepArgs& a) {
     } else {
         dir = a.from;
         plan = sweep::read_plan(dir);
+        check = check_grid(plan);
+        print_grid(plan, check, jobs, notes);
     }
 
     sweep::SweepOptions o;
     o.dir = dir;
-    o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    o.jobs = jobs;
     o.shard = shard;
     o.trajectories = a.trajectories;
     o.retry_failed = a.retry_failed;
@@ -175,7 +256,12 @@ int run(const SweepArgs& a) {
 
     const sweep::SweepReport r = run_sweep_interruptibly(plan, o, "polyroll sweep");
     print_report(r, o.jobs);
-    return r.interrupted ? kExitInterrupted : kExitOk;
+    if (r.interrupted) return kExitInterrupted;
+    if (r.ran > 0 && r.failed == r.ran) {
+        fmt::print(stderr, "polyroll sweep: every run failed; the first: {}\n", printable_line(r.first_failure));
+        return kExitFailure;
+    }
+    return kExitOk;
 }
 
 }  // namespace
@@ -190,8 +276,10 @@ Action add_sweep_command(CLI::App& app) {
         "  polyroll sweep ... --out sweeps/big --plan-only     # write the plan, run nothing\n"
         "  polyroll sweep --from sweeps/big --shard 3/16      # one slice of it\n"
         "  polyroll sweep --merge sweeps/big                  # combine the slices into results.csv\n"
-        "The same command resumes an interrupted sweep. Exit codes: 0 done (failed runs are rows of the table),\n"
-        "2 bad input, 130 interrupted (resume with the same command), 1 other failure or --merge with runs missing.");
+        "Numbers listed out of order run in ascending order. Points that cannot run (--fill 25) are refused before\n"
+        "anything is written. The same command resumes an interrupted sweep. Exit codes: 0 done (failed runs are\n"
+        "rows of the table), 2 bad input, 130 interrupted (resume with the same command), 1 every run failed, another\n"
+        "failure, or --merge with runs missing.");
     a->scene_options.push_back(
         sub->add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid")->group("Grid"));
     for (const SceneField* f : axis_fields()) {

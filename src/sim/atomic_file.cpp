@@ -62,7 +62,7 @@ void remove_stale_temporaries(const fs::path& dir) {
 
 }  // namespace
 
-std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
+std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force, std::string_view remedy) {
     std::error_code ec;
     std::optional<fs::path> created;
     if (fs::exists(dir, ec)) {
@@ -70,9 +70,7 @@ std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force) {
             throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
         remove_stale_temporaries(dir);
         if (!force && !fs::is_empty(dir, ec))
-            throw InputError(fmt::format("--out {}: folder exists and is not empty (use --force to overwrite "
-                                         "its files, or choose a new folder)",
-                                         dir.string()));
+            throw InputError(fmt::format("--out {}: folder exists and is not empty ({})", dir.string(), remedy));
     } else {
         // The first missing ancestor is what to remove if the run fails.
         fs::path top = fs::absolute(dir, ec).lexically_normal();

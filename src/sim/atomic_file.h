@@ -20,7 +20,10 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 // Makes `dir` ready for a run's files before any work is done, so a bad folder fails at once.
 // Refuses a non-empty folder unless `force`; checks that files can be created in it; removes the
 // temporaries of killed writers (write_file_atomic's, whose process is gone). Returns the
-// topmost folder it created, if any, for the caller to remove if the run fails. Throws InputError.
-std::optional<std::filesystem::path> prepare_output_dir(const std::filesystem::path& dir, bool force);
+// topmost folder it created, if any, for the caller to remove if the run fails. Throws InputError;
+// for a non-empty folder its message ends with `remedy`, which a command without --force changes.
+inline constexpr std::string_view kForceRemedy = "use --force to overwrite its files, or choose a new folder";
+std::optional<std::filesystem::path> prepare_output_dir(const std::filesystem::path& dir, bool force,
+                                                        std::string_view remedy = kForceRemedy);
 
 }  // namespace polyroll

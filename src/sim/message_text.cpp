@@ -1,6 +1,9 @@
 // One printable line from any bytes: see message_text.h.
 #include "sim/message_text.h"
 
+#include <cctype>
+#include <system_error>
+
 #include <fmt/format.h>
 
 namespace polyroll {
@@ -46,6 +49,20 @@ std::string printable_line(std::string_view text) {
         }
     }
     return out;
+}
+
+std::string open_failure_reason(int error_number) {
+    if (error_number == 0) return "cannot be read";
+    std::string reason = std::generic_category().message(error_number);
+    // The C library's sentence case ("No such file or directory") reads oddly after a colon.
+    if (!reason.empty()) reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
+    return "cannot be read: " + reason;
+}
+
+std::string real_time_text(double simulated_s, double wall_s) {
+    if (wall_s <= 0.0) return "too fast to time";
+    const double factor = simulated_s / wall_s;
+    return factor >= 10.0 ? fmt::format("{:.0f}x real time", factor) : fmt::format("{:.2g}x real time", factor);
 }
 
 }  // namespace polyroll

@@ -11,4 +11,13 @@ namespace polyroll {
 // UTF-8 become \xNN escapes, so the result is one line of valid UTF-8 whatever the input.
 std::string printable_line(std::string_view text);
 
+// Why opening a file failed, from the errno the failed open left: "no such file or directory",
+// "permission denied"; "cannot be read" when the system gave no reason (errno 0).
+std::string open_failure_reason(int error_number);
+
+// How fast a run went against the wall clock: "120x real time", "5.3x real time", "0.25x real time".
+// Whole numbers hide nothing above 10x, but a run at 0.4x printed as "0x" (issue 16): below 10x, two
+// significant digits. "too fast to time" when the clock saw no time pass.
+std::string real_time_text(double simulated_s, double wall_s);
+
 }  // namespace polyroll

@@ -6,6 +6,7 @@
 #include "sim/atomic_file.h"
 #include "sim/model_registry.h"
 #include "sim/scene_json.h"
+#include "sim/shell_label.h"
 
 namespace polyroll {
 
@@ -53,6 +54,7 @@ json summary_json(const RunResult& r) {
     }
 
     json shell;
+    shell["label"] = shell_label(r.scene);  // what it is: a preset with other sides is no longer that preset
     shell["mass_kg"] = r.shell.mass_kg;
     shell["inertia_kg_m2"] = r.shell.inertia_kg_m2;
     shell["pivot_radius_m"] = r.shell.pivot_radius_m;

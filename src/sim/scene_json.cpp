@@ -2,6 +2,7 @@
 #include "sim/scene_json.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -252,8 +253,9 @@ SceneLayer read_scene_file(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw InputError(fmt::format("scene file {}: is a directory, expected a JSON file", name));
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("scene file {}: cannot be read", name));
+    if (!in) throw InputError(fmt::format("scene file {}: {}", name, open_failure_reason(errno)));
     // Read at most one byte past the cap, so an endless or huge file costs bounded memory and time.
     std::string text;
     char chunk[65536];

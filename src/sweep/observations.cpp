@@ -2,6 +2,7 @@
 #include "sweep/observations.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -297,10 +298,13 @@ ObservationFile read_observations(const std::string& path) {
         return parse_observations(assets::file("experiment.json"),
                                   is_replaced ? replaced.string() : "experiment.json (bundled)");
     }
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
+    const int open_error = errno;
     std::error_code ec;
     if (!in || std::filesystem::is_directory(path, ec))
-        throw InputError(fmt::format("--observations {}: cannot be read (allowed: an observations file, JSON)", path));
+        throw InputError(fmt::format("--observations {}: {} (allowed: an observations file, JSON)", path,
+                                     in ? "is a directory" : open_failure_reason(open_error)));
     std::string text(kMaxObservationFileBytes + 1, '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<std::size_t>(in.gcount()));

@@ -122,6 +122,8 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
     std::exception_ptr error;
     std::mutex error_mutex;
     std::atomic<bool> abort{false};
+    // The failed run first in the plan, whichever thread ran it: the same reason on every machine.
+    std::size_t first_failed_index = plan.runs.size();
     auto worker = [&] {
         for (;;) {
             if (abort || (stop && *stop)) return;
@@ -132,6 +134,13 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
                 const RunRecord rec = execute_run(plan, run, o.dir / "runs" / run.id, o.trajectories);
                 writer.append(table.row_line(run, rec));
                 progress.run_done(!rec.ok);
+                if (!rec.ok) {
+                    std::lock_guard<std::mutex> g(error_mutex);
+                    if (run.index < first_failed_index) {
+                        first_failed_index = run.index;
+                        report.first_failure = rec.reason;
+                    }
+                }
             } catch (...) {
                 // The table or a run's files could not be written: stop, keep what is safe.
                 std::lock_guard<std::mutex> g(error_mutex);

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <string>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -28,6 +29,7 @@ struct SweepReport {
     std::size_t already = 0;   // found finished in the folder's tables
     std::size_t ran = 0;       // finished in this session
     std::size_t failed = 0;    // of those
+    std::string first_failure;  // the reason of this session's failed run first in the plan, if any
     bool interrupted = false;  // stopped early by `stop`; rerunning resumes
     double wall_time_s = 0.0;
     std::filesystem::path table;

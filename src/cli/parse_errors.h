@@ -1,0 +1,25 @@
+// Command-line parse errors in polyroll's own words. CLI11 reports a bad flag as "Could not convert:
+// --fill = abc" or "At Most 1 required but received 2"; a user should read what was wrong, what is
+// allowed, and which command's --help to read, the way every other input error reads (issue 16).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace polyroll::cli {
+
+// `polyroll help` and `polyroll help CMD` as `polyroll --help` and `polyroll CMD --help`; a CMD that
+// is not one of app's commands is left for the parser to refuse as an unknown command ("did you
+// mean"). Any other argument list is returned unchanged. args[0] is the program name.
+std::vector<std::string> with_help_command(std::vector<std::string> args, const CLI::App& app);
+
+// One line for a parse error of `app` (already parsed as far as it got), ending with where to read
+// more: "(see polyroll run --help)". args are the arguments given, without the program name.
+std::string parse_error_text(const CLI::ParseError& e, const CLI::App& app, const std::vector<std::string>& args);
+
+// The closest of `names` to `typed` when close enough to be a typing slip ("rnu" -> "run"), else "".
+std::string closest_name(const std::string& typed, const std::vector<std::string>& names);
+
+}  // namespace polyroll::cli

@@ -1,0 +1,20 @@
+// The shell named for what it is. A polygon preset with --sides changed is no longer that preset:
+// `--sides 8` on hexagon-small printed "hexagon-small (n = 8)" (issue 16). The label says the shape
+// and where its other dimensions came from: "octagon (n = 8) with hexagon-small's size, walls and mass".
+#pragma once
+
+#include <string>
+
+#include "sim/scene.h"
+
+namespace polyroll {
+
+// "hexagon", "octagon", "octadecagon", ...; "n-gon" spelt with the number for the rest ("13-gon").
+std::string polygon_name(int sides);
+
+// "hexagon-small (n = 6)" when the shell is its preset's values; "octagon (n = 8) with
+// hexagon-small's size, walls and mass" when only the sides differ; "custom octagon (n = 8), from
+// hexagon-small" when more differs; "custom octagon (n = 8)" without a preset.
+std::string shell_label(const Scene& scene);
+
+}  // namespace polyroll
