@@ -596,7 +596,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
                 if (table_fits) ImGui::TextUnformatted((r[i].*field).c_str());
                 else ImGui::TextWrapped("%s", (r[i].*field).c_str());
                 // auto's reason under the pointer, on the lane's model entry.
-                if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason.c_str());
+                if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason);
             }
         };
         row("polygon", &LaneReadout::polygon, "The number of sides n.");
