@@ -132,6 +132,34 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
     fs::remove_all(out);
 }
 
+TEST_CASE("sweep: more values for the same flags extend a finished sweep and keep its runs", "[sweep][cli]") {
+    const fs::path out = scratch("extend");
+    const std::string common = " --sides 6 --fill 0 --fidelity draft --time-limit 0.2 -q --jobs 1 --out " + out.string();
+    REQUIRE(shell(exe + " sweep --angle 20" + common).exit_code == 0);
+    const std::string first_row = read_file(out / "results.csv").substr(read_file(out / "results.csv").find('\n') + 1);
+    // 10 deg sorts before 20: the finished run moves to index 1 and is not run again.
+    const Result wider = shell(exe + " sweep --angle 10,20,30" + common);
+    INFO(wider.out);
+    REQUIRE(wider.exit_code == 0);
+    CHECK_THAT(wider.out, Catch::Contains("extends the sweep") && Catch::Contains("1 runs were planned there, 3 now"));
+    CHECK_THAT(wider.out, Catch::Contains("2 of 2 runs done in this session") && Catch::Contains("1 found done before"));
+    const std::string table = read_file(out / "results.csv");
+    CHECK(std::count(table.begin(), table.end(), '\n') == 4);  // header and three rows
+    // The kept row, re-indexed from 0 to 1, otherwise byte for byte (its wall time included).
+    CHECK_THAT(table, Catch::Contains("\n1" + first_row.substr(first_row.find(','))));
+    CHECK(polyroll::sweep::read_plan(out).runs.size() == 3);
+    // Fewer values, or another field, is still a different sweep, refused with nothing changed.
+    const std::string plan_before = read_file(out / "plan.json");
+    for (const std::string& args : {std::string(" --angle 10,20"), std::string(" --angle 10,20,30 --seeds 2")}) {
+        const Result other = shell(exe + " sweep" + args + common);
+        INFO(args << "\n" << other.out);
+        CHECK(other.exit_code == 2);
+        CHECK_THAT(other.out, Catch::Contains("holds a different sweep") && Catch::Contains("more values to extend it"));
+        CHECK(read_file(out / "plan.json") == plan_before);
+    }
+    fs::remove_all(out);
+}
+
 TEST_CASE("sweep: the grid and its time echoed first, lists out of order run ascending, all failed exits 1",
           "[sweep][cli]") {
     const fs::path out = scratch("echo");

@@ -18,6 +18,7 @@
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
+#include "sweep/plan_extension.h"
 #include "sweep/progress.h"
 #include "sweep/run_cost.h"
 #include "sweep/sweep_plan.h"
@@ -222,10 +223,17 @@ int run(const SweepArgs& a) {
         if (fs::exists(sweep::plan_path(dir), ec)) {
             // Resuming: the folder's plan must be this command's.
             const sweep::SweepPlan existing = sweep::read_plan(dir);
-            if (sweep::plan_to_json(existing) != sweep::plan_to_json(plan))
-                throw InputError(fmt::format("--out {}: holds a different sweep (its plan.json has {} runs, this "
-                                             "command {}); allowed: a new folder, or the same command to resume",
-                                             a.out, existing.runs.size(), plan.runs.size()));
+            if (sweep::plan_to_json(existing) != sweep::plan_to_json(plan)) {
+                // More values for the same fields extend it: the finished runs are kept (by id).
+                const std::string refusal = sweep::extension_refusal(existing, plan);
+                if (!refusal.empty())
+                    throw InputError(fmt::format("--out {}: holds a different sweep ({} runs): {}; allowed: a new "
+                                                 "folder, the same command to resume, or more values to extend it",
+                                                 a.out, existing.runs.size(), refusal));
+                sweep::extend_plan(dir, plan);
+                notes.push_back(fmt::format("extends the sweep in {}: {} runs were planned there, {} now", a.out,
+                                            existing.runs.size(), plan.runs.size()));
+            }
         } else {
             prepare_output_dir(dir, false,
                                "allowed: a new or empty folder, or the folder of this same sweep to resume it");
@@ -277,7 +285,8 @@ Action add_sweep_command(CLI::App& app) {
         "  polyroll sweep --from sweeps/big --shard 3/16      # one slice of it\n"
         "  polyroll sweep --merge sweeps/big                  # combine the slices into results.csv\n"
         "Numbers listed out of order run in ascending order. Points that cannot run (--fill 25) are refused before\n"
-        "anything is written. The same command resumes an interrupted sweep. Exit codes: 0 done (failed runs are\n"
+        "anything is written. The same command resumes an interrupted sweep; with more values for the same flags it\n"
+        "extends a sweep, keeping the runs done. Exit codes: 0 done (failed runs are\n"
         "rows of the table), 2 bad input, 130 interrupted (resume with the same command), 1 every run failed, another\n"
         "failure, or --merge with runs missing.");
     a->scene_options.push_back(
