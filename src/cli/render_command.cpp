@@ -204,8 +204,12 @@ int render(const RenderOptions& o) {
     st.slow = o.slow;
     st.hold_s = o.hold_s;
 
-    fmt::print("polyroll render: n = {}, r = {:g} {}, theta = {:g} deg on {}, {}x{} at {:g} fps{}{}\n",
-               scene.shell.sides, scene.fill.ratio, scene.fill.material.preset, scene.ramp.angle_deg,
+    // An empty shell has no material to name ("r = 0 bb" read as if it held BBs).
+    const std::string fill = scene.fill.ratio > 0.0
+                                 ? fmt::format("r = {:g} {}", scene.fill.ratio, scene.fill.material.preset)
+                                 : std::string("empty");
+    fmt::print("polyroll render: n = {}, {}, theta = {:g} deg on {}, {}x{} at {:g} fps{}{}\n",
+               scene.shell.sides, fill, scene.ramp.angle_deg,
                scene.ramp.preset.empty() ? "a custom ramp" : "the " + scene.ramp.preset + " ramp", size.width,
                size.height, o.fps,
                o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");

@@ -40,7 +40,8 @@ struct AreaProperties {
 };
 AreaProperties polygon_properties(const std::vector<Vec2>& poly);
 
-// Triangle properties from vertex coordinates, the formulas of the physics brief.
+// Triangle properties from vertex coordinates: the formulas in docs/physics.md ("Triangle properties
+// from corner coordinates").
 AreaProperties triangle_properties(Vec2 a, Vec2 b, Vec2 c);
 
 // The part of a convex polygon on the side of the line where dot(p, normal) <= offset.
