@@ -621,6 +621,12 @@ def shared_handles(axes):
     return seen
 
 
+def shared_legend(legend_ax, axes, ncol):
+    """Every panel's entries, once each, as one legend in the legend row."""
+    handles = shared_handles(axes)
+    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=ncol, fontsize=7, frameon=False)
+
+
 # A printed page's width: the figures are drawn at the size a paper prints them, fonts 7 to 9 pt.
 PAGE_WIDTH_IN = 7.2
 
@@ -674,8 +680,7 @@ def d_vs_angle_sweep(rows, lengths, observations):
         ax.yaxis.label.set_size(8)
         if not left_panel(ax, axes):
             ax.set_ylabel("")
-    handles = shared_handles(axes)
-    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=2, fontsize=7, frameon=False)
+    shared_legend(legend_ax, axes, ncol=2)
     page_title(fig, "Distance before stopping D against ramp angle \u03b8, every run "
                f"({seeds_count(rows)} seed{'s' if seeds_count(rows) != 1 else ''} per point); "
                "dashed: linear fit over the runs that rolled, then stopped")
@@ -745,8 +750,7 @@ def terminal_velocity_sweep(rows):
         ax.grid(alpha=0.3)
         if not left_panel(ax, axes):
             ax.set_ylabel("")
-    handles = shared_handles(axes)
-    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=4, fontsize=7, frameon=False)
+    shared_legend(legend_ax, axes, ncol=4)
     page_title(fig, "Terminal velocity against fill ratio, runs that rolled to the end: median over seeds, bars the "
                f"least to greatest seed (a seed at {RUNAWAY_FACTOR:g}x its point's median or more is a runaway, "
                "marked on the top edge and left out of the median and range)")
@@ -888,8 +892,7 @@ def energy_vs_time_figure(run_dirs):
         ax.set_ylabel("energy (J)" if left_panel(ax, axes) else "", fontsize=8)
         ax.tick_params(labelsize=7.5)
         ax.grid(alpha=0.3)
-    handles = shared_handles(axes)
-    legend_ax.legend(list(handles.values()), list(handles.keys()), loc="center", ncol=3, fontsize=7, frameon=False)
+    shared_legend(legend_ax, axes, ncol=3)
     page_title(fig, "Energy against time: kinetic, potential (relative to the release) and dissipated")
     return fig, table
 
