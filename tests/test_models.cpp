@@ -333,6 +333,15 @@ TEST_CASE("the rigid model flags the angle where the polygon would hop", "[model
     REQUIRE(above.model_invalid_time_s);
     CHECK(*above.model_invalid_time_s > 0.0);
     CHECK(*above.model_invalid_time_s < above.measured.end_time_s);
+    // Run on past lift-off, the faces that would hop: none below; above, each face from the first
+    // hop on (the speed before an impact only grows towards the steady state, so once the normal
+    // force turns negative it does so on every later face), the one it lifted off on included.
+    CHECK(below.hop_pivots == 0);
+    long faces_after = 0;
+    for (const FaceImpact& f : above.measured.impacts) faces_after += f.time_s > *above.model_invalid_time_s;
+    CHECK(above.hop_pivots >= faces_after);
+    CHECK(above.hop_pivots <= faces_after + 1);
+    CHECK(above.hop_pivots >= 2);
 }
 
 TEST_CASE("the reduced models' summary says which model ran and whether it held", "[models]") {

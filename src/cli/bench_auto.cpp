@@ -5,10 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
+#include "sim/assets.h"
 #include "sim/model_registry.h"
+#include "sim/models/reduced_models.h"
 #include "sim/scene_names.h"
 
 namespace polyroll::cli {
@@ -29,13 +33,32 @@ Timed time_runs(const Scene& s, int repeats) {
     return t;
 }
 
+// The scene at a fidelity preset (its values replace the scene's fidelity; as bench_command.cpp).
+Scene at_preset(Scene s, const std::string& name) {
+    const auto& v = assets::preset_values(assets::Kind::fidelity, name);
+    s.fidelity.preset = name;
+    s.fidelity.step_hz = v.at("step_hz").get<double>();
+    s.fidelity.substeps = v.at("substeps").get<int>();
+    s.fidelity.velocity_iterations = v.at("velocity_iterations").get<int>();
+    s.fidelity.position_iterations = v.at("position_iterations").get<int>();
+    return s;
+}
+
+std::string percent_off(const std::optional<double>& v, const std::optional<double>& ref) {
+    return v && ref ? fmt::format("{:.1f}%", 100.0 * std::fabs(*v - *ref) / *ref) : "-";
+}
+
+std::string speed(const std::optional<double>& v) { return v ? fmt::format("{:.3f}", *v) : "-"; }
+
 }  // namespace
 
 void bench_auto(const Scene& base, int repeats) {
-    fmt::print("\nauto against grains on empty shells ({} fidelity for grains), best of {} on one core\n",
+    fmt::print("\nauto against grains on empty shells ({} fidelity for grains; reference: one grain run at the\n"
+               "reference preset), best of {} on one core\n",
                base.fidelity.preset.empty() ? "custom" : base.fidelity.preset, repeats);
-    fmt::print("{:>3} {:>5} {:>10} {:>10} {:>8} {:>10} {:>9} {:>9} {:>7}  {}\n", "n", "deg", "auto_s", "grains_s",
-               "speedup", "handover", "Vt_auto", "Vt_grains", "Vt_err", "behaviour (auto / grains)");
+    fmt::print("{:>3} {:>5} {:>9} {:>9} {:>8} {:>9} {:>7} {:>9} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>6} {:>6}  {}\n", "n",
+               "deg", "auto_s", "grains_s", "speedup", "handover", "hops", "mu_need", "Vt_auto", "Vt_rigid", "Vt_grain", "Vt_ref",
+               "a-g", "a-ref", "g-ref", "r-ref", "behaviour (auto / grains / reference)");
     double auto_total = 0.0, grains_total = 0.0;
     for (int sides : {6, 8, 10, 18}) {
         for (double angle : {5.0, 10.0, 20.0, 30.0}) {
@@ -47,23 +70,40 @@ void bench_auto(const Scene& base, int repeats) {
             const Timed a = time_runs(s, repeats);
             s.run.model = Model::grains;
             const Timed g = time_runs(s, repeats);
+            const RunResult ref = run_scene(at_preset(s, "reference"));
+            s.run.model = Model::rigid;
+            const RunResult rigid = run_scene(s);
+            // The rigid model run on past lift-off: on how many of its faces the normal force it needs
+            // turns negative (where a hand-back from Box2D would hand the shell over again at once).
+            const models::RollingRun roll =
+                models::roll(models::rolling_body(s), models::FillMotion::frozen, models::rolling_track(s));
             auto_total += a.best_s;
             grains_total += g.best_s;
             const auto& c = a.result.model_choice;
-            const std::string handover = c && c->hand_over_time_s ? fmt::format("{:.3f} s", *c->hand_over_time_s) : "-";
+            const std::string handover = c && c->hand_over_time_s ? fmt::format("{:.3f}", *c->hand_over_time_s) : "-";
             const auto& va = a.result.measured.terminal_velocity_m_s;
             const auto& vg = g.result.measured.terminal_velocity_m_s;
-            const std::string err = va && vg ? fmt::format("{:.1f}%", 100.0 * std::fabs(*va - *vg) / *vg) : "-";
-            fmt::print("{:>3} {:>5g} {:>10.5f} {:>10.5f} {:>7.1f}x {:>10} {:>9} {:>9} {:>7}  {} / {}\n", sides, angle,
-                       a.best_s, g.best_s, g.best_s / a.best_s, handover,
-                       va ? fmt::format("{:.3f}", *va) : "-", vg ? fmt::format("{:.3f}", *vg) : "-", err,
-                       to_string(a.result.measured.behaviour), to_string(g.result.measured.behaviour));
+            const auto& vr = ref.measured.terminal_velocity_m_s;
+            const auto& vrig = rigid.measured.terminal_velocity_m_s;
+            const std::string hops =
+                fmt::format("{}/{}", roll.hop_pivots, std::max<size_t>(1, roll.measured.impacts.size()));
+            const std::string mu = fmt::format("{:.2f}/{:.2f}", roll.max_friction_share, roll.max_impact_friction_share);
+            fmt::print("{:>3} {:>5g} {:>9.5f} {:>9.5f} {:>7.1f}x {:>9} {:>7} {:>9} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>6} {:>6}  "
+                       "{} / {} / {}\n",
+                       sides, angle, a.best_s, g.best_s, g.best_s / a.best_s, handover, hops, mu, speed(va), speed(vrig),
+                       speed(vg), speed(vr), percent_off(va, vg), percent_off(va, vr), percent_off(vg, vr),
+                       percent_off(vrig, vr), to_string(a.result.measured.behaviour),
+                       to_string(g.result.measured.behaviour), to_string(ref.measured.behaviour));
             std::fflush(stdout);
         }
     }
     fmt::print("all 16: auto {:.4f} s, grains {:.4f} s, {:.1f}x. handover: when the rigid model handed the shell\n"
-               "to Box2D (lift-off); Vt_err: |Vt_auto - Vt_grains| / Vt_grains.\n",
-               auto_total, grains_total, grains_total / auto_total);
+               "to Box2D (lift-off, s); hops: faces on which the rigid model, run on past lift-off, needs a negative\n"
+               "normal force / its faces; mu_need: the friction share of the normal force the rigid model's no-slip\n"
+               "rolling needs, between impacts / at an impact (the ramp's friction coefficient is {:g});\n"
+               "Vt_rigid: the rigid model alone; Vt_ref: grains at the reference preset; a-g = |Vt_auto - Vt_grain| /\n"
+               "Vt_grain, a-ref, g-ref and r-ref against Vt_ref (r: rigid).\n",
+               auto_total, grains_total, grains_total / auto_total, base.ramp.friction);
 }
 
 }  // namespace polyroll::cli

@@ -2,6 +2,7 @@
 #include "sim/models/reduced_run.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "sim/fill_plan.h"
 #include "sim/models/reduced_models.h"
@@ -61,7 +62,13 @@ bool ReducedRun::step() {
 }
 
 void ReducedRun::run_to_end() {
-    while (!finished()) ++steps_;
+    // The first tracker step at which finished() holds, computed rather than counted up to: counting
+    // ten thousand steps one by one cost about a third of a segment-model run on the default scene.
+    const double hz = scene_.fidelity.step_hz, end = full_.measured.end_time_s - 1e-12;
+    long s = std::max(steps_, static_cast<long>(std::ceil(end * hz)));
+    while (s > steps_ && static_cast<double>(s - 1) / hz >= end) --s;
+    while (static_cast<double>(s) / hz < end) ++s;
+    steps_ = s;
     reveal();
 }
 

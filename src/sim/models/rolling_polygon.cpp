@@ -86,6 +86,8 @@ private:
     bool time_arc();
     void emit_arc_samples(const EnergyArc& arc, double t_end);
     void handle(Event e);
+    void note_negative_normal();  // on the current pivot (hop_pivots)
+    void note_friction(double sin_psi, double cos_psi, double rate_rad_s);  // max_friction_share
 
     const RollingBody& b_;
     const FillMotion fill_motion_;
@@ -99,10 +101,16 @@ private:
     bool has_fill_ = false;
 
     MassProperties body_;
-    FillSegments fill_;
+    // What the run needs of the fill's segments (FillSegments): its mass and which way was up when it
+    // levelled. Kept without the segments' polygons, so re-using a face's fill copies no vectors.
+    struct LevelledFill {
+        Vec2 up;
+        MassProperties mass;
+    };
+    LevelledFill fill_;
     // The fill re-levelled on each face: landing on face k always leaves the polygon in the same
     // orientation (k modulo n), so each is cut once (measured: 6% of a default-scene run).
-    std::vector<std::optional<FillSegments>> landed_fill_;
+    std::vector<std::optional<LevelledFill>> landed_fill_;
     Pivot piv_;
     double phi_ = 0.0, omega_ = 0.0, t_ = 0.0;  // omega = dphi/dt, positive rolling down
     double phi0_ = 0.0, start_x_ = 0.0, u0_ = 0.0;
@@ -110,6 +118,7 @@ private:
     long highest_landed_ = 1;
     long next_sample_ = 0;
     bool running_ = true;
+    long last_hop_pivot_ = std::numeric_limits<long>::min();
     RollingRun out_;
     // The points of the current step find_event looked at, in time order up to the event: where the
     // normal force is checked.
@@ -202,12 +211,24 @@ double Roller::normal_force(double sp, double cp, double rate) const {
     return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
 }
 
+void Roller::note_friction(double sp, double cp, double rate) {
+    // M a_cm = M g + (F, N) in the ramp frame, the centre of mass turning about the fixed pivot:
+    // a_cm.x = phi'' r.y - phi'^2 r.x (see normal_force for a_cm.y).
+    const double n = normal_force(sp, cp, rate);
+    if (!(n > 0.0)) return;
+    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_), ry = piv_.d * (cp * cos_t_ + sp * sin_t_);
+    const double f = body_.mass_kg * (piv_.a * sp * ry - rate * rate * rx - g_ * sin_t_);
+    out_.max_friction_share = std::max(out_.max_friction_share, std::fabs(f) / n);
+}
+
 void Roller::rebuild_body_landed(long face) {
     const size_t key = static_cast<size_t>(((face % n_) + n_) % n_);
     if (landed_fill_.empty()) landed_fill_.resize(static_cast<size_t>(n_));
-    if (!landed_fill_[key])
-        landed_fill_[key] =
+    if (!landed_fill_[key]) {
+        const FillSegments f =
             fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+        landed_fill_[key] = LevelledFill{f.up, f.mass};
+    }
     fill_ = *landed_fill_[key];
     body_ = combine(b_.shell, fill_.mass);
 }
@@ -218,7 +239,9 @@ void Roller::rebuild_body() {
         return;
     }
     // The body frame sees gravity turned back by the body's rotation.
-    fill_ = fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+    const FillSegments f =
+        fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+    fill_ = {f.up, f.mass};
     body_ = combine(b_.shell, fill_.mass);
 }
 
@@ -265,6 +288,9 @@ void Roller::check_normal(const PendulumSeries& s) {
         const Checkpoint& p = path_[static_cast<size_t>(i)];
         const double nf = normal_force(p.psi, c);
         out_.min_normal_force_N = std::min(out_.min_normal_force_N, nf);
+        const double w2 = std::max(0.0, 2.0 * (c - piv_.a * std::cos(p.psi)));
+        note_friction(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
+        if (nf < 0.0) note_negative_normal();
         if (nf < 0.0 && out_.model_valid) {
             // Bisection for when it turned negative; psi is monotonic between checkpoints.
             double x = i > 0 ? path_[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
@@ -277,6 +303,12 @@ void Roller::check_normal(const PendulumSeries& s) {
             out_.model_invalid_time_s = t_ + y;
         }
     }
+}
+
+void Roller::note_negative_normal() {
+    if (piv_.k == last_hop_pivot_) return;
+    last_hop_pivot_ = piv_.k;
+    ++out_.hop_pivots;
 }
 
 void Roller::emit_series_samples(const PendulumSeries& s, double t_end) {
@@ -323,6 +355,14 @@ void Roller::impact(int direction) {
     if (w * omega_ <= 0.0) w = 0.0;
     const double kinetic_after = 0.5 * inertia_b * w * w;
     dissipated_ += kinetic_before - kinetic_after;
+    {
+        // The impulse at the new pivot is the change of momentum: M (v_cm after - v_cm before), each
+        // v_cm = omega x (centre of mass - pivot), in the ramp frame (clockwise omega: (r.y, -r.x) omega).
+        const Vec2 a_r = geom::rotate(r_a, -phi_), b_r = geom::rotate(r_b, -phi_);
+        const Vec2 p{w * b_r.y - omega_ * a_r.y, -(w * b_r.x - omega_ * a_r.x)};
+        if (p.y > 0.0)
+            out_.max_impact_friction_share = std::max(out_.max_impact_friction_share, std::fabs(p.x) / p.y);
+    }
 
     // A full polygon's fill is the whole inside whatever the orientation: nothing to re-level.
     if (has_fill_ && fill_motion_ == FillMotion::relevel && b_.fill_ratio < 1.0) {
@@ -425,8 +465,12 @@ bool Roller::time_arc() {
     // rate changes fastest). Where it turns negative the stepper times the arc again to find when.
     const ArcPoint end = arc.point(arc.u_to());
     double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_), normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s));
-    arc.for_each_node([&](const ArcPoint& p) { n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s)); });
+    arc.for_each_node([&](const ArcPoint& p) {
+        n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s));
+        note_friction(p.sin_psi, p.cos_psi, p.rate_rad_s);
+    });
     if (n_min < 0.0 && out_.model_valid) return false;
+    if (n_min < 0.0) note_negative_normal();
     out_.min_normal_force_N = std::min(out_.min_normal_force_N, n_min);
     emit_arc_samples(arc, t_ + tau);
     ++out_.timed_arcs;

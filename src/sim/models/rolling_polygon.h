@@ -60,6 +60,16 @@ struct RollingRun {
     bool model_valid = true;
     std::optional<double> model_invalid_time_s;
     double min_normal_force_N = 0.0;  // over the whole run
+    // Pivots (faces rolled over) on which the normal force the model needs turned negative, counting
+    // the first: 1 for a shell that would hop once and then roll, about the number of faces after
+    // lift-off for one that would hop at every face (what a hand-back from Box2D could gain).
+    long hop_pivots = 0;
+    // The friction the model's no-slip assumption needs, as a share of the normal force: the largest
+    // |tangential| / normal force the pivot must supply between impacts (where the normal force is
+    // positive), and |tangential| / normal impulse at an impact. A ramp with a lower friction
+    // coefficient lets the real shell slip there (the grain model's Box2D does).
+    double max_friction_share = 0.0;
+    double max_impact_friction_share = 0.0;
     double fill_mass_kg = 0.0;
     long steps = 0;                   // integrator steps and arcs timed from the energy integral
     long timed_arcs = 0;              // of those, arcs timed from the energy integral
