@@ -222,6 +222,24 @@ TEST_CASE("the rigid model's steady state is the closed form (1 - Q) KE_before =
     }
 }
 
+TEST_CASE("the friction the rigid model's rolling needs, against closed forms", "[models]") {
+    const int n = 6;
+    const double m = 0.2, radius = 0.035, angle = 10.0, theta = angle * kPi / 180.0;
+    const models::RollingBody body = solid_polygon(n, radius, m);
+    const models::RollingRun run = models::roll(body, models::FillMotion::frozen, track_for(n, radius, angle, 1.0));
+    REQUIRE(run.measured.impacts.size() > 5);
+    // At an impact face (A, B) lands, A = (0, 0) and B = (s, 0), the centre of mass at (s / 2, h):
+    // v_cm = omega (h, -s / 2) before and omega' (h, s / 2) after, so the impulse at B is
+    // M ((omega' - omega) h, (omega' + omega) s / 2), with omega' / omega = sqrt(Q) (symmetric body).
+    const double side = geom::regular_polygon_side(n, radius), h = radius * std::cos(kPi / n);
+    const double ratio = std::sqrt(rigid_impact_energy_ratio(n, m, body.shell.inertia_cm_kg_m2, radius));
+    CHECK(run.max_impact_friction_share == Approx((1.0 - ratio) * h / ((1.0 + ratio) * 0.5 * side)).epsilon(1e-9));
+    // Released from rest, the friction holds the body against the slope: tan(theta) of the normal
+    // force at the start, and more once it turns (the centripetal term unloads the pivot).
+    CHECK(run.max_friction_share >= std::tan(theta) * (1.0 - 1e-6));
+    CHECK(run.max_friction_share < 1.0);
+}
+
 TEST_CASE("energy books close in both reduced models", "[models]") {
     for (const char* model : {"rigid", "segments"}) {
         for (int n : {3, 4, 6, 8, 18, 64}) {
