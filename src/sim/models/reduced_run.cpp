@@ -65,6 +65,10 @@ void ReducedRun::run_to_end() {
     // The first tracker step at which finished() holds, computed rather than counted up to: counting
     // ten thousand steps one by one cost about a third of a segment-model run on the default scene.
     const double hz = scene_.fidelity.step_hz, end = full_.measured.end_time_s - 1e-12;
+    if (!std::isfinite(end) || !(hz > 0.0)) {  // no end to jump to (never for a validated scene)
+        reveal();
+        return;
+    }
     long s = std::max(steps_, static_cast<long>(std::ceil(end * hz)));
     while (s > steps_ && static_cast<double>(s - 1) / hz >= end) --s;
     while (static_cast<double>(s) / hz < end) ++s;
