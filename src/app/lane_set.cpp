@@ -59,6 +59,7 @@ AdvanceResult LaneSet::advance_to(double target_s, double budget_s, const std::f
             if (lane->finished() || lane->time_s() + 0.5 * lane->step_s() > target_s) continue;
             lane->step();
             ++r.steps;
+            r.grain_steps += static_cast<double>(lane->grains() + 1) * lane->scene().fidelity.substeps;
             any = true;
         }
         if (any && now_s() - start >= budget_s) {
