@@ -4,6 +4,8 @@
 // do not depend on the machine the asset was measured on.
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include "app/model_budget.h"
 #include "app/readouts.h"
 #include "app/sandbox_physics.h"
@@ -151,7 +153,7 @@ TEST_CASE("the sandbox's physics builds the budget's choice, and full detail res
     // Small grains in a small shell at the reference step (4,000 engine steps per simulated second):
     // more than the asset's measured machine can step at real time, yet quick to build.
     const Scene asked = test::scene_with(
-        {{"fill", {{"ratio", 0.3}, {"material", "bb"}}}, {"fidelity", "reference"}});
+        {{"fill", {{"ratio", 0.5}, {"material", "bb"}}}, {"fidelity", "reference"}});
     const BudgetFigures& f = budget_figures();
     REQUIRE(estimated_cost_s({asked}, f.physics_s_per_grain_step, f.packing) > f.physics_share);
     SandboxPhysics physics(true, [] { return 0.0; });  // a capture: the asset's cost, no measuring

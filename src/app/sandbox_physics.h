@@ -30,7 +30,8 @@ public:
     const SimClock& clock() const { return clock_; }
     // What the budget chose for the lanes (read between jobs, as lanes()).
     const BudgetChoice& budget_choice() const { return choice_; }
-    // The cost per grain engine step measured in this window, 0 until a scene has played long enough.
+    // The cost per grain engine step measured in this window, 0 until a heavy enough scene has played
+    // long enough (kBudgetMinGrainStepsPerS).
     double measured_cost_per_grain_step() const { return measured_cost_; }
 
 private:
@@ -38,7 +39,7 @@ private:
     void step_frame(double wall_dt_s, PhysicsOutcome& out);
     void build_chosen();
     // After a playing frame: learns the cost per grain step, and rebuilds coarser once if too slow.
-    void measure(double wall_dt_s, double physics_s, double grain_steps, PhysicsOutcome& out);
+    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps, PhysicsOutcome& out);
 
     bool fixed_frames_;
     std::function<double()> now_s_;
@@ -52,7 +53,8 @@ private:
     std::vector<Scene> asked_;  // the scenes as the controls asked for them
     BudgetChoice choice_;
     double measured_cost_ = 0.0;
-    double played_wall_s_ = 0.0, played_physics_s_ = 0.0, played_grain_steps_ = 0.0;  // since the build
+    // Since the build: wall, simulated and physics time, and the work done in grain engine steps.
+    double played_wall_s_ = 0.0, played_sim_s_ = 0.0, played_physics_s_ = 0.0, played_grain_steps_ = 0.0;
     bool rechosen_ = false;  // this build was already rebuilt coarser once
 };
 

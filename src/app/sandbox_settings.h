@@ -34,11 +34,15 @@ inline constexpr double kFrameRateCapHz = 60.0;
 // against 10 ms: the large rice scene 0.16x against 0.13x real time, 47 against 52 frames/s.
 inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
 // The physics budget (app/model_budget.h, assets/sandbox-budget.json) measures a scene's cost per
-// grain step over its first this-much wall time of real-time play, and only from this much work (a
-// few frames' noise would decide otherwise); then, if the scene does not keep real time, it rebuilds
-// it once at the cheaper level the measured cost says fits.
+// grain step over its first this-much wall time of real-time play (a rate window, kRateWindowS);
+// then, if the scene does not keep real time, it rebuilds it once at the cheaper level that cost says
+// fits.
 inline constexpr double kBudgetMeasureS = 1.0;
-inline constexpr double kBudgetMinGrainSteps = 1e5;
+// The cost per grain step grows with the pile's contacts: measured on the 2-core machine (docs/
+// sandbox.md), the default scene's 21 loose grains cost about 0.2 us each per step, the full large
+// hexagon's 1,008 grains 4.9 us. So only a scene doing at least this many grain steps per simulated
+// second (about 200 grains at 1,000 steps/s) stands for the next scenes' estimate.
+inline constexpr double kBudgetMinGrainStepsPerS = 2e5;
 // "Run to the end" draws no scene, so it may spend most of a frame on physics (the UI still answers).
 inline constexpr double kRunToEndBudgetPerFrameS = 0.200;
 // A stalled frame (window dragged, machine busy) owes at most this much simulated time.
