@@ -142,12 +142,12 @@ std::string level_label(const BudgetLevel& level) {
 
 std::string budget_statement(const BudgetChoice& c, const BudgetFigures& f) {
     if (c.full_detail_asked) {
-        if (c.fits) return "Full detail: the scene as asked, at real time.";
+        if (c.fits) return "Full detail: the scene as asked, within the physics budget for real time.";
         return fmt::format("Full detail: the scene as asked (about {} grains), slower than real time on this computer "
                            "(the line over the scene says how much).",
                            grains_text(c.grains_asked));
     }
-    if (!c.reduced()) return "The scene as asked: this computer keeps real time with it.";
+    if (!c.reduced()) return "The scene as asked, within the physics budget for real time.";
     const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
     const std::string behaviours =
         l.wrong_behaviours == 0 ? fmt::format("the same behaviour in all {} scenes", l.scenes)
