@@ -4,6 +4,8 @@
 // do not depend on the machine the asset was measured on.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "app/model_budget.h"
@@ -25,6 +27,7 @@ BudgetFigures figures(double cost_per_grain_step) {
     f.physics_s_per_grain_step = cost_per_grain_step;
     f.physics_share = 0.7;
     f.packing = 0.9;
+    f.cost_exponent = 1.0;  // linear, so the thresholds below are plain sums
     return f;
 }
 
@@ -144,18 +147,22 @@ TEST_CASE("the panel names what the budget chose and what it costs", "[app][budg
     CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("full detail"));
     CHECK(level_label({2.0, "draft", 0, 0, 0, ""}) == "grains 2x larger, draft step");
     CHECK(level_label({1.5, "", 0, 0, 0, ""}) == "grains 1.5x larger");
+    // A pile costs more per grain than loose grains: the grain steps grow faster than the grains.
+    CHECK(grain_steps_per_engine_step(0, 1.84) == Approx(1.0));
+    CHECK(grain_steps_per_engine_step(1008, 1.0) == Approx(1009.0));
+    CHECK(grain_steps_per_engine_step(1008, 1.84) / grain_steps_per_engine_step(251, 1.84) ==
+          Approx(std::pow(1009.0 / 252.0, 1.84)));
     CHECK_THAT(budget_statement(choose_model({big_rice()}, figures(1e-9), 1e-9, false, false), f),
                Catch::Contains("as asked"));
 }
 
 TEST_CASE("the sandbox's physics builds the budget's choice, and full detail restores the scene as asked",
           "[app][budget][physics]") {
-    // Small grains in a small shell at the reference step (4,000 engine steps per simulated second):
-    // more than the asset's measured machine can step at real time, yet quick to build.
-    const Scene asked = test::scene_with(
-        {{"fill", {{"ratio", 0.5}, {"material", "bb"}}}, {"fidelity", "reference"}});
+    // The large hexagon 0.6 full of rice: more than the asset's measured machine can step at real time,
+    // yet quicker to build than full.
+    const Scene asked = test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 0.6}, {"material", "rice"}}}});
     const BudgetFigures& f = budget_figures();
-    REQUIRE(estimated_cost_s({asked}, f.physics_s_per_grain_step, f.packing) > f.physics_share);
+    REQUIRE(estimated_cost_s({asked}, f.physics_s_per_grain_step, f) > f.physics_share);
     SandboxPhysics physics(true, [] { return 0.0; });  // a capture: the asset's cost, no measuring
     auto build = [&](bool full_detail) {
         PhysicsRequests r;

@@ -22,8 +22,8 @@ struct AdvanceResult {
     long steps = 0;
     bool budget_hit = false;
     double reached_s = 0.0;  // the slowest unfinished lane's time (or the latest, once all ended)
-    // The work done, in grain engine steps: (grains + 1) x engine steps per tracker step, summed over
-    // the steps taken (the +1 is the shell). The physics budget measures its cost per unit from it.
+    // The work done, in grain steps (model_budget.h: (grains + 1)^exponent per engine step), summed
+    // over the steps taken. The physics budget measures its cost per grain step from it.
     double grain_steps = 0.0;
 };
 

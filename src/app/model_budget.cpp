@@ -32,11 +32,13 @@ BudgetFigures load_figures() {
     f.physics_s_per_grain_step = v.at("physics_s_per_grain_step").get<double>();
     f.physics_share = v.at("physics_share").get<double>();
     f.packing = v.at("packing").get<double>();
+    f.cost_exponent = v.at("cost_exponent").get<double>();
     f.full_detail = level_from(j.at("full_detail"));
     for (const auto& l : j.at("levels")) f.levels.push_back(level_from(l));
-    if (!(f.physics_s_per_grain_step > 0) || !(f.physics_share > 0) || !(f.packing > 0) || f.levels.empty())
+    if (!(f.physics_s_per_grain_step > 0) || !(f.physics_share > 0) || !(f.packing > 0) ||
+        !(f.cost_exponent >= 1.0 && f.cost_exponent <= 3.0) || f.levels.empty())
         throw InputError("assets/sandbox-budget.json: values.physics_s_per_grain_step, physics_share and packing must "
-                         "be positive and levels not empty");
+                         "be positive, cost_exponent 1 to 3 and levels not empty");
     return f;
 }
 
@@ -87,9 +89,14 @@ const BudgetFigures& budget_figures() {
     return f;
 }
 
-double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, double packing) {
+double grain_steps_per_engine_step(int grains, double cost_exponent) {
+    return std::pow(static_cast<double>(grains) + 1.0, cost_exponent);
+}
+
+double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f) {
     double cost = 0.0;
-    for (const Scene& s : scenes) cost += (grains_of(s, packing) + 1.0) * engine_hz(s) * cost_per_grain_step;
+    for (const Scene& s : scenes)
+        cost += std::pow(grains_of(s, f.packing) + 1.0, f.cost_exponent) * engine_hz(s) * cost_per_grain_step;
     return cost;
 }
 
@@ -100,7 +107,7 @@ BudgetChoice choose_model(const std::vector<Scene>& scenes, const BudgetFigures&
     c.cost_per_grain_step = cost_per_grain_step;
     c.measured = measured;
     for (const Scene& s : scenes) c.grains_asked += grains_of(s, f.packing);
-    c.cost_asked = estimated_cost_s(scenes, cost_per_grain_step, f.packing);
+    c.cost_asked = estimated_cost_s(scenes, cost_per_grain_step, f);
     c.grains_chosen = c.grains_asked;
     c.cost_chosen = c.cost_asked;
     c.fits = c.cost_asked <= f.physics_share;
@@ -117,7 +124,7 @@ BudgetChoice choose_model(const std::vector<Scene>& scenes, const BudgetFigures&
         }
         t.grains_chosen = 0.0;
         for (const Scene& s : reduced) t.grains_chosen += grains_of(s, f.packing);
-        t.cost_chosen = estimated_cost_s(reduced, cost_per_grain_step, f.packing);
+        t.cost_chosen = estimated_cost_s(reduced, cost_per_grain_step, f);
         t.fits = t.cost_chosen <= f.physics_share;
         c = t;
         if (t.fits) break;
@@ -154,10 +161,10 @@ std::string budget_statement(const BudgetChoice& c, const BudgetFigures& f) {
                                 : fmt::format("behaviour changed in {} of {} scenes", l.wrong_behaviours, l.scenes);
     return fmt::format(
         "{}: {} (about {} -> {} grains, same fill mass). Costs, per the trade study: terminal velocity {} off on "
-        "average (full detail {}), {}.",
+        "average (full detail {}), {}.{}",
         c.fits ? "To keep real time" : "Closer to real time (still slower)", level_label(l), grains_text(c.grains_asked),
         grains_text(c.grains_chosen), percent(l.terminal_velocity_error), percent(f.full_detail.terminal_velocity_error),
-        behaviours);
+        behaviours, c.measured ? " Chosen from the cost measured on this computer." : "");
 }
 
 }  // namespace polyroll::app

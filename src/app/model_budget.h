@@ -25,7 +25,11 @@ struct BudgetLevel {
 };
 
 struct BudgetFigures {
-    double physics_s_per_grain_step = 0.0;  // wall seconds per grain per engine step, beside the drawing
+    // Wall seconds per grain step beside the drawing, where a lane of G grains does (G + 1)^cost_exponent
+    // grain steps per engine step (the +1 is the shell): a big pile costs more per grain than a few
+    // loose grains (more contacts per grain and one large island for the solver).
+    double physics_s_per_grain_step = 0.0;
+    double cost_exponent = 1.0;
     double physics_share = 0.0;             // the share of wall time the physics may take
     double packing = 1.0;                   // grains built / estimated_grain_count (the estimate is close-packed)
     BudgetLevel full_detail;                // the standard preset's own error, for comparison
@@ -50,9 +54,12 @@ struct BudgetChoice {
     bool reduced() const { return level >= 0; }
 };
 
-// The physics seconds one simulated second of these lanes costs: grains x engine steps per second
-// x the cost per grain step. Reduced models (rigid, segments) and empty shells count as one grain.
-double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, double packing);
+// The physics seconds one simulated second of these lanes costs: (grains + 1)^exponent x engine steps
+// per second x the cost per grain step, summed over the lanes. Reduced models (rigid, segments) and
+// empty shells count as no grains.
+double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f);
+// The grain steps one engine step of a lane of `grains` grains counts for (the measured cost's unit).
+double grain_steps_per_engine_step(int grains, double cost_exponent);
 
 // Chooses for the lanes: the scenes as asked if they fit the budget (or full detail is asked), else
 // the first level that fits, else the cheapest level (then `fits` is false). A level that would make

@@ -117,7 +117,7 @@ struct BenchStats {
     long steps = 0;
     void print(const LaneSet& lanes, double sim_end_s, double wall_end_s, const std::string& preset,
                const std::string& gl, double build_s) const {
-        if (frame_s.empty()) return;
+        if (frame_s.empty() || lanes.size() == 0) return;
         std::vector<double> sorted = frame_s;
         std::sort(sorted.begin(), sorted.end());
         auto pct = [&](double p) { return sorted[std::min(sorted.size() - 1, static_cast<size_t>(p * sorted.size()))]; };
@@ -211,6 +211,11 @@ public:
             }
         }
         if (o_.bench) {
+            // The budget may have rebuilt the scene coarser during the bench: report the built lanes.
+            if (!lanes().ready() && !last_.build_failed) {
+                pending_.wait_until_built = true;
+                take(worker_.run(std::exchange(pending_, {})));
+            }
             bench.steps = steps_;
             bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
             fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), budget_figures()));
