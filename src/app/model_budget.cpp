@@ -77,9 +77,9 @@ Scene apply_level(const Scene& scene, const BudgetLevel& l) {
 std::string percent(double share) { return fmt::format("{:.1f}%", 100.0 * share); }
 
 std::string grains_text(double n) {
-    // "about 1,010": the estimate, rounded to tens, with a thousands separator.
-    const long rounded = std::lround(n / 10.0) * 10;
-    return rounded >= 1000 ? fmt::format("{},{:03}", rounded / 1000, rounded % 1000) : fmt::format("{}", rounded);
+    // "about 1010": the estimate, rounded to tens; no thousands comma, where the panel's wrapping
+    // would break the number.
+    return fmt::format("{}", std::lround(n / 10.0) * 10);
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ std::vector<Scene> apply_choice(const std::vector<Scene>& scenes, const BudgetFi
 std::string level_label(const BudgetLevel& level);
 
 // The panel's statement of what the budget did and what it costs, from the trade study:
-// "To keep real time: grains 2x larger (about 1,000 -> 250 grains, same mass). Trade study: terminal
+// "To keep real time: grains 2x larger (about 1010 -> 250 grains, same mass). Trade study: terminal
 // velocity 7.4% off on average (full detail 4.6%), behaviour changed in 1 of 17 scenes." Or that the
 // scenes run as asked, or at full detail and slower than real time.
 std::string budget_statement(const BudgetChoice& c, const BudgetFigures& f);
