@@ -57,6 +57,14 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
     return r;
 }
 
+std::string budget_model_label(const std::string& model_label, const BudgetLevel& level) {
+    return model_label == "grains" ? level_label(level) : model_label + ", " + level_label(level);
+}
+
+std::string budget_status(const BudgetLevel& level) {
+    return fmt::format("Cheaper model to keep real time: {} (full detail: in the panel)", level_label(level));
+}
+
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio) {
     std::string asked = slow_divisor == 1 ? std::string("real time")
                                           : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);

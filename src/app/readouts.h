@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/model_budget.h"
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
 #include "sim/scene.h"
@@ -36,6 +37,13 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
 
 // The model row: the model named, or auto's choice as it stands at this moment of the run.
 std::string model_label(const Scene& scene, const ModelChoice* choice);
+
+// The model entry of a lane the physics budget made cheaper: "grains 2x larger, draft step" for
+// the grain model, "auto: grains, grains 2x larger" otherwise.
+std::string budget_model_label(const std::string& model_label, const BudgetLevel& level);
+// The status line's note of it: "Cheaper model to keep real time: grains 2x larger (full detail: in
+// the panel)".
+std::string budget_status(const BudgetLevel& level);
 
 // The status line's one statement of how fast the run plays (issue 16 row 9): the chosen rate
 // ("real time", "1/4\u00D7 slow motion (4\u00D7 slower)") while the computer keeps up, else the rate it

@@ -68,6 +68,7 @@ struct Options {
     bool follow = false;
     std::string colour_by = "material";
     bool paused = false;
+    bool full_detail = false;
     // Parsed.
     int width_px = kDefaultWidthPx, height_px = kDefaultHeightPx;
     bool capture() const { return frames > 0 && !bench; }
@@ -116,7 +117,7 @@ struct BenchStats {
     long steps = 0;
     void print(const LaneSet& lanes, double sim_end_s, double wall_end_s, const std::string& preset,
                const std::string& gl, double build_s) const {
-        if (frame_s.empty()) return;
+        if (frame_s.empty() || lanes.size() == 0) return;
         std::vector<double> sorted = frame_s;
         std::sort(sorted.begin(), sorted.end());
         auto pct = [&](double p) { return sorted[std::min(sorted.size() - 1, static_cast<size_t>(p * sorted.size()))]; };
@@ -144,7 +145,10 @@ struct BenchStats {
                    sim, rt_wall, sim / rt_wall, phys > 0 ? sim / phys : 0.0,
                    lanes.all_finished() ? ", then the run ended" : "");
         const bool met = n / wall >= 59.0 && sim / rt_wall >= kKeepingUpShare;
-        fmt::print("  target       60 frames/s at real time: {}\n", met ? "met" : "not met");
+        // Issue 13's target for every bundled preset under Xvfb: real time at 50 frames/s or more.
+        const bool met_50 = n / wall >= 50.0 && sim / rt_wall >= kKeepingUpShare;
+        fmt::print("  target       60 frames/s at real time: {}; real time at 50 frames/s or more: {}\n",
+                   met ? "met" : "not met", met_50 ? "met" : "not met");
     }
 };
 
@@ -158,9 +162,11 @@ public:
         : win_(win), s_(std::move(state)), o_(o), physics_(o.capture(), now_s) {
         ctx_.lanes = &physics_.lanes();
         ctx_.clock = &physics_.clock();
+        ctx_.budget = &physics_.budget_choice();
     }
 
     int run() {
+        pending_.full_detail = s_.full_detail;  // --full-detail
         apply_controls();
         pending_.play = s_.playing;  // --paused
         // A capture or a benchmark starts from the built scene, whatever the machine's speed.
@@ -205,8 +211,14 @@ public:
             }
         }
         if (o_.bench) {
+            // The budget may have rebuilt the scene coarser during the bench: report the built lanes.
+            if (!lanes().ready() && !last_.build_failed) {
+                pending_.wait_until_built = true;
+                take(worker_.run(std::exchange(pending_, {})));
+            }
             bench.steps = steps_;
             bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
+            fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), budget_figures()));
         }
         if (o_.capture()) {
             fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
@@ -394,6 +406,10 @@ private:
             }
         }
         if (req.controls_changed) s_.changes_pending = true;
+        if (req.full_detail_changed) {
+            pending_.full_detail = s_.full_detail;
+            apply_controls();
+        }
         // A slider applies when it is let go, not at every pixel of the drag.
         if (s_.changes_pending && s_.restart_on_change && !any_item_active) apply_controls();
         if (req.reset) apply_controls();
@@ -460,6 +476,9 @@ int sandbox_main(int argc, char** argv) {
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
     cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
     cli.add_flag("--paused", o.paused, "start paused");
+    cli.add_flag("--full-detail", o.full_detail,
+                 "play the scene exactly as asked even where this computer cannot keep real time (default: a cheaper "
+                 "model of the same fill where it cannot, said on screen; the panel's 'full detail' box)");
     cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
     cli.add_option("--theme", o.theme,
                    "panel colours: projector (default; dark text on pale panels, strong borders) or dark (ImGui's)");
@@ -486,6 +505,7 @@ int sandbox_main(int argc, char** argv) {
     state.colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
     state.ui_scale = o.ui_scale;
     state.playing = !o.paused;
+    state.full_detail = o.full_detail;
     state.high_contrast = o.theme == "projector";
 
     std::string why;

@@ -2,11 +2,15 @@
 // the end), changed only by run(), which the physics worker calls with a frame's requests. The UI
 // reads lanes() and clock() only between jobs, while the worker is idle, and learns what a job did
 // from its PhysicsOutcome. No GLFW or ImGui here.
+// The physics budget (model_budget.h) lives here too: each restart builds the model it chose for the
+// scenes asked (full detail when asked), and a scene measured too slow in its first second of play
+// is rebuilt once at the next cheaper level that the measured cost says fits.
 #pragma once
 
 #include <functional>
 
 #include "app/lane_set.h"
+#include "app/model_budget.h"
 #include "app/physics_requests.h"
 #include "app/sim_clock.h"
 
@@ -24,10 +28,18 @@ public:
 
     const LaneSet& lanes() const { return lanes_; }
     const SimClock& clock() const { return clock_; }
+    // What the budget chose for the lanes (read between jobs, as lanes()).
+    const BudgetChoice& budget_choice() const { return choice_; }
+    // The cost per grain engine step measured in this window, 0 until a heavy enough scene has played
+    // long enough (kBudgetMinGrainStepsPerS).
+    double measured_cost_per_grain_step() const { return measured_cost_; }
 
 private:
     void apply(const PhysicsRequests& r, PhysicsOutcome& out);
     void step_frame(double wall_dt_s, PhysicsOutcome& out);
+    void build_chosen();
+    // After a playing frame: learns the cost per grain step, and rebuilds coarser once if too slow.
+    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps, PhysicsOutcome& out);
 
     bool fixed_frames_;
     std::function<double()> now_s_;
@@ -35,6 +47,15 @@ private:
     SimClock clock_;
     bool playing_ = false;
     bool running_to_end_ = false;
+
+    // The budget.
+    bool full_detail_ = false;
+    std::vector<Scene> asked_;  // the scenes as the controls asked for them
+    BudgetChoice choice_;
+    double measured_cost_ = 0.0;
+    // Since the build: wall, simulated and physics time, and the work done in grain engine steps.
+    double played_wall_s_ = 0.0, played_sim_s_ = 0.0, played_physics_s_ = 0.0, played_grain_steps_ = 0.0;
+    bool rechosen_ = false;  // this build was already rebuilt coarser once
 };
 
 }  // namespace polyroll::app

@@ -33,6 +33,16 @@ inline constexpr double kFrameRateCapHz = 60.0;
 // less the panel's own ~2 ms. Measured with --bench on the 2-core machine (docs/sandbox.md), 14 ms
 // against 10 ms: the large rice scene 0.16x against 0.13x real time, 47 against 52 frames/s.
 inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
+// The physics budget (app/model_budget.h, assets/sandbox-budget.json) measures a scene's cost per
+// grain step over its first this-much wall time of real-time play (a rate window, kRateWindowS);
+// then, if the scene does not keep real time, it rebuilds it once at the cheaper level that cost says
+// fits.
+inline constexpr double kBudgetMeasureS = 1.0;
+// Only a scene doing at least this many grain steps per simulated second (model_budget.h: a lane of G
+// grains does (G + 1)^1.84 per engine step; this is about 200 grains at 1,000 steps/s) stands for the
+// next scenes' estimate: a few loose grains cost so little that timer noise and the frame's fixed
+// work would decide it, and the power law is fitted between 21 and 1,008 grains.
+inline constexpr double kBudgetMinGrainStepsPerS = 1.7e7;
 // "Run to the end" draws no scene, so it may spend most of a frame on physics (the UI still answers).
 inline constexpr double kRunToEndBudgetPerFrameS = 0.200;
 // A stalled frame (window dragged, machine busy) owes at most this much simulated time.

@@ -29,6 +29,9 @@ struct SandboxState {
     // Changes rebuild the scene and restart at once, or wait for Reset.
     bool restart_on_change = true;
     bool changes_pending = false;      // controls changed since the lanes were built
+    // Full detail: the scenes as asked however slowly they play; off, the physics budget may step a
+    // cheaper model to keep real time (app/model_budget.h).
+    bool full_detail = false;
 
     // The transport as the physics last reported it (PhysicsOutcome), shown by the panel; at the start,
     // what the window asks for (--paused). Play and pause are requests (PhysicsRequests).

@@ -297,6 +297,21 @@ void advanced_controls(SandboxState& s, UiRequests& req) {
     if (changed) req.controls_changed = true;
 }
 
+// What the physics budget did, and the full-detail box one click away (issue 13 item 3).
+void budget_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
+    if (!ctx.budget) return;
+    const BudgetChoice& c = *ctx.budget;
+    const bool warn = c.reduced() || !c.fits;
+    if (warn) ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
+    ImGui::TextWrapped("%s", budget_statement(c, budget_figures()).c_str());
+    if (warn) ImGui::PopStyleColor();
+    if (ImGui::Checkbox("full detail (may play slower than real time)", &s.full_detail)) req.full_detail_changed = true;
+    tip("On: the scene exactly as asked, however slowly this computer plays it. Off: where the physics cannot keep "
+        "real time, the sandbox steps the closest cheaper model that can (grains of the same total mass but larger, "
+        "then a coarser time step) and says what that costs in accuracy, as the trade study measured it "
+        "(docs/tradeoff/tradeoff.md).");
+}
+
 void view_controls(SandboxState& s, UiRequests& req) {
     ImGui::Checkbox("follow the polygon (F)", &s.follow);
     tip("On: the camera follows the leading polygon, zoomed in. Off: the whole ramp. Drag to pan, scroll to zoom.");
@@ -494,6 +509,7 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     heading("Ramp and physics (all lanes)");
     shared_controls(s, req);
     physics_controls(s, req);
+    budget_controls(s, ctx, req);
 
     if (ImGui::CollapsingHeader("Advanced: friction and restitution")) advanced_controls(s, req);
     if (ImGui::CollapsingHeader("View")) view_controls(s, req);
@@ -545,6 +561,12 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     for (size_t i = 0; i < lanes.size(); ++i)
         r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s(),
                                  lanes.lane(i).model_choice()));
+    // A lane the budget made cheaper says so in its model entry.
+    if (ctx.budget && ctx.budget->reduced())
+        for (size_t i = 0; i < lanes.size(); ++i)
+            if (lanes.lane(i).grains() > 0)
+                r[i].model = budget_model_label(r[i].model,
+                                                budget_figures().levels.at(static_cast<size_t>(ctx.budget->level)));
     // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
     // 60% of the width; past that its cells wrap rather than cut their text.
     const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
@@ -716,6 +738,9 @@ void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L)
     }
     if (s.changes_pending && !s.restart_on_change)
         ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "Controls changed: press Reset (R) to apply them.");
+    if (ctx.budget && ctx.budget->reduced() && lanes.ready())
+        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "%s",
+                           budget_status(budget_figures().levels.at(static_cast<size_t>(ctx.budget->level))).c_str());
     ImGui::End();
 }
 

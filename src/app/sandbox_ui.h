@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/lane_set.h"
+#include "app/model_budget.h"
 #include "app/sandbox_state.h"
 #include "app/sim_clock.h"
 
@@ -19,6 +20,7 @@ struct UiRequests {
     bool toggle_play = false, step = false, reset = false, run_to_end = false;
     bool screenshot = false, export_run = false, reset_view = false;
     bool controls_changed = false;  // a control changed: rebuild now, or mark pending
+    bool full_detail_changed = false;  // the full-detail box was clicked: rebuild at once
     std::optional<std::string> load_preset;
 };
 
@@ -26,6 +28,7 @@ struct UiRequests {
 struct UiContext {
     const LaneSet* lanes = nullptr;
     const SimClock* clock = nullptr;
+    const BudgetChoice* budget = nullptr;  // what the physics budget chose for the lanes
     bool running_to_end = false;
     std::string control_error;  // the last combination the core refused
     std::string last_saved;     // where the last screenshot or export went

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "sim/errors.h"
 #include "sim/grain_deposition.h"
 #include "sim/rng.h"
 #include "sim/scene_validate.h"
@@ -50,6 +53,18 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     }
     for (PlannedGrain& g : plan.grains) g.mass_kg = plan.target_mass_kg * g.radius_m * g.radius_m / area_sum;
     return plan;
+}
+
+}  // namespace polyroll
+
+namespace polyroll {
+
+Scene with_coarser_grains(const Scene& scene, double scale) {
+    if (!(scale >= 1.0) || !std::isfinite(scale))
+        throw InputError(fmt::format("coarser grains: scale {:g} is out of range (allowed: 1 or more, finite)", scale));
+    Scene s = scene;
+    s.fill.material.diameter_m *= scale;
+    return s;
 }
 
 }  // namespace polyroll

@@ -35,3 +35,14 @@ std::vector<geom::Vec2> shell_outer_polygon_m(const ShellParams& shell);
 FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, geom::Vec2 up_in_shell_frame);
 
 }  // namespace polyroll
+
+namespace polyroll {
+
+// The same fill in grains `scale` times larger in diameter (scale >= 1; InputError otherwise): the
+// same fill ratio and bulk density, hence the same fill mass (r x inside volume x bulk density, shared
+// among the grains by area) and the same level surface, in about 1/scale^2 as many grains. The
+// sandbox uses it to keep real time (app/model_budget.h); the trade study measures what it costs in
+// accuracy (the same scaling: src/sweep/tradeoff.cpp).
+Scene with_coarser_grains(const Scene& scene, double scale);
+
+}  // namespace polyroll
