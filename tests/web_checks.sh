@@ -1,0 +1,129 @@
+#!/bin/sh
+# The web page (build-web/, README's web command) in a real browser: headless Chromium loads it from
+# a local server on 127.0.0.1, plays N frames of a scene (?frames=N: each frame 1/60 s of simulated
+# time, as polyroll-sandbox --frames) and prints each lane's behaviour, distance and scene. For the
+# default scene and `race`:
+#   1. every lane's behaviour is the one `polyroll run --scene` gives for the same scene, and its
+#      distance is within 1 % (the same C++ compiled to WebAssembly: only floating-point details
+#      may differ);
+#   2. the page's screenshot matches the native sandbox's capture of the same scene, frame count
+#      and size (polyroll-sandbox --frames N --screenshot, under Xvfb) within a tolerance on pixel
+#      differences (tests/web_compare_png.py);
+#   3. a bad value in the address is refused on the page, naming the value and the allowed range.
+# Needs build/ (native) and build-web/. Exits non-zero on the first failure.
+set -eu
+cd "$(dirname "$0")/.."
+root=$(pwd)
+[ -f build-web/polyroll-sandbox.wasm ] || { echo "web_checks: build-web/ is missing: run the README's web command" >&2; exit 1; }
+[ -x build/polyroll ] || { echo "web_checks: build/polyroll is missing: build the native programs first" >&2; exit 1; }
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/polyroll-web-checks.XXXXXX")
+server_pid=""
+cleanup() {
+    [ -n "$server_pid" ] && kill "$server_pid" 2>/dev/null || true
+    rm -rf "$scratch"
+}
+trap cleanup EXIT
+t0=$(date +%s)
+step() { echo "== web_checks [$(( $(date +%s) - t0 )) s]: $*"; }
+
+# Frames per scene: long enough that every lane of both scenes has ended (stopped or rolled to the
+# end) so the behaviour is final; the page advances 1/60 s per frame whatever the machine's speed.
+frames=${POLYROLL_WEB_FRAMES:-480}
+size_w=1280
+size_h=800
+# Share of pixels allowed to differ between the page's picture and the native one (see the script).
+max_share=${POLYROLL_WEB_MAX_PIXEL_SHARE:-0.02}
+
+# A free port on 127.0.0.1 only (the page is never served beyond this machine).
+port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+python3 -m http.server --bind 127.0.0.1 --directory build-web "$port" >"$scratch/server.log" 2>&1 &
+server_pid=$!
+for _ in 1 2 3 4 5 6 7 8 9 10; do
+    python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break
+    sleep 0.5
+done
+
+# Headless Chromium with WebGL 2 on the CPU (SwiftShader), a fresh profile, nothing fetched from the
+# network (the machine has none beyond its mirrors). Virtual time lets the page's frames run as fast
+# as the CPU draws them; the budget only bounds a page that never finishes.
+chrome() {
+    profile=$(mktemp -d "$scratch/profile.XXXXXX")
+    chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+        --disable-background-networking --disable-component-update --disable-sync --no-first-run \
+        --disable-default-apps --mute-audio --user-data-dir="$profile" --window-size=$size_w,$size_h \
+        --hide-scrollbars --virtual-time-budget=600000 "$@" 2>>"$scratch/chromium.log"
+}
+
+# The page's printed lines (the <pre id="output"> of the dumped page), HTML entities decoded.
+page_output() {
+    chrome --dump-dom "http://127.0.0.1:$port/index.html?$1" |
+        python3 -c 'import sys, html, re
+m = re.search(r"<pre id=\"output\">(.*?)</pre>", sys.stdin.read(), re.S)
+print(html.unescape(m.group(1)) if m else "")'
+}
+
+check_scene() {
+    name=$1
+    query=$2
+    step "$name: $frames frames in Chromium"
+    page_output "$query&frames=$frames" >"$scratch/$name.out"
+    grep -q '^polyroll-web: frames done' "$scratch/$name.out" || {
+        echo "web_checks: the page did not finish its frames; it printed:" >&2
+        cat "$scratch/$name.out" >&2
+        tail -n 20 "$scratch/chromium.log" >&2
+        exit 1
+    }
+    grep '^polyroll-web: \(first frame\|lane [0-9]*:\)' "$scratch/$name.out"
+    lanes=$(grep -c '^polyroll-web: lane [0-9]*:' "$scratch/$name.out")
+    [ "$lanes" -ge 1 ] || { echo "web_checks: $name: no lane reported" >&2; exit 1; }
+    i=1
+    while [ "$i" -le "$lanes" ]; do
+        grep "^polyroll-web: lane $i scene " "$scratch/$name.out" | sed "s/^polyroll-web: lane $i scene //" \
+            >"$scratch/$name-lane$i.json"
+        build/polyroll run --scene "$scratch/$name-lane$i.json" --json >"$scratch/$name-lane$i.native.json" || {
+            rc=$?
+            [ "$rc" -eq 3 ] || { echo "web_checks: polyroll run failed (exit $rc)" >&2; exit 1; }
+        }
+        line=$(grep "^polyroll-web: lane $i:" "$scratch/$name.out")
+        python3 - "$line" "$scratch/$name-lane$i.native.json" "$name lane $i" <<'PY'
+import json, re, sys
+line, native_path, label = sys.argv[1], sys.argv[2], sys.argv[3]
+m = re.match(r"polyroll-web: lane \d+: behaviour (\S+), distance (\S+) m at (\S+) s", line)
+if not m:
+    sys.exit(f"web_checks: {label}: unreadable line: {line}")
+web_behaviour, web_distance = m.group(1), float(m.group(2))
+native = json.load(open(native_path))["results"]
+nb, nd = native["behaviour"], native["distance_m"]
+ok_behaviour = web_behaviour == nb
+ok_distance = abs(web_distance - nd) <= 0.01 * abs(nd) + 1e-9
+print(f"  {label}: page {web_behaviour}, {web_distance:.5f} m; polyroll run {nb}, {nd:.5f} m "
+      f"({100 * (web_distance - nd) / nd if nd else 0.0:+.3f} %)")
+if web_behaviour == "running":
+    sys.exit(f"web_checks: {label}: still running after the page's frames: raise POLYROLL_WEB_FRAMES")
+if not (ok_behaviour and ok_distance):
+    sys.exit(f"web_checks: {label}: the page and polyroll run disagree (allowed: same behaviour, distance within 1 %)")
+PY
+        i=$((i + 1))
+    done
+
+    step "$name: screenshots, page and native sandbox, ${size_w}x$size_h after $frames frames"
+    chrome --screenshot="$scratch/$name-web.png" "http://127.0.0.1:$port/index.html?$query&frames=$frames" >/dev/null
+    preset=$(printf '%s' "$query" | sed -n 's/.*preset=\([^&]*\).*/\1/p')
+    xvfb-run -a -s "-screen 0 ${size_w}x${size_h}x24" build/polyroll-sandbox --preset "${preset:-default}" \
+        --frames "$frames" --size "${size_w}x$size_h" --screenshot "$scratch/$name-native.png" >/dev/null
+    python3 tests/web_compare_png.py "$scratch/$name-web.png" "$scratch/$name-native.png" "$max_share"
+    [ -z "${POLYROLL_WEB_KEEP:-}" ] || cp "$scratch/$name-web.png" "$scratch/$name-native.png" "$POLYROLL_WEB_KEEP/"
+}
+
+check_scene default "preset=default"
+check_scene race "preset=race"
+
+step "a bad value in the address is refused on the page"
+page_output "sides=99" >"$scratch/bad.out"
+grep -q 'sides=99: out of range (allowed: 3 to 64)' "$scratch/bad.out" || {
+    echo "web_checks: ?sides=99 was not refused as expected; the page printed:" >&2
+    cat "$scratch/bad.out" >&2
+    exit 1
+}
+grep 'sides=99' "$scratch/bad.out"
+step "all web checks passed"
