@@ -35,6 +35,9 @@ TEST_CASE("page address: preset and scene controls are read and applied to the s
     CHECK(*p.angle_deg == 14.0);
     CHECK_FALSE(p.frames);
     CHECK_FALSE(p.paused);
+    CHECK_FALSE(p.bench);
+    CHECK(parse_page_query("bench").bench);
+    CHECK_FALSE(parse_page_query("bench=0").bench);
 
     SandboxState s = state_for_preset("default");
     apply_page_settings(p, s);
@@ -85,7 +88,7 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(material.rfind("material=sand: unknown (allowed: ", 0) == 0);
     CHECK(material.find("rice") != std::string::npos);
     CHECK(refusal("colour=red") ==
-          "colour: unknown setting in the address (allowed: preset, sides, fill, material, angle, frames, paused)");
+          "colour: unknown setting in the address (allowed: preset, sides, fill, material, angle, frames, paused, bench)");
     // Every refusal names its value; a good query is not refused.
     CHECK(refusal("preset=race&sides=8").empty());
 }

@@ -77,7 +77,7 @@ std::string join(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::string page_query_keys() { return "preset, sides, fill, material, angle, frames, paused"; }
+std::string page_query_keys() { return "preset, sides, fill, material, angle, frames, paused, bench"; }
 
 PageSettings parse_page_query(std::string_view query) {
     if (!query.empty() && query.front() == '?') query.remove_prefix(1);
@@ -115,6 +115,10 @@ PageSettings parse_page_query(std::string_view query) {
             if (value != "" && value != "1" && value != "0")
                 throw InputError(fmt::format("paused={}: unknown (allowed: 1, 0, or no value)", value));
             p.paused = value != "0";
+        } else if (key == "bench") {
+            if (value != "" && value != "1" && value != "0")
+                throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
+            p.bench = value != "0";
         } else {
             throw InputError(fmt::format("{}: unknown setting in the address (allowed: {})", key, page_query_keys()));
         }

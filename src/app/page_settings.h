@@ -19,9 +19,10 @@ struct PageSettings {
     std::optional<double> angle_deg;      // theta of the ramp (ramp.angle_deg)
     std::optional<long> frames;           // play this many frames, then stop and report (the page's test)
     bool paused = false;                  // start paused
+    bool bench = false;                   // time the frames, as polyroll-sandbox --bench (default preset hexagon-large-rice)
 };
 
-// The keys the query accepts, for messages: "preset, sides, fill, material, angle, frames, paused".
+// The keys the query accepts, for messages: "preset, sides, fill, material, angle, frames, paused, bench".
 std::string page_query_keys();
 
 // Parses "a=1&b=2" (with or without the leading '?', percent-encoding and '+' decoded). Throws

@@ -453,6 +453,7 @@ std::optional<PageSettings> page_settings(Options& o) {
         o.frames_given = true;
     }
     o.paused = o.paused || page.paused;
+    o.bench = o.bench || page.bench;
     return page;
 }
 
