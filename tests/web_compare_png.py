@@ -91,3 +91,16 @@ def main():
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+def write_png(path, width, height, channels, rows):
+    """Writes rows (as read_png returns them) as an 8-bit RGB or RGBA PNG, filter 0."""
+    raw = b"".join(b"\x00" + bytes(r[:width * channels]) for r in rows[:height])
+
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
+
+    colour = {3: 2, 4: 6}[channels]
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, colour, 0, 0, 0))
+                + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))

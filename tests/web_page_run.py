@@ -1,11 +1,11 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Loads the web page in headless Chromium in real time (no virtual time: the page's clock is the
 wall clock) and prints what the page printed once it says its frames are done. For measuring the
 page (?bench: frames/s and real-time factor, as polyroll-sandbox --bench; the time to the first
 frame), which a virtual-time run (tests/web_checks.sh) cannot: there the page's clock is virtual.
 
 Usage: web_page_run.py URL [TIMEOUT_S]
-Drives Chromium over its DevTools protocol with Debian's python3-websocket; the browser listens on
+Drives Chromium over its DevTools protocol with Debian's python3-websocket (run it with Debian's /usr/bin/python3); the browser listens on
 127.0.0.1 only and is ended when the script ends. Exit 0 when the page finished, 1 otherwise.
 """
 import json

@@ -12,7 +12,7 @@ src="$root/build-web-src"
 
 export DEBIAN_FRONTEND=noninteractive
 missing=""
-for p in emscripten chromium dpkg-dev fonts-dejavu-core python3; do
+for p in emscripten chromium dpkg-dev fonts-dejavu-core python3 python3-websocket xvfb; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
 if [ -n "$missing" ]; then
