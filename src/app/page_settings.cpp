@@ -112,11 +112,11 @@ PageSettings parse_page_query(std::string_view query) {
                 throw InputError(fmt::format("frames={}: out of range (allowed: 1 to {})", value, kMaxPageFrames));
             p.frames = static_cast<long>(*v);
         } else if (key == "paused") {
-            if (value != "" && value != "1" && value != "0")
+            if (!value.empty() && value != "1" && value != "0")
                 throw InputError(fmt::format("paused={}: unknown (allowed: 1, 0, or no value)", value));
             p.paused = value != "0";
         } else if (key == "bench") {
-            if (value != "" && value != "1" && value != "0")
+            if (!value.empty() && value != "1" && value != "0")
                 throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
             p.bench = value != "0";
         } else {
