@@ -5,8 +5,9 @@ page (?bench: frames/s and real-time factor, as polyroll-sandbox --bench; the ti
 frame), which a virtual-time run (tests/web_checks.sh) cannot: there the page's clock is virtual.
 
 Usage: web_page_run.py URL [TIMEOUT_S]
-Drives Chromium over its DevTools protocol with Debian's python3-websocket (run it with Debian's /usr/bin/python3); the browser listens on
-127.0.0.1 only and is ended when the script ends. Exit 0 when the page finished, 1 otherwise.
+Drives Chromium over its DevTools protocol with Debian's python3-websocket (hence /usr/bin/python3);
+the browser listens on 127.0.0.1 only and is ended when the script ends. Exit 0 when the page
+finished, 1 otherwise.
 """
 import json
 import os
