@@ -9,7 +9,9 @@
 #   2. the page's screenshot matches the native sandbox's capture of the same scene, frame count
 #      and size (polyroll-sandbox --frames N --screenshot, under Xvfb) within a tolerance on pixel
 #      differences (tests/web_compare_png.py);
-#   3. a bad value in the address is refused on the page, naming the value and the allowed range.
+#   3. a bad value in the address is refused on the page, naming the value and the allowed range;
+#   4. "Export run" (key E) downloads summary.json, trajectory.csv and impacts.csv
+#      (tests/web_export_check.py, over Chromium's DevTools protocol in real time).
 # Needs build/ (native) and build-web/. Exits non-zero on the first failure.
 set -eu
 cd "$(dirname "$0")/.."
@@ -150,4 +152,6 @@ grep -q 'sides=99: out of range (allowed: 3 to 64)' "$scratch/bad.out" || {
     exit 1
 }
 grep 'sides=99' "$scratch/bad.out"
+step "Export (key E) downloads the run's files"
+/usr/bin/python3 tests/web_export_check.py "http://127.0.0.1:$port/index.html"
 step "all web checks passed"
