@@ -5,9 +5,9 @@
 #   2. LeakSanitizer over a run, a render and a short sweep with those binaries;
 #   3. the libFuzzer targets (preset fuzz, clang, build-fuzz/) run 60 s each on the seed corpus;
 #   4. the warnings and static analysis of tests/lint_checks.sh (clang -Werror build, clang-tidy);
-#   5. the web page in headless Chromium (tests/web_checks.sh, 2-3 min), when build-web/ has been
-#      built (README's web command; building it adds about 4 min on an idle machine, so it is not
-#      part of the test command: see README, "The sandbox in a web browser").
+#   5. the web page in headless Chromium (tests/web_checks.sh, 2.5 to 5.5 min measured), when
+#      build-web/ has been built (README's web command; building it took 15 min with other builds
+#      beside it, so it is not part of the test command: see README, "The sandbox in a web browser").
 # The g++ build with -Werror is step 1 (the asan preset turns warnings into errors).
 # Any failure stops the script with a non-zero exit. Scratch files go to a temporary folder.
 set -eu
