@@ -15,13 +15,12 @@
 # Needs build/ (native) and build-web/. Exits non-zero on the first failure.
 set -eu
 cd "$(dirname "$0")/.."
-root=$(pwd)
 [ -f build-web/polyroll-sandbox.wasm ] || { echo "web_checks: build-web/ is missing: run the README's web command" >&2; exit 1; }
 [ -x build/polyroll ] || { echo "web_checks: build/polyroll is missing: build the native programs first" >&2; exit 1; }
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/polyroll-web-checks.XXXXXX")
 server_pid=""
 cleanup() {
-    [ -n "$server_pid" ] && kill "$server_pid" 2>/dev/null || true
+    if [ -n "$server_pid" ]; then kill "$server_pid" 2>/dev/null || true; fi
     rm -rf "$scratch"
 }
 trap cleanup EXIT
