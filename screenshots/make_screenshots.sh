@@ -24,4 +24,19 @@ sandbox --preset race --screenshot "$here/sandbox-race.png" --frames 80         
 sandbox --preset hexagon-bb --screenshot "$here/sandbox-stopped.png" --frames 180 # past its stop
 # The physics budget's cheaper model of the large rice hexagon, named in the panel and the status line.
 sandbox --preset hexagon-large-rice --screenshot "$here/sandbox-budget.png" --frames 60  # t = 1 s
+# The web page in headless Chromium (needs build-web/, README's web command): the race after 150
+# frames, the window sized so that the page's canvas is 1280x800, the screenshot cut to the canvas.
+if [ -f build-web/polyroll-sandbox.wasm ]; then
+    port=$(python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+    python3 -m http.server --bind 127.0.0.1 --directory build-web "$port" >/dev/null 2>&1 &
+    server=$!
+    sleep 1
+    chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+        --disable-background-networking --disable-component-update --disable-sync --no-first-run \
+        --user-data-dir="$work/profile" --window-size=1280,943 --hide-scrollbars --virtual-time-budget=600000 \
+        --screenshot="$work/web.png" "http://127.0.0.1:$port/index.html?preset=race&frames=150" >/dev/null 2>&1
+    kill "$server"
+    python3 -c "import sys; sys.path.insert(0, '$here/../tests'); from web_compare_png import read_png, write_png
+w, h, c, rows = read_png('$work/web.png'); write_png('$here/web-race-chromium.png', 1280, 800, c, rows)"
+fi
 echo "screenshots remade in $here"

@@ -4,7 +4,10 @@
 #      and the default test suite run under it, halting on the first report;
 #   2. LeakSanitizer over a run, a render and a short sweep with those binaries;
 #   3. the libFuzzer targets (preset fuzz, clang, build-fuzz/) run 60 s each on the seed corpus;
-#   4. the warnings and static analysis of tests/lint_checks.sh (clang -Werror build, clang-tidy).
+#   4. the warnings and static analysis of tests/lint_checks.sh (clang -Werror build, clang-tidy);
+#   5. the web page in headless Chromium (tests/web_checks.sh, 2.5 to 5.5 min measured), when
+#      build-web/ has been built (README's web command; building it took 15 min with other builds
+#      beside it, so it is not part of the test command: see README, "The sandbox in a web browser").
 # The g++ build with -Werror is step 1 (the asan preset turns warnings into errors).
 # Any failure stops the script with a non-zero exit. Scratch files go to a temporary folder.
 set -eu
@@ -21,14 +24,14 @@ export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_init_order=1:check_in
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
 
-step "1/4 ASan + UBSan build"
+step "1/5 ASan + UBSan build"
 cmake --preset asan >/dev/null
 cmake --build --preset asan
-step "1/4 default tests under ASan + UBSan"
+step "1/5 default tests under ASan + UBSan"
 # The whole default suite, the Xvfb sandbox test included (see tests/test_sandbox_smoke.cpp for its leak check).
 ctest --test-dir build-asan -L default --output-on-failure -j2
 
-step "2/4 LeakSanitizer: a run, a render, a short sweep"
+step "2/5 LeakSanitizer: a run, a render, a short sweep"
 build-asan/polyroll run --fill 0.25 --fidelity draft --time-limit 2 --out "$scratch/run" >/dev/null
 build-asan/polyroll render --fill 0.25 --fidelity draft --time-limit 1 --size 320x180 --fps 10 --hold 0 \
     --out "$scratch/render" >/dev/null
@@ -37,7 +40,7 @@ if build-asan/polyroll sweep --help >/dev/null 2>&1; then
         --jobs 2 --out "$scratch/sweep" >/dev/null
 fi
 
-step "3/4 fuzz targets (clang, libFuzzer + ASan + UBSan), 60 s each"
+step "3/5 fuzz targets (clang, libFuzzer + ASan + UBSan), 60 s each"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 # Seeds: tests/fuzz/corpus_<target>/, and for the scene parser the bundled asset files themselves.
@@ -52,7 +55,14 @@ for target in scene cli; do
     grep -E '^Done [0-9]+ runs|DONE' "$scratch/fuzz_$target.log" || true
 done
 
-step "4/4 warnings (clang -Werror) and clang-tidy"
+step "4/5 warnings (clang -Werror) and clang-tidy"
 tests/lint_checks.sh
+
+step "5/5 the web page in headless Chromium"
+if [ -f build-web/polyroll-sandbox.wasm ]; then
+    tests/web_checks.sh
+else
+    echo "skipped: build-web/ has not been built (README's web command)"
+fi
 
 step "all hardening checks passed"

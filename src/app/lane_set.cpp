@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "app/background_build.h"
 #include "app/divergence.h"
 #include "app/model_budget.h"
 #include "sim/model_registry.h"
@@ -20,7 +21,7 @@ void LaneSet::rebuild(const std::vector<Scene>& scenes) {
     build_error_.clear();
     trouble_.reset();
     for (const Scene& s : scenes)
-        pending_.push_back(std::async(std::launch::async, [s] { return start_run(s); }));
+        pending_.push_back(build_in_background([s] { return start_run(s); }));
 }
 
 void LaneSet::wait_until_built() {

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <memory>
 #include <regex>
-#include <thread>
 #include <utility>
 
 #include <CLI/CLI.hpp>
@@ -19,8 +18,10 @@
 #include "app/export_files.h"
 #include "app/headless_fallback.h"
 #include "app/lane_set.h"
+#include "app/page_settings.h"
 #include "app/physics_requests.h"
 #include "app/physics_worker.h"
+#include "app/platform.h"
 #include "app/readouts.h"
 #include "app/sandbox_physics.h"
 #include "app/sandbox_presets.h"
@@ -31,7 +32,6 @@
 #include "app/scene_view.h"
 #include "render/font.h"
 #include "render/gl_renderer.h"
-#include "render/png_writer.h"
 #include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
@@ -101,12 +101,6 @@ void check(Options& o) {
             throw InputError(fmt::format("--screenshot {}: the folder {} does not exist", o.screenshot, parent.string()));
     }
     if (o.preset.empty()) o.preset = o.bench ? kBenchPreset : kDefaultSandboxPreset;
-}
-
-void write_screenshot(Window& win, const fs::path& path) {
-    int w = 0, h = 0;
-    const std::vector<std::uint8_t> pixels = win.read_back_buffer(w, h);
-    render::write_file_whole(path, render::encode_png({pixels.data(), w, h, 4, true}));
 }
 
 // Frame-time statistics for --bench.
@@ -179,12 +173,27 @@ public:
             fmt::print(stderr, "polyroll-sandbox: the scene could not be built: {}\n", lanes().build_error());
             return kExitFailure;
         }
-        const long frames = o_.bench && o_.frames < 1 ? kDefaultBenchFrames : o_.frames;
-        BenchStats bench;
-        bench.wall_start_s = now_s();
-        double last = now_s();
-        long frame = 0;
-        while (!win_.should_close()) {
+        // The loop's own state lives on the heap, shared by its two steps: a page's frame loop
+        // (platform.h) runs them from the browser after this function's stack frame is gone.
+        struct LoopState {
+            long frames = 0;
+            BenchStats bench;
+            double last = 0.0;
+            long frame = 0;
+            double build_s = 0.0;
+        };
+        const auto loop = std::make_shared<LoopState>();
+        loop->frames = o_.bench && o_.frames < 1 ? kDefaultBenchFrames : o_.frames;
+        loop->build_s = build_s;
+        loop->bench.wall_start_s = now_s();
+        loop->last = now_s();
+        // One frame; false once the window closes or the capture's last frame is done.
+        const auto one_frame = [this, loop]() -> bool {
+            const long frames = loop->frames;
+            BenchStats& bench = loop->bench;
+            double& last = loop->last;
+            long& frame = loop->frame;
+            if (win_.should_close()) return false;
             const double t0 = now_s();
             const double wall_dt = frame == 0 ? 0.0 : t0 - last;
             last = t0;
@@ -198,34 +207,37 @@ public:
                 bench.physics_s.push_back(times.physics_s);
                 bench.drawing_s.push_back(times.drawing_s);
             }
-            if (final_frame) break;
+            if (final_frame) return false;
             if (!o_.capture() && !o_.bench) {
-                // Without vsync (Xvfb, some drivers) do not spin a core drawing frames nobody sees.
                 const double left = 1.0 / kFrameRateCapHz - (now_s() - t0);
-                if (left > 0) std::this_thread::sleep_for(std::chrono::duration<double>(left));
-                // Nothing moves (the run ended, or paused, and no build or run to the end under way):
-                // sleep until the user does something. The timeout lets a tooltip's hover delay pass.
                 const bool moving = !lanes().ready() || last_.running_to_end || (s_.playing && !last_.run_over());
-                if (!moving) win_.wait_events(kIdleWaitS);
-
+                rest_between_frames(win_, left, !moving, kIdleWaitS);
             }
-        }
-        if (o_.bench) {
-            // The budget may have rebuilt the scene coarser during the bench: report the built lanes.
-            if (!lanes().ready() && !last_.build_failed) {
-                pending_.wait_until_built = true;
-                take(worker_.run(std::exchange(pending_, {})));
+            return true;
+        };
+        const auto after_frames = [this, loop] {
+            const long frames = loop->frames;
+            BenchStats& bench = loop->bench;
+            const double build_s = loop->build_s;
+            if (o_.bench) {
+                // The budget may have rebuilt the scene coarser during the bench: report the built lanes.
+                if (!lanes().ready() && !last_.build_failed) {
+                    pending_.wait_until_built = true;
+                    take(worker_.run(std::exchange(pending_, {})));
+                }
+                bench.steps = steps_;
+                bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
+                fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), budget_figures()));
             }
-            bench.steps = steps_;
-            bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
-            fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), budget_figures()));
-        }
-        if (o_.capture()) {
-            fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
-                       last_.time_s, last_.trouble ? ", stopped by numerical trouble" : "",
-                       o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
-            if (lanes().trouble()) fmt::print("  {}\n", *lanes().trouble());
-        }
+            if (o_.capture()) {
+                fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
+                           last_.time_s, last_.trouble ? ", stopped by numerical trouble" : "",
+                           o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
+                if (lanes().trouble()) fmt::print("  {}\n", *lanes().trouble());
+                report_capture(lanes());
+            }
+        };
+        run_frame_loop(one_frame, after_frames);
         return kExitOk;
     }
 
@@ -387,7 +399,7 @@ private:
             for (size_t i = 0; i < lanes().size(); ++i) runs.push_back(lanes().lane(i).result());
             const fs::path folder = next_numbered(o_.out, "run", "");
             export_runs(folder, runs);
-            ctx_.last_saved = folder.string();
+            ctx_.last_saved = deliver_export(folder);
         } catch (const std::exception& e) {
             ctx_.last_saved = fmt::format("export failed: {}", e.what());
         }
@@ -446,6 +458,21 @@ private:
     PhysicsWorker worker_{[this](const PhysicsRequests& r) { return physics_.run(r); }};
 };
 
+// The web page's address (?preset=race&frames=240): what the command line would say. Nothing on the desktop.
+std::optional<PageSettings> page_settings(Options& o) {
+    const std::optional<std::string> query = page_query();
+    if (!query) return std::nullopt;
+    PageSettings page = parse_page_query(*query);
+    if (page.preset) o.preset = *page.preset;
+    if (page.frames) {
+        o.frames = *page.frames;
+        o.frames_given = true;
+    }
+    o.paused = o.paused || page.paused;
+    o.bench = o.bench || page.bench;
+    return page;
+}
+
 int sandbox_main(int argc, char** argv) {
     Options o;
     CLI::App cli{"polyroll-sandbox: the interactive sandbox. Pick a polygon, drag the fill slider, and watch it stop "
@@ -495,8 +522,10 @@ int sandbox_main(int argc, char** argv) {
     }
     SandboxState state;
     try {
+        const std::optional<PageSettings> page = page_settings(o);
         check(o);
         state = state_for_preset(o.preset);
+        if (page) apply_page_settings(*page, state);
     } catch (const InputError& e) {
         fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
         return kExitBadInput;
@@ -519,8 +548,9 @@ int sandbox_main(int argc, char** argv) {
         }
         return run_headless_instead(why);
     }
-    Sandbox app(*win, std::move(state), o);
-    return app.run();
+    // On the heap: a page's frame loop keeps using it after this function's stack frame is gone.
+    const auto app = std::make_unique<Sandbox>(*win, std::move(state), o);
+    return app->run();
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "app/sandbox_settings.h"
 #include "render/font.h"
+#include "render/glsl_version.h"
 
 namespace polyroll::app {
 
@@ -91,7 +92,7 @@ std::unique_ptr<Window> Window::open(int width_px, int height_px, bool vsync, st
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the layout is computed each frame; nothing to remember
     ImGui_ImplGlfw_InitForOpenGL(w, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(render::kGlslVersion);
     return win;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/font.h"
+#include "render/glsl_version.h"
 
 namespace polyroll::render {
 
@@ -121,7 +122,7 @@ void main() { frag = vec4(v_colour.rgb, v_colour.a * texture(atlas, v_uv).r); }
 )";
 
 GLuint compile(GLenum type, const std::string& body) {
-    const std::string src = std::string("#version 330 core\n") + kToClip + body;
+    const std::string src = std::string(kGlslVersion) + "\n" + kGlslPreamble + kToClip + body;
     const GLuint s = glCreateShader(type);
     const char* text = src.c_str();
     glShaderSource(s, 1, &text, nullptr);

@@ -1,0 +1,40 @@
+// The sandbox as a desktop program (GLFW window, threads, files): see platform.h.
+#include "app/platform.h"
+
+#include <chrono>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+#include "app/sandbox_window.h"
+#include "render/png_writer.h"
+
+namespace polyroll::app {
+
+void run_frame_loop(const std::function<bool()>& frame, const std::function<void()>& done) {
+    while (frame()) {
+    }
+    done();
+}
+
+void rest_between_frames(Window& win, double left_s, bool idle, double idle_wait_s) {
+    // Without vsync (Xvfb, some drivers) do not spin a core drawing frames nobody sees.
+    if (left_s > 0) std::this_thread::sleep_for(std::chrono::duration<double>(left_s));
+    // Nothing moves (the run ended, or paused, and no build or run to the end under way): sleep
+    // until the user does something. The timeout lets a tooltip's hover delay pass.
+    if (idle) win.wait_events(idle_wait_s);
+}
+
+void write_screenshot(Window& win, const std::filesystem::path& path) {
+    int w = 0, h = 0;
+    const std::vector<std::uint8_t> pixels = win.read_back_buffer(w, h);
+    render::write_file_whole(path, render::encode_png({pixels.data(), w, h, 4, true}));
+}
+
+std::string deliver_export(const std::filesystem::path& folder) { return folder.string(); }
+
+std::optional<std::string> page_query() { return std::nullopt; }
+
+void report_capture(const LaneSet& /*lanes*/) {}
+
+}  // namespace polyroll::app

@@ -1,0 +1,94 @@
+// The web page's scene from its address (app/page_settings.h): the keys a teacher's link uses,
+// decoding, and every bad value refused with a message naming it and what is allowed.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "app/page_settings.h"
+#include "app/sandbox_state.h"
+#include "sim/errors.h"
+
+using namespace polyroll;
+using namespace polyroll::app;
+
+namespace {
+
+// The message of the InputError parse_page_query throws ("" if it does not throw).
+std::string refusal(const std::string& query) {
+    try {
+        parse_page_query(query);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("page address: preset and scene controls are read and applied to the selected lane", "[app][web]") {
+    const PageSettings p = parse_page_query("?sides=8&fill=0.375&material=rice&angle=14");
+    CHECK_FALSE(p.preset);
+    REQUIRE(p.sides);
+    CHECK(*p.sides == 8);
+    CHECK(*p.fill_ratio == 0.375);
+    CHECK(*p.material == "rice");
+    CHECK(*p.angle_deg == 14.0);
+    CHECK_FALSE(p.frames);
+    CHECK_FALSE(p.paused);
+    CHECK_FALSE(p.bench);
+    CHECK(parse_page_query("bench").bench);
+    CHECK_FALSE(parse_page_query("bench=0").bench);
+
+    SandboxState s = state_for_preset("default");
+    apply_page_settings(p, s);
+    const LaneControls& lane = s.lanes.at(0).controls;
+    CHECK(lane.sides == 8);
+    CHECK(lane.fill_ratio == 0.375);
+    CHECK(lane.material == "rice");
+    CHECK(s.shared.angle_deg == 14.0);
+    CHECK(s.playing);
+
+    const PageSettings race = parse_page_query("preset=race&frames=240&paused");
+    CHECK(*race.preset == "race");
+    CHECK(*race.frames == 240);
+    CHECK(race.paused);
+    SandboxState r = state_for_preset("default");
+    apply_page_settings(race, r);
+    CHECK(r.preset == "race");
+    CHECK(r.lanes.size() == state_for_preset("race").lanes.size());
+    CHECK_FALSE(r.playing);
+}
+
+TEST_CASE("page address: empty, percent-encoded and '+' forms", "[app][web]") {
+    const PageSettings none = parse_page_query("");
+    CHECK_FALSE(none.preset);
+    CHECK_FALSE(none.sides);
+    CHECK(parse_page_query("?").frames == std::nullopt);
+    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").fill_ratio == 0.5);
+    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").angle_deg == 10.0);
+    CHECK(*parse_page_query("preset=hexagon%2Drice").preset == "hexagon-rice");
+}
+
+TEST_CASE("page address: bad values are refused naming the value and what is allowed", "[app][web]") {
+    CHECK(refusal("sides=2") == "sides=2: out of range (allowed: 3 to 64)");
+    CHECK(refusal("sides=65") == "sides=65: out of range (allowed: 3 to 64)");
+    CHECK(refusal("sides=6.5") == "sides=6.5: not a whole number (allowed: 3 to 64)");
+    CHECK(refusal("sides=six").rfind("sides=six: not a number (allowed: 3 to 64)", 0) == 0);
+    CHECK(refusal("fill=1.5").rfind("fill=1.5: out of range (allowed: ", 0) == 0);
+    CHECK(refusal("fill=nan").rfind("fill=nan: not a number", 0) == 0);
+    CHECK(refusal("angle=95").rfind("angle=95: out of range (allowed: ", 0) == 0);
+    CHECK(refusal("angle=").rfind("angle=: not a number", 0) == 0);
+    CHECK(refusal("frames=0") == "frames=0: out of range (allowed: 1 to 10000000)");
+    CHECK(refusal("frames=1.5") == "frames=1.5: out of range (allowed: 1 to 10000000)");
+    CHECK(refusal("paused=yes") == "paused=yes: unknown (allowed: 1, 0, or no value)");
+    const std::string preset = refusal("preset=nonagon");
+    CHECK(preset.rfind("preset=nonagon: unknown (allowed: default, ", 0) == 0);
+    CHECK(preset.find("race") != std::string::npos);
+    const std::string material = refusal("material=sand");
+    CHECK(material.rfind("material=sand: unknown (allowed: ", 0) == 0);
+    CHECK(material.find("rice") != std::string::npos);
+    CHECK(refusal("colour=red") ==
+          "colour: unknown setting in the address (allowed: preset, sides, fill, material, angle, frames, paused, bench)");
+    // Every refusal names its value; a good query is not refused.
+    CHECK(refusal("preset=race&sides=8").empty());
+}
