@@ -13,13 +13,15 @@ step "1/2 clang build, -Wall -Wextra -Wpedantic -Werror"
 cmake --preset clang-werror >/dev/null
 cmake --build --preset clang-werror
 
-step "2/2 clang-tidy over src/"
+# src/web/ is the WebAssembly side of the platform seams: emscripten compiles it (web/CMakeLists.txt,
+# -Wall -Wextra); it is not in this build's compile_commands.json, so clang-tidy cannot read it here.
+step "2/2 clang-tidy over src/ (without src/web/)"
 # clang-tidy counts the warnings its configuration hides ("N warnings generated.") on stderr: that
 # noise is dropped from the log; findings and the exit status are kept.
 log=$(mktemp "${TMPDIR:-/tmp}/polyroll-clang-tidy.XXXXXX")
 trap 'rm -f "$log"' EXIT
 status=0
-find src -name '*.cpp' | sort | xargs -P 2 -n 4 clang-tidy -p build-clang --quiet >"$log" 2>&1 || status=$?
+find src -name '*.cpp' -not -path 'src/web/*' | sort | xargs -P 2 -n 4 clang-tidy -p build-clang --quiet >"$log" 2>&1 || status=$?
 grep -v ' warnings\? generated\.$' "$log" || true
 [ "$status" -eq 0 ] || { echo "lint_checks: clang-tidy reported findings (above)" >&2; exit 1; }
 
