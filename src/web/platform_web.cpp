@@ -84,6 +84,13 @@ void report_capture(const LaneSet& lanes) {
         const Measurements& m = lanes.lane(i).measured();
         fmt::print("polyroll-web: lane {}: behaviour {}, distance {:.6f} m at {:.4f} s\n", i + 1,
                    to_string(m.behaviour), m.distance_m, lanes.lane(i).time_s());
+        // The first face impact: what the page and the native run share even where a tipping point
+        // later sends them apart (the default scene: tests/web_checks.sh).
+        if (!m.impacts.empty()) {
+            const FaceImpact& f = m.impacts.front();
+            fmt::print("polyroll-web: lane {} first impact: time {:.6f} s, position {:.6f} m, kinetic before {:.9g} J\n",
+                       i + 1, f.time_s, f.position_m, f.kinetic_before_J);
+        }
         // The lane's whole scene, so the test runs the same one natively (polyroll run --scene).
         fmt::print("polyroll-web: lane {} scene {}\n", i + 1, scene_to_json(lanes.lane(i).scene()).dump());
     }
