@@ -7,6 +7,7 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/fidelity_preset.h"
 #include "sim/fill_plan.h"
 #include "sim/scene_validate.h"
 
@@ -52,23 +53,12 @@ bool steps_grains(const Scene& s) {
 
 double grains_of(const Scene& s, double packing) { return steps_grains(s) ? packing * estimated_grain_count(s) : 0.0; }
 
-Scene with_fidelity(const Scene& scene, const std::string& preset) {
-    Scene s = scene;
-    const auto& v = assets::preset_values(assets::Kind::fidelity, preset);
-    s.fidelity.preset = preset;
-    s.fidelity.step_hz = v.at("step_hz").get<double>();
-    s.fidelity.substeps = v.at("substeps").get<int>();
-    s.fidelity.velocity_iterations = v.at("velocity_iterations").get<int>();
-    s.fidelity.position_iterations = v.at("position_iterations").get<int>();
-    return s;
-}
-
 // A level only coarsens: a scene already at a coarser step than the level's keeps its own.
 Scene apply_level(const Scene& scene, const BudgetLevel& l) {
     if (!steps_grains(scene)) return scene;
     Scene s = with_coarser_grains(scene, l.grain_scale);
     if (!l.fidelity.empty()) {
-        const Scene coarser = with_fidelity(s, l.fidelity);
+        const Scene coarser = at_fidelity_preset(s, l.fidelity);
         if (engine_hz(coarser) < engine_hz(s)) s = coarser;
     }
     return s;

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/assets.h"
+#include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/models/reduced_models.h"
 #include "sim/scene_names.h"
@@ -31,17 +31,6 @@ Timed time_runs(const Scene& s, int repeats) {
         t.best_s = std::min(t.best_s, t.result.wall_time_s);
     }
     return t;
-}
-
-// The scene at a fidelity preset (its values replace the scene's fidelity; as bench_command.cpp).
-Scene at_preset(Scene s, const std::string& name) {
-    const auto& v = assets::preset_values(assets::Kind::fidelity, name);
-    s.fidelity.preset = name;
-    s.fidelity.step_hz = v.at("step_hz").get<double>();
-    s.fidelity.substeps = v.at("substeps").get<int>();
-    s.fidelity.velocity_iterations = v.at("velocity_iterations").get<int>();
-    s.fidelity.position_iterations = v.at("position_iterations").get<int>();
-    return s;
 }
 
 std::string percent_off(const std::optional<double>& v, const std::optional<double>& ref) {
@@ -70,7 +59,7 @@ void bench_auto(const Scene& base, int repeats) {
             const Timed a = time_runs(s, repeats);
             s.run.model = Model::grains;
             const Timed g = time_runs(s, repeats);
-            const RunResult ref = run_scene(at_preset(s, "reference"));
+            const RunResult ref = run_scene(at_fidelity_preset(s, "reference"));
             s.run.model = Model::rigid;
             const RunResult rigid = run_scene(s);
             // The rigid model run on past lift-off: on how many of its faces the normal force it needs

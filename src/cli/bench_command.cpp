@@ -13,6 +13,7 @@
 #include "cli/scene_options.h"
 #include "sim/assets.h"
 #include "sim/bare_engine.h"
+#include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/shell_label.h"
 
@@ -51,15 +52,8 @@ int bench(const BenchOptions& o) {
                "sim_s", "build_s", "run_s", "run_x_rt", "bare_x_rt", "overhead", "behaviour");
     std::optional<double> grain_run_s;  // at the scene's own fidelity, for the reduced models' speed-up
     for (const std::string& name : presets) {
-        Scene s = base;
+        Scene s = at_fidelity_preset(base, name);
         s.run.model = reference_model();  // fidelity is the engine's: the grain simulation's
-        // The preset's values replace the fidelity; everything else stays.
-        const auto& v = assets::preset_values(assets::Kind::fidelity, name);
-        s.fidelity.preset = name;
-        s.fidelity.step_hz = v.at("step_hz").get<double>();
-        s.fidelity.substeps = v.at("substeps").get<int>();
-        s.fidelity.velocity_iterations = v.at("velocity_iterations").get<int>();
-        s.fidelity.position_iterations = v.at("position_iterations").get<int>();
         double best_run = 1e300, best_bare = 1e300, best_build = 1e300;
         long steps = 0;
         RunResult last;
