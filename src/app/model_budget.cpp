@@ -79,14 +79,14 @@ const BudgetFigures& budget_figures() {
     return f;
 }
 
-double grain_steps_per_engine_step(int grains, double cost_exponent) {
-    return std::pow(static_cast<double>(grains) + 1.0, cost_exponent);
+double grain_steps_per_engine_step(double grains, double cost_exponent) {
+    return std::pow(grains + 1.0, cost_exponent);
 }
 
 double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f) {
     double cost = 0.0;
     for (const Scene& s : scenes)
-        cost += std::pow(grains_of(s, f.packing) + 1.0, f.cost_exponent) * engine_hz(s) * cost_per_grain_step;
+        cost += grain_steps_per_engine_step(grains_of(s, f.packing), f.cost_exponent) * engine_hz(s) * cost_per_grain_step;
     return cost;
 }
 

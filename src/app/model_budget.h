@@ -59,7 +59,7 @@ struct BudgetChoice {
 // empty shells count as no grains.
 double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f);
 // The grain steps one engine step of a lane of `grains` grains counts for (the measured cost's unit).
-double grain_steps_per_engine_step(int grains, double cost_exponent);
+double grain_steps_per_engine_step(double grains, double cost_exponent);
 
 // Chooses for the lanes: the scenes as asked if they fit the budget (or full detail is asked), else
 // the first level that fits, else the cheapest level (then `fits` is false). A level that would make
