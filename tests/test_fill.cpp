@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "sim/disc_size.h"
 #include "sim/world_builder.h"
 #include "test_helpers.h"
 
@@ -103,4 +104,53 @@ TEST_CASE("seeds change the packing of grains with a size spread", "[fill]") {
     };
     CHECK(first_grain(1).radius_m != first_grain(2).radius_m);
     CHECK(first_grain(1).radius_m == first_grain(1).radius_m);
+}
+
+TEST_CASE("fill.grains_per_disc: as many discs as the 3D fill's grains over k, the same mass, null as before", "[fill]") {
+    struct Case {
+        const char* shell;
+        double r;
+        const char* material;
+    };
+    for (const Case& c : {Case{"hexagon-small", 0.25, "bb"}, Case{"octagon-small", 0.375, "bb"},
+                          Case{"hexagon-small", 0.5, "peas"}}) {
+        const json fill = {{"ratio", c.r}, {"material", c.material}};
+        const Scene columns = test::scene_with({{"shell", c.shell}, {"fill", fill}});
+        CHECK(disc_diameter_m(columns) == columns.fill.material.diameter_m);
+        const ShellProperties p = shell_properties(columns.shell);
+        const size_t column_discs = plan_fill(columns, p, {0.0, 1.0}).grains.size();
+        for (double k : {1.0, 4.0}) {
+            json per_grain = fill;
+            per_grain["grains_per_disc"] = k;
+            const Scene s = test::scene_with({{"shell", c.shell}, {"fill", per_grain}});
+            const FillPlan plan = plan_fill(s, p, {0.0, 1.0});
+            double mass = 0.0;
+            for (const PlannedGrain& g : plan.grains) mass += g.mass_kg;
+            const double wanted = fill_grain_count(s) / k;
+            INFO(c.shell << ", r = " << c.r << ", " << c.material << ", k = " << k << ": " << plan.grains.size()
+                         << " discs for " << wanted << " (columns: " << column_discs << ")");
+            // Within the deposit's packing spread (0.81-0.88 against the 0.85 assumed) and small-pile edges.
+            CHECK(static_cast<double>(plan.grains.size()) == Approx(wanted).epsilon(0.15));
+            CHECK(plan.grains.size() > column_discs);
+            CHECK(mass == Approx(plan.target_mass_kg).epsilon(1e-9));
+            CHECK(plan.target_mass_kg == Approx(c.r * p.inside_volume_m3 * s.fill.material.bulk_density_kg_m3));
+        }
+    }
+}
+
+TEST_CASE("coarser grains with fill.grains_per_disc: discs scale times larger, the same mass", "[fill]") {
+    const Scene s = test::scene_with({{"fill", {{"ratio", 0.25}, {"grains_per_disc", 1.0}}}});
+    const Scene c = with_coarser_grains(s, 2.0);
+    CHECK(disc_diameter_m(c) == Approx(2.0 * disc_diameter_m(s)));
+    CHECK(c.fill.material.diameter_m == s.fill.material.diameter_m);
+}
+
+TEST_CASE("fill.grains_per_disc that makes discs too large or too many is refused naming it", "[fill]") {
+    // k = 1000 in the small hexagon: discs of about 56 mm, wider than the inside.
+    CHECK_THROWS_WITH(test::scene_with({{"fill", {{"ratio", 0.25}, {"grains_per_disc", 1000.0}}}}),
+                      Catch::Contains("fill.grains_per_disc = 1000") && Catch::Contains("allowed"));
+    // One disc per rice grain in the large hexagon, full: some 30,000 discs.
+    CHECK_THROWS_WITH(test::scene_with({{"shell", "hexagon-large"},
+                                        {"fill", {{"ratio", 1.0}, {"material", "rice"}, {"grains_per_disc", 1.0}}}}),
+                      Catch::Contains("fill.grains_per_disc = 1") && Catch::Contains("too many"));
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/disc_size.h"
 #include "sim/geometry.h"
 
 namespace polyroll {
@@ -20,7 +21,7 @@ double speed_bound_m_s(const Scene& s) {
 EngineUnits choose_engine_units(const Scene& s) {
     EngineUnits cm{100.0}, mm{1000.0};
     if (s.fill.ratio <= 0.0) return cm;
-    const double min_radius_m = 0.5 * s.fill.material.diameter_m * (1.0 - s.fill.material.diameter_spread);
+    const double min_radius_m = 0.5 * disc_diameter_m(s) * (1.0 - s.fill.material.diameter_spread);
     if (min_radius_m >= 0.001) return cm;
     // Margin of 2 over the bound: grains inside a spinning shell move faster than its centre.
     if (mm.speed_cap_m_s(s.fidelity) >= 2.0 * speed_bound_m_s(s)) return mm;

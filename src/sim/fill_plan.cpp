@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/disc_size.h"
 #include "sim/errors.h"
 #include "sim/grain_deposition.h"
 #include "sim/rng.h"
@@ -39,9 +40,10 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     plan.surface_level_m = geom::level_for_area_fraction(inner, up, r);
     if (r <= 0.0) return plan;
 
-    const double r_max = 0.5 * m.diameter_m * (1.0 + m.diameter_spread);
+    const double disc_m = disc_diameter_m(scene);
+    const double r_max = 0.5 * disc_m * (1.0 + m.diameter_spread);
     Rng rng(scene.run.seed);
-    auto next_radius = [&] { return 0.5 * m.diameter_m * (1.0 + m.diameter_spread * rng.uniform(-1.0, 1.0)); };
+    auto next_radius = [&] { return 0.5 * disc_m * (1.0 + m.diameter_spread * rng.uniform(-1.0, 1.0)); };
     // Bounded by the validation's grain limit with room for packings denser than its estimate.
     const size_t max_count = static_cast<size_t>(2.0 * kMaxGrains);
     const std::vector<Disc> discs =
@@ -63,7 +65,11 @@ Scene with_coarser_grains(const Scene& scene, double scale) {
     if (!(scale >= 1.0) || !std::isfinite(scale))
         throw InputError(fmt::format("coarser grains: scale {:g} is out of range (allowed: 1 or more, finite)", scale));
     Scene s = scene;
-    s.fill.material.diameter_m *= scale;
+    // Discs `scale` times larger stand for scale^2 times as many grains (disc_size.h).
+    if (s.fill.grains_per_disc)
+        *s.fill.grains_per_disc *= scale * scale;
+    else
+        s.fill.material.diameter_m *= scale;
     return s;
 }
 

@@ -31,6 +31,7 @@ struct MaterialParams {
     double friction = 0.0;             // grain on grain
     double wall_friction = 0.0;        // grain on the shell's walls
     double restitution = 0.0;          // grain on grain and on walls
+    double packing_fraction = 0.0;     // poured 3D packing: bulk density / grain density
     // Grain on the two lids (end faces), which a 2D disc never touches: a force on each grain
     // opposing its sliding relative to the shell, with the lateral pressure of the pile above it
     // (sim/lid_friction.h). 0 leaves the term out.
@@ -40,6 +41,11 @@ struct MaterialParams {
 struct FillParams {
     double ratio = 0.0;  // r: fraction of the inside volume occupied by bulk grains, 0..1
     MaterialParams material;
+    // What one 2D disc stands for (sim/disc_size.h). Unset: a column of grains through the box's
+    // depth, so a disc is the grain's size. A number k: k of the 3D fill's grains, so the discs are
+    // as many as the fill's grains divided by k, sized to fit the cross-section (k = 1: one disc per
+    // grain, each with a grain's mass).
+    std::optional<double> grains_per_disc;
 };
 
 struct RampParams {

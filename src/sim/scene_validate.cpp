@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/disc_size.h"
 #include "sim/errors.h"
 #include "sim/geometry.h"
 #include "sim/scene_fields.h"
@@ -46,14 +47,28 @@ void check_range(const SceneField& f, const Scene& s, const Where& where) {
                                  unit.empty() ? "" : " " + unit, f.max_open ? ", exclusive" : ""));
 }
 
-// The fill must not need more grains than a run can afford.
+// Discs sized from fill.grains_per_disc must fit the shell and the engine as grains of that size would
+// (the limits of fill.material.diameter_m), and the fill must not need more discs than a run can afford.
 void check_grain_count(const Scene& s, const Where& where) {
+    const double disc_m = disc_diameter_m(s);
+    if (s.fill.grains_per_disc) {
+        const SceneField& d = scene_field("fill.material.diameter_m");
+        const double min_m = field_min(d, s), max_m = field_max(d, s);
+        if (disc_m < min_m || disc_m > max_m)
+            throw InputError(fmt::format(
+                "fill.grains_per_disc = {:g}{} makes discs {:g} m across (allowed: {:g} to {:g} m, the limits of "
+                "fill.material.diameter_m)",
+                *s.fill.grains_per_disc, from(where, "fill.grains_per_disc"), disc_m, min_m, max_m));
+    }
     const double grains = estimated_grain_count(s);
-    if (grains > kMaxGrains)
+    if (grains > kMaxGrains) {
+        const std::string field = s.fill.grains_per_disc ? "fill.grains_per_disc" : "fill.material.diameter_m";
+        const double value = s.fill.grains_per_disc ? *s.fill.grains_per_disc : s.fill.material.diameter_m;
         throw InputError(fmt::format(
-            "fill: about {:.0f} grains of fill.material.diameter_m = {:g} m{} in this shell is too many "
+            "fill: about {:.0f} grains {:g} m across ({} = {:g}{}) in this shell is too many "
             "(allowed: at most {:.0f}; use larger grains, a smaller fill.ratio or a smaller shell)",
-            grains, s.fill.material.diameter_m, from(where, "fill.material.diameter_m"), kMaxGrains));
+            grains, disc_m, field, value, from(where, field), kMaxGrains));
+    }
 }
 
 // The release turns the shell about its downhill vertex; past one face's turn (360/n degrees, less the
@@ -84,7 +99,7 @@ std::string_view top_section(std::string_view path) { return path.substr(0, path
 double estimated_grain_count(const Scene& s) {
     if (s.fill.ratio <= 0.0) return 0.0;
     const ShellProperties p = shell_properties(s.shell);
-    const double d = s.fill.material.diameter_m;
+    const double d = disc_diameter_m(s);
     // Hexagonal packing of discs covers pi / (2 sqrt 3) = 0.907 of the plane.
     return 0.907 * s.fill.ratio * p.inner_area_m2 / (geom::kPi * d * d / 4.0);
 }
