@@ -198,8 +198,15 @@ private:
         const json& sec = values_.at(std::string(section_of(f.path)));
         const std::string key(key_of(f.path));
         if (f.type == FieldType::preset) return sec.value("preset", "");
-        if (!sec.contains(key))  // only when a replaced assets/defaults.json leaves a field out
-            throw InputError(fmt::format("{} is not set (assets/defaults.json must give every field)", field));
+        if (!sec.contains(key)) {  // only when a replaced asset file leaves a field out
+            const std::string preset = sec.value("preset", "");
+            throw InputError(
+                preset.empty()
+                    ? fmt::format("{} is not set (assets/defaults.json must give every field)", field)
+                    : fmt::format("{} is not set: preset '{}' does not give it, nor does assets/defaults.json "
+                                  "(an asset file from an older version? add the field to the preset)",
+                                  field, preset));
+        }
         const json& v = sec.at(key);
         switch (f.type) {
             case FieldType::integer: return integer(v, field);
