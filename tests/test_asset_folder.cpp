@@ -156,6 +156,21 @@ TEST_CASE("a replacement asset file that is not JSON is one line naming it, exit
     fs::remove_all(dir);
 }
 
+TEST_CASE("a replacement materials.json without a field is refused naming the field and the preset", "[assets][cli][bad-input]") {
+    // As a materials.json written before packing_fraction existed would be.
+    const fs::path dir = test::scratch_dir("asset-folder-old-materials", true);
+    json materials = bundled("materials.json");
+    for (auto& [name, preset] : materials.at("presets").items()) preset.at("values").erase("packing_fraction");
+    std::ofstream(dir / "materials.json") << materials.dump(2);
+    const fs::path out = dir / "run";
+    const test::CommandResult r = polyroll_with(dir, "run --out " + out.string());
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find("fill.material.packing_fraction is not set: preset 'bb' does not give it") != std::string::npos);
+    CHECK(!fs::exists(out / "summary.json"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("a fourth material in a scratch asset folder shows in the frames", "[assets][render]") {
     const fs::path dir = lentil_assets("frames");
     const UsingAssets using_them(dir);
