@@ -106,7 +106,7 @@ TEST_CASE("seeds change the packing of grains with a size spread", "[fill]") {
     CHECK(first_grain(1).radius_m == first_grain(1).radius_m);
 }
 
-TEST_CASE("fill.grains_per_disc: as many discs as the 3D fill's grains over k, the same mass, null as before", "[fill]") {
+TEST_CASE("fill.material.grains_per_disc: as many discs as the 3D fill's grains over k, the same mass, null columns", "[fill]") {
     struct Case {
         const char* shell;
         double r;
@@ -114,14 +114,14 @@ TEST_CASE("fill.grains_per_disc: as many discs as the 3D fill's grains over k, t
     };
     for (const Case& c : {Case{"hexagon-small", 0.25, "bb"}, Case{"octagon-small", 0.375, "bb"},
                           Case{"hexagon-small", 0.5, "peas"}}) {
-        const json fill = {{"ratio", c.r}, {"material", c.material}};
+        const json fill = {{"ratio", c.r}, {"material", {{"preset", c.material}, {"grains_per_disc", nullptr}}}};
         const Scene columns = test::scene_with({{"shell", c.shell}, {"fill", fill}});
         CHECK(disc_diameter_m(columns) == columns.fill.material.diameter_m);
         const ShellProperties p = shell_properties(columns.shell);
         const size_t column_discs = plan_fill(columns, p, {0.0, 1.0}).grains.size();
         for (double k : {1.0, 4.0}) {
             json per_grain = fill;
-            per_grain["grains_per_disc"] = k;
+            per_grain["material"]["grains_per_disc"] = k;
             const Scene s = test::scene_with({{"shell", c.shell}, {"fill", per_grain}});
             const FillPlan plan = plan_fill(s, p, {0.0, 1.0});
             double mass = 0.0;
@@ -138,19 +138,31 @@ TEST_CASE("fill.grains_per_disc: as many discs as the 3D fill's grains over k, t
     }
 }
 
-TEST_CASE("coarser grains with fill.grains_per_disc: discs scale times larger, the same mass", "[fill]") {
-    const Scene s = test::scene_with({{"fill", {{"ratio", 0.25}, {"grains_per_disc", 1.0}}}});
+TEST_CASE("coarser grains with fill.material.grains_per_disc: discs scale times larger, the same mass", "[fill]") {
+    const Scene s = test::scene_with({{"fill", {{"ratio", 0.25}, {"material", {{"grains_per_disc", 1.0}}}}}});
     const Scene c = with_coarser_grains(s, 2.0);
     CHECK(disc_diameter_m(c) == Approx(2.0 * disc_diameter_m(s)));
     CHECK(c.fill.material.diameter_m == s.fill.material.diameter_m);
 }
 
-TEST_CASE("fill.grains_per_disc that makes discs too large or too many is refused naming it", "[fill]") {
+TEST_CASE("fill.material.grains_per_disc that makes discs too large or too many is refused naming it", "[fill]") {
     // k = 1000 in the small hexagon: discs of about 56 mm, wider than the inside.
-    CHECK_THROWS_WITH(test::scene_with({{"fill", {{"ratio", 0.25}, {"grains_per_disc", 1000.0}}}}),
-                      Catch::Contains("fill.grains_per_disc = 1000") && Catch::Contains("allowed"));
+    CHECK_THROWS_WITH(test::scene_with({{"fill", {{"ratio", 0.25}, {"material", {{"grains_per_disc", 1000.0}}}}}}),
+                      Catch::Contains("fill.material.grains_per_disc = 1000") && Catch::Contains("allowed"));
     // One disc per rice grain in the large hexagon, full: some 30,000 discs.
     CHECK_THROWS_WITH(test::scene_with({{"shell", "hexagon-large"},
-                                        {"fill", {{"ratio", 1.0}, {"material", "rice"}, {"grains_per_disc", 1.0}}}}),
-                      Catch::Contains("fill.grains_per_disc = 1") && Catch::Contains("too many"));
+                                        {"fill", {{"ratio", 1.0}, {"material", {{"preset", "rice"}, {"grains_per_disc", 1.0}}}}}}),
+                      Catch::Contains("fill.material.grains_per_disc = 1") && Catch::Contains("too many"));
+}
+
+TEST_CASE("the bundled materials: BBs and peas two grains per disc, rice in columns, the old key says where it went",
+          "[fill]") {
+    CHECK(test::scene_with(json::object()).fill.material.grains_per_disc == 2.0);
+    CHECK(test::scene_with({{"fill", {{"material", "peas"}}}}).fill.material.grains_per_disc == 2.0);
+    CHECK(!test::scene_with({{"fill", {{"material", "rice"}}}}).fill.material.grains_per_disc);
+    // The default scene: 124 discs of 2.6 mm where the columns were 21 of 6 mm (docs/physics.md).
+    const Scene s = test::scene_with(json::object());
+    CHECK(disc_diameter_m(s) == Approx(0.00257).epsilon(0.01));
+    CHECK(test::scene_error_of(R"({"fill": {"grains_per_disc": 2}})").find("it moved to fill.material.grains_per_disc") !=
+          std::string::npos);
 }

@@ -83,7 +83,7 @@ TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, n
         {"overflow-number", R"({"fill": {"ratio": 1e999}})", "", "fill.ratio"},
         {"huge-sides", R"({"shell": {"sides": 1000000000}})", "", "shell.sides"},
         {"huger-sides", R"({"shell": {"sides": 100000000000000000000}})", "", "shell.sides"},
-        {"1e7-grains", R"({"shell": {"inner_circumradius_m": 1.0}, "fill": {"ratio": 1, "material": {"diameter_m": 0.0005}}})",
+        {"1e7-grains", R"({"shell": {"inner_circumradius_m": 1.0}, "fill": {"ratio": 1, "material": {"diameter_m": 0.0005, "grains_per_disc": null}}})",
          "", "too many"},
         {"tiny-grains", R"({"fill": {"ratio": 1, "material": {"diameter_m": 1e-9}}})", "", "fill.material.diameter_m"},
         {"negative-radius", R"({"shell": {"inner_circumradius_m": -0.1}})", "", "shell.inner_circumradius_m"},

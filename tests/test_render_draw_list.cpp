@@ -14,6 +14,7 @@
 #include "render/snapshot.h"
 #include "render/ticks.h"
 #include "render/world_draw.h"
+#include "sim/disc_size.h"
 #include "sim/geometry.h"
 #include "sim/simulation.h"
 #include "sim/world_builder.h"
@@ -289,7 +290,7 @@ TEST_CASE("a snapshot copies the simulation's state in metres", "[render]") {
     CHECK(s.shell_centre_m.y < 0.06);
     for (const GrainState& g : s.grains) {
         CHECK(geom::length(g.position_m - s.shell_centre_m) < 0.04);
-        CHECK(g.radius_m == Approx(scene.fill.material.diameter_m / 2).epsilon(0.05));
+        CHECK(g.radius_m == Approx(disc_diameter_m(scene) / 2).epsilon(0.05));
     }
     CHECK(s.time_s == Approx(0.05));
     CHECK(s.speed_history.back().time_s == Approx(s.time_s));

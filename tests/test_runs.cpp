@@ -175,7 +175,7 @@ TEST_CASE("held on a vertex, the whole polygon with its fill is released just pa
 TEST_CASE("one disc per grain: energy never created and every disc stays inside", "[runs]") {
     // 251 discs of 1.8 mm (the engine's 1 mm unit) in the default scene: 2 s covers the pour's
     // settling, the release and several face impacts.
-    const Scene s = test::scene_with({{"fill", {{"grains_per_disc", 1.0}}}, {"run", {{"time_limit_s", 2.0}}}});
+    const Scene s = test::scene_with({{"fill", {{"material", {{"grains_per_disc", 1.0}}}}}, {"run", {{"time_limit_s", 2.0}}}});
     const RunResult r = checked_run(s);
     CHECK(r.grains > 200);
     CHECK(!r.measured.impacts.empty());

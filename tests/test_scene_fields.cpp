@@ -88,7 +88,7 @@ TEST_CASE("validation messages from the table are the ones the code always gave"
     CHECK(test::scene_error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})")
               .starts_with("release.tilt_deg = 10 (from test) is too large for n = 64 at 20 degrees"));
     CHECK(test::scene_error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face)");
-    CHECK(test::scene_error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, grains_per_disc, got 5");
-    CHECK(test::scene_error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material, grains_per_disc)");
+    CHECK(test::scene_error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, got 5");
+    CHECK(test::scene_error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material)");
     CHECK(test::scene_error_of(R"({"shell": {"sidez": 6}})").starts_with("test: unknown key 'shell.sidez' (allowed: preset, sides, "));
 }

@@ -1,4 +1,4 @@
-// What one 2D disc stands for, and so how large the discs are (fill.grains_per_disc).
+// What one 2D disc stands for, and so how large the discs are (fill.material.grains_per_disc).
 //
 // The cross-section holds the fill as discs in a plane. Read as a slice of the box, one disc is a
 // column of grains through the box's depth, the grain's own size (grains_per_disc unset): a small

@@ -66,8 +66,8 @@ Scene with_coarser_grains(const Scene& scene, double scale) {
         throw InputError(fmt::format("coarser grains: scale {:g} is out of range (allowed: 1 or more, finite)", scale));
     Scene s = scene;
     // Discs `scale` times larger stand for scale^2 times as many grains (disc_size.h).
-    if (s.fill.grains_per_disc)
-        *s.fill.grains_per_disc *= scale * scale;
+    if (s.fill.material.grains_per_disc)
+        *s.fill.material.grains_per_disc *= scale * scale;
     else
         s.fill.material.diameter_m *= scale;
     return s;

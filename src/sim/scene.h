@@ -36,16 +36,17 @@ struct MaterialParams {
     // opposing its sliding relative to the shell, with the lateral pressure of the pile above it
     // (sim/lid_friction.h). 0 leaves the term out.
     double lid_friction = 0.0;
+    // What one 2D disc stands for (sim/disc_size.h). Unset: a column of grains through the box's
+    // depth, so a disc is the grain's size. A number k: k of the 3D fill's grains, so the discs are
+    // as many as the fill's grains divided by k, sized to fit the cross-section (k = 1: one disc per
+    // grain, each with a grain's mass). A material's value: how fine its 2D pile must be to flow as
+    // the 3D fill does, weighed against its cost (assets/materials.json says why for each).
+    std::optional<double> grains_per_disc;
 };
 
 struct FillParams {
     double ratio = 0.0;  // r: fraction of the inside volume occupied by bulk grains, 0..1
     MaterialParams material;
-    // What one 2D disc stands for (sim/disc_size.h). Unset: a column of grains through the box's
-    // depth, so a disc is the grain's size. A number k: k of the 3D fill's grains, so the discs are
-    // as many as the fill's grains divided by k, sized to fit the cross-section (k = 1: one disc per
-    // grain, each with a grain's mass).
-    std::optional<double> grains_per_disc;
 };
 
 struct RampParams {

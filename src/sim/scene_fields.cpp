@@ -142,8 +142,9 @@ std::vector<SceneField> make_table() {
             member<&Scene::fill, &FillParams::material, &MaterialParams::packing_fraction>())
             .range(0.3, 0.74)
             .help("share of the poured fill's bulk volume taken by grains (bulk density / grain density), no unit; "
-                  "counts the 3D fill's grains for fill.grains_per_disc"),
-        Row("fill.grains_per_disc", T::optional_number, member<&Scene::fill, &FillParams::grains_per_disc>())
+                  "counts the 3D fill's grains for fill.material.grains_per_disc"),
+        Row("fill.material.grains_per_disc", T::optional_number,
+            member<&Scene::fill, &FillParams::material, &MaterialParams::grains_per_disc>())
             .range(1.0, 1000.0)
             .help("how many of the 3D fill's grains one 2D disc stands for (1: one disc per grain, discs sized to "
                   "fit the cross-section); null: a column through the box's depth, discs of the grain's size"),

@@ -180,9 +180,13 @@ private:
         }
         for (const auto& [k, v] : value.items()) {
             if (k == "preset") continue;
-            if (std::find(sec.keys.begin(), sec.keys.end(), k) == sec.keys.end())
-                throw InputError(fmt::format("{}: unknown key '{}.{}' (allowed: {}{})", layer_->origin, path, k,
+            if (std::find(sec.keys.begin(), sec.keys.end(), k) == sec.keys.end()) {
+                // fill.grains_per_disc (one release's name) became a material's value: say where it went.
+                const bool moved = path == "fill" && k == "grains_per_disc";
+                throw InputError(fmt::format("{}: unknown key '{}.{}' ({}allowed: {}{})", layer_->origin, path, k,
+                                             moved ? "it moved to fill.material.grains_per_disc; " : "",
                                              sec.kind ? "preset, " : "", join(sec.keys)));
+            }
             if (const Section* sub = section_at(path + "." + k)) {
                 section(v, *sub);
                 continue;

@@ -98,6 +98,9 @@ std::vector<json> parse_grid_values(const std::string& name, const std::string& 
             for (double v : inclusive_range(name, *a, *b, *s)) values.push_back(number_json(v, integral));
         } else if (auto v = parse_number(item)) {
             values.push_back(number_json(*v, looks_integral(item)));
+        } else if (item == "null") {
+            // An optional field's "not set" (fill.material.grains_per_disc=null: column discs).
+            values.push_back(json(nullptr));
         } else {
             values.push_back(json(item));
         }
