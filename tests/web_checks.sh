@@ -30,9 +30,9 @@ step() { echo "== web_checks [$(( $(date +%s) - t0 )) s]: $*"; }
 
 # Frames for the summary, per scene (the page advances 1/60 s per frame whatever the machine's
 # speed): enough that every lane has ended (stopped or rolled to the end), so its behaviour is final.
-# The default scene stops at about 1.05 s natively, 3.6 s in the page (see below); the race's last
-# lane ends at about 7.0 s (measured).
-default_frames=${POLYROLL_WEB_DEFAULT_FRAMES:-240}
+# The default scene rolls to the end of the ramp at about 17.7 s natively (two BBs per disc, 124
+# discs); the race's last lane (the full hexagon) ends at about 6.6 s (measured).
+default_frames=${POLYROLL_WEB_DEFAULT_FRAMES:-1200}
 race_frames=${POLYROLL_WEB_RACE_FRAMES:-450}
 # The screenshots are taken after fewer frames (cheaper; the polygons are moving).
 shot_frames=${POLYROLL_WEB_SHOT_FRAMES:-45}
@@ -97,10 +97,14 @@ check_scene() {
         line=$(grep "^polyroll-web: lane $i:" "$scratch/$name.out")
         impact=$(grep "^polyroll-web: lane $i first impact:" "$scratch/$name.out" || true)
         python3 - "$line" "$scratch/$name-lane$i.native.json" "$name lane $i" "$strict" "$impact" \
-            "$scratch/$name-lane$i.run/impacts.csv" <<'PY'
-import csv, json, re, sys
+            "$scratch/$name-lane$i.run/impacts.csv" "$scratch/$name-lane$i.json" "$scratch/$name-lane$i" <<'PY'
+import csv, json, os, re, subprocess, sys
 line, native_path, label, strict = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4] == "strict"
-impact_line, native_impacts = sys.argv[5], sys.argv[6]
+# A partly filled shell's end is at a tipping point (see the note above check_scene): only an empty
+# or a full one's end is compared strictly; every lane's first impact is.
+fill_ratio = json.load(open(native_path))["scene"]["fill"]["ratio"]
+strict = strict and fill_ratio in (0, 1)
+impact_line, native_impacts, lane_scene, work = sys.argv[5], sys.argv[6], sys.argv[7], sys.argv[8]
 # The first face impact must agree in every scene, strictly: up to it the page and the native run
 # follow the same path (within floating-point details); only after it can a tipping point part them.
 rows = list(csv.DictReader(open(native_impacts)))
@@ -121,7 +125,30 @@ if rows or impact_line:
     print(f"  {label} first impact: page {page[0]:.4f} s, {page[1]:.6f} m, {page[2]:.6g} J before; polyroll run "
           f"{native[0]:.4f} s, {native[1]:.6f} m, {native[2]:.6g} J (time {1000 * dt:.1f} ms apart, position {100 * dx:.3f} %)")
     if dt > step_s * 1.000001 or dx > 0.01:
-        sys.exit(f"web_checks: {label}: the first impact differs (allowed: one tracker step, {1000 * step_s:g} ms, in time; 1 % in position)")
+        # A fine pile settles, before the release, into one of a few packings, and a change in the
+        # last bits picks which (see the note above check_scene): the full hexagon of 217 discs
+        # reaches its first impact at 0.328 s natively at 20 and 20.0001 deg, at 0.330 s (0.4 mm
+        # further) at 19.999 deg. So a page whose first impact is not the native run's must match
+        # the native run of the same scene with its angle moved by at most 0.001 deg.
+        def first_impact(angle_change_deg):
+            scene = json.load(open(lane_scene))
+            scene.setdefault("ramp", {})["angle_deg"] = float(scene["ramp"]["angle_deg"]) + angle_change_deg
+            path, out = f"{work}.{angle_change_deg:+g}.json", f"{work}.{angle_change_deg:+g}.run"
+            json.dump(scene, open(path, "w"))
+            subprocess.run(["build/polyroll", "run", "--scene", path, "--out", out, "--force"], capture_output=True)
+            rows = list(csv.DictReader(open(os.path.join(out, "impacts.csv"))))
+            return [float(rows[0][k]) for k in ("time_s", "position_m")] if rows else None
+        matched = None
+        for change in (1e-4, -1e-4, 1e-3, -1e-3):
+            other = first_impact(change)
+            if other and abs(page[0] - other[0]) <= step_s * 1.000001 and abs(page[1] - other[1]) <= 0.01 * abs(other[1]):
+                matched = (change, other)
+                break
+        if matched is None:
+            sys.exit(f"web_checks: {label}: the first impact differs (allowed: one tracker step, {1000 * step_s:g} ms, "
+                     "in time and 1 % in position from the native run at the same angle or at most 0.001 deg from it)")
+        print(f"  {label} first impact: matches the native run at {matched[0]:+g} deg: {matched[1][0]:.4f} s, "
+              f"{matched[1][1]:.6f} m (the pile settled into another packing)")
 m = re.match(r"polyroll-web: lane \d+: behaviour (\S+), distance (\S+) m at (\S+) s", line)
 if not m:
     sys.exit(f"web_checks: {label}: unreadable line: {line}")
@@ -159,15 +186,15 @@ PY
     fi
 }
 
-# The default scene (a small hexagon a quarter full of BBs at 20 degrees) is at a tipping point: its
-# grains are poured and settle for 1 s in Box2D, a chaotic process, and the packing they end in
-# decides whether the shell stops at its first impact (0.030 m natively) or rolls on (the native run
-# with --seed 2 stops at 0.066 m instead, and so does the native run at 19.9999 deg instead of 20). WebAssembly's sinf/cosf (musl) and glibc's differ in the
-# last bit for some angles, which is enough: the page's default run rolls to 0.319 m (measured on
-# 2026-11-24). So its final summary is compared and reported, not failed; its first impact must
-# agree like every lane's (it does: the same step, position 0.02 % apart), and
-# the race's three lanes, whose outcomes are not at a tipping point, must agree in full (they do,
-# within 0.4 %).
+# A partly filled shell's end is at a tipping point: its grains are poured and settle for 1 s in
+# Box2D, a chaotic process, and the packing they end in decides after which impact a shell showing
+# the third behaviour stops. WebAssembly's sinf/cosf (musl) and glibc's differ in the last bit for
+# some angles, which is enough: natively, the race's 0.4-filled hexagon (196 discs) stops after
+# 0.139 m at 20 deg, after 0.175 m at 19.9999 deg and after 1.260 m at 20.0001 deg (measured on
+# 2026-11-24; with column discs the default scene was the one at a tipping point: the page's run
+# rolled to 0.319 m where the native one stopped at its first impact). So a partly filled lane's
+# final summary is compared and reported, not failed; its first impact must agree like every lane's,
+# and the empty and full lanes, whose outcomes are not at a tipping point, must agree in full.
 check_scene race "preset=race" "$race_frames" strict
 check_scene default "preset=default" "$default_frames" report
 
