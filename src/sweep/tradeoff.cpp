@@ -34,6 +34,11 @@ double diameter_m(const std::string& material) {
     return assets::preset_values(assets::Kind::material, material).at("diameter_m").get<double>();
 }
 
+// A material preset's grains per disc (null: column discs of the grain's size).
+json grains_per_disc(const std::string& material) {
+    return assets::preset_values(assets::Kind::material, material).value("grains_per_disc", json());
+}
+
 struct Variant {
     std::string model, preset, kind;  // kind: "", "halved", "coarse x1.5", "coarse x2", "seed 2"
     std::string label() const {
@@ -68,7 +73,7 @@ SweepPlan tradeoff_plan() {
     plan.base = kBase;
     plan.fields = {"shell.sides",     "fill.ratio",         "fill.material.preset", "ramp.angle_deg",
                    "run.model",       "fidelity.preset",    "fidelity.substeps",    "fill.material.diameter_m",
-                   "run.seed"};
+                   "fill.material.grains_per_disc", "run.seed"};
     plan.flags = plan.fields;
     std::vector<std::tuple<int, double, std::string, double>> scenes;
     for (int n : kSides)
@@ -90,10 +95,18 @@ SweepPlan tradeoff_plan() {
         // The spread a different grain packing gives, at the standard preset: the noise floor.
         with({{"run.model", "grains"}, {"fidelity.preset", "standard"}, {"run.seed", 2u}});
         if (r > 0.0) {
-            // The same fill mass (r x volume x bulk density) in fewer, larger grains.
-            for (double k : {1.5, 2.0})
-                with({{"run.model", "grains"}, {"fidelity.preset", "standard"},
-                      {"fill.material.diameter_m", diameter_m(material) * k}, {"run.seed", 1u}});
+            // The same fill mass (r x volume x bulk density) in fewer discs k times larger: as the
+            // sandbox's budget makes them (with_coarser_grains), a disc standing for k^2 times the
+            // grains where the material sizes its discs by grains_per_disc, else grains k times larger.
+            const json per_disc = grains_per_disc(material);
+            for (double k : {1.5, 2.0}) {
+                const json coarser = per_disc.is_number()
+                                         ? json{{"fill.material.grains_per_disc", per_disc.get<double>() * k * k}}
+                                         : json{{"fill.material.diameter_m", diameter_m(material) * k}};
+                json extra = {{"run.model", "grains"}, {"fidelity.preset", "standard"}, {"run.seed", 1u}};
+                extra.update(coarser);
+                with(extra);
+            }
         }
         // The reduced models integrate to rounding error: the fidelity preset does not change them.
         for (const char* model : {"rigid", "segments"})
@@ -123,6 +136,12 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
         if (p.contains("fill.material.diameter_m")) {
             const double k = p.at("fill.material.diameter_m").get<double>() /
                              diameter_m(p.at("fill.material.preset").get<std::string>());
+            row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
+        }
+        if (p.contains("fill.material.grains_per_disc")) {
+            // Discs k times larger stand for k^2 times the grains.
+            const double k = std::sqrt(p.at("fill.material.grains_per_disc").get<double>() /
+                                       grains_per_disc(p.at("fill.material.preset").get<std::string>()).get<double>());
             row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
         }
         if (p.at("run.seed") != 1) row.v.kind = "seed " + p.at("run.seed").dump();
