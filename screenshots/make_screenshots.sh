@@ -21,7 +21,7 @@ cp "$work/rice/frame_000090.png" "$here/render-follow-rice.png"            # t =
 sandbox() { xvfb-run -a -s "-screen 0 1280x800x24" "$build/polyroll-sandbox" "$@" >/dev/null; }
 sandbox --screenshot "$here/sandbox-default.png" --frames 30                      # t = 0.5 s
 sandbox --preset race --screenshot "$here/sandbox-race.png" --frames 80           # t = 1.33 s
-sandbox --preset hexagon-bb --screenshot "$here/sandbox-stopped.png" --frames 960 # past its stop (14.96 s)
+sandbox --preset hexagon-bb --screenshot "$here/sandbox-stopped.png" --frames 300 # past its stop (3.72 s)
 # The physics budget's cheaper model of the large rice hexagon, named in the panel and the status line.
 sandbox --preset hexagon-large-rice --screenshot "$here/sandbox-budget.png" --frames 60  # t = 1 s
 # The web page in headless Chromium (needs build-web/, README's web command): the race after 150

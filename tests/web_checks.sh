@@ -165,7 +165,7 @@ if not (ok_behaviour and ok_distance):
     message = f"web_checks: {label}: the page and polyroll run disagree (allowed: same behaviour, distance within 1 %)"
     if strict:
         sys.exit(message)
-    print(f"  {message}: reported, not failed (see the note on the default scene above check_scene)")
+    print(f"  {message}: reported, not failed (see the note above check_scene)")
 PY
         i=$((i + 1))
     done
