@@ -63,6 +63,12 @@ TEST_CASE("grid values: lists, inclusive ranges without accumulated error, types
     REQUIRE(mixed.size() == 3);
     CHECK(mixed[1] == "rice");
     CHECK(parse_grid_values("--angle", "2.5")[0].get<double>() == 2.5);
+    // null unsets an optional field (column discs against two grains per disc).
+    auto per_disc = parse_grid_values("--set fill.material.grains_per_disc", "null,2");
+    REQUIRE(per_disc.size() == 2);
+    CHECK(per_disc[0].is_null());
+    CHECK(per_disc[1] == 2);
+    CHECK(value_text(per_disc[0]) == "null");
     // A range whose stop is not on the grid stops below it.
     auto partial = parse_grid_values("--angle", "0:1:0.3");
     REQUIRE(partial.size() == 4);

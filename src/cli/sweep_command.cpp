@@ -301,7 +301,8 @@ Action add_sweep_command(CLI::App& app) {
     }
     a->scene_options.push_back(sub->add_option("--set,--param", a->sets,
                                                "any scene field: FIELD=VALUES, e.g. --set shell.depth_m=0.05:0.07:0.01 "
-                                               "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m)")
+                                               "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m; null unsets an "
+                                               "optional field)")
                                    ->group("Grid"));
     a->scene_options.push_back(
         sub->add_option("--seed", a->seed_list, "seeds for the grain packing, e.g. 1,2,3")->group("Grid"));

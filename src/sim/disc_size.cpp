@@ -17,8 +17,8 @@ double fill_grain_count(const Scene& scene) {
 
 double disc_diameter_m(const Scene& scene) {
     const MaterialParams& m = scene.fill.material;
-    if (!scene.fill.material.grains_per_disc) return m.diameter_m;
-    const double k = *scene.fill.material.grains_per_disc;
+    if (!m.grains_per_disc) return m.diameter_m;
+    const double k = *m.grains_per_disc;
     return m.diameter_m *
            std::sqrt(2.0 / 3.0 * k * (kDiscPackingFraction / m.packing_fraction) * m.diameter_m / scene.shell.depth_m);
 }

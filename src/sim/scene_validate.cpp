@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -47,23 +48,25 @@ void check_range(const SceneField& f, const Scene& s, const Where& where) {
                                  unit.empty() ? "" : " " + unit, f.max_open ? ", exclusive" : ""));
 }
 
-// Discs sized from fill.material.grains_per_disc must fit the shell and the engine as grains of that size would
-// (the limits of fill.material.diameter_m), and the fill must not need more discs than a run can afford.
+// Discs sized from fill.material.grains_per_disc must fit the shell and the engine as grains of that
+// size would (the limits of fill.material.diameter_m), and the fill must not need more discs than a
+// run can afford.
 void check_grain_count(const Scene& s, const Where& where) {
     const double disc_m = disc_diameter_m(s);
-    if (s.fill.material.grains_per_disc) {
+    const std::optional<double>& per_disc = s.fill.material.grains_per_disc;
+    if (per_disc) {
         const SceneField& d = scene_field("fill.material.diameter_m");
         const double min_m = field_min(d, s), max_m = field_max(d, s);
         if (disc_m < min_m || disc_m > max_m)
             throw InputError(fmt::format(
-                "fill.material.grains_per_disc = {:g}{} makes discs {:g} m across (allowed: {:g} to {:g} m, the limits of "
-                "fill.material.diameter_m)",
-                *s.fill.material.grains_per_disc, from(where, "fill.material.grains_per_disc"), disc_m, min_m, max_m));
+                "fill.material.grains_per_disc = {:g}{} makes discs {:g} m across (allowed: {:g} to {:g} m, the "
+                "limits of fill.material.diameter_m)",
+                *per_disc, from(where, "fill.material.grains_per_disc"), disc_m, min_m, max_m));
     }
     const double grains = estimated_grain_count(s);
     if (grains > kMaxGrains) {
-        const std::string field = s.fill.material.grains_per_disc ? "fill.material.grains_per_disc" : "fill.material.diameter_m";
-        const double value = s.fill.material.grains_per_disc ? *s.fill.material.grains_per_disc : s.fill.material.diameter_m;
+        const std::string field = per_disc ? "fill.material.grains_per_disc" : "fill.material.diameter_m";
+        const double value = per_disc ? *per_disc : s.fill.material.diameter_m;
         throw InputError(fmt::format(
             "fill: about {:.0f} grains {:g} m across ({} = {:g}{}) in this shell is too many "
             "(allowed: at most {:.0f}; use larger grains, a smaller fill.ratio or a smaller shell)",
