@@ -13,8 +13,13 @@ namespace polyroll::cli {
 
 namespace {
 
-std::string value_text(const nlohmann::ordered_json& v) {
-    if (v.is_null()) return "from volumes";
+// What null means for the optional preset values.
+std::string value_text(std::string_view key, const nlohmann::ordered_json& v) {
+    if (v.is_null()) {
+        if (key == "lid_mass_fraction") return "null (split by volume)";
+        if (key == "grains_per_disc") return "null (a column of grains through the box)";
+        return "null";
+    }
     if (v.is_number_float()) return fmt::format("{:g}", v.get<double>());
     return v.dump();
 }
@@ -40,7 +45,7 @@ int list(bool as_json) {
             fmt::print("  {:<18} {}\n", name, entry.at("description").get<std::string>());
             std::string values;
             for (const auto& [key, v] : entry.at("values").items())
-                values += fmt::format("{}{} = {}", values.empty() ? "" : ", ", key, value_text(v));
+                values += fmt::format("{}{} = {}", values.empty() ? "" : ", ", key, value_text(key, v));
             fmt::print("  {:<18} {}\n", "", values);
         }
         fmt::print("\n");
