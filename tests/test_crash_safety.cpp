@@ -4,6 +4,7 @@
 // uninterrupted command's own duration, so the test means the same on a fast build and under ASan.
 #include <catch2/catch.hpp>
 
+#include "sim/atomic_file.h"
 #include "test_helpers.h"
 
 #include <algorithm>
@@ -266,4 +267,30 @@ TEST_CASE("a folder holding only a killed process's probe or temporary is used a
         fs::create_directories(dir);
     }
     fs::remove_all(dir);
+}
+
+TEST_CASE("commands creating the same new output folder at once all proceed (shards started together)",
+          "[hardening][crash-safety]") {
+    // Two calibration shards started side by side both found the folder missing; the one that lost
+    // the race to create it stopped with "cannot create the folder (unknown error)", and the other
+    // waited for it for ever. Each round races threads on one new folder; every one must be let in.
+    const fs::path base = scratch("same-folder");
+    for (int round = 0; round < 20; ++round) {
+        const fs::path dir = base / std::to_string(round) / "out";
+        std::vector<std::thread> threads;
+        std::vector<int> failed(4, 0);
+        for (size_t t = 0; t < failed.size(); ++t)
+            threads.emplace_back([&, t] {
+                try {
+                    polyroll::prepare_output_dir(dir, true, "");
+                } catch (const std::exception&) {
+                    failed[t] = 1;
+                }
+            });
+        for (std::thread& t : threads) t.join();
+        INFO("round " << round);
+        CHECK(std::count(failed.begin(), failed.end(), 1) == 0);
+        CHECK(fs::is_directory(dir));
+    }
+    fs::remove_all(base);
 }

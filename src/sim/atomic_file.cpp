@@ -65,22 +65,25 @@ void remove_stale_temporaries(const fs::path& dir) {
 std::optional<fs::path> prepare_output_dir(const fs::path& dir, bool force, std::string_view remedy) {
     std::error_code ec;
     std::optional<fs::path> created;
-    if (fs::exists(dir, ec)) {
-        if (!fs::is_directory(dir, ec))
-            throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
-        remove_stale_temporaries(dir);
-        if (!force && !fs::is_empty(dir, ec))
-            throw InputError(fmt::format("--out {}: folder exists and is not empty ({})", dir.string(), remedy));
-    } else {
+    if (!fs::exists(dir, ec)) {
         // The first missing ancestor is what to remove if the run fails.
         fs::path top = fs::absolute(dir, ec).lexically_normal();
         if (!top.has_filename()) top = top.parent_path();
         while (top.has_parent_path() && top.parent_path() != top && !fs::exists(top.parent_path(), ec))
             top = top.parent_path();
-        if (!fs::create_directories(dir, ec) || ec)
-            throw InputError(fmt::format("--out {}: cannot create the folder ({})", dir.string(),
-                                         ec ? ec.message() : "unknown error"));
-        created = top;
+        const bool made = fs::create_directories(dir, ec);
+        if (ec)
+            throw InputError(fmt::format("--out {}: cannot create the folder ({})", dir.string(), ec.message()));
+        // Not made here without an error: another process made it a moment ago (two calibration or
+        // sweep shards started together), so it is checked below as an existing folder.
+        if (made) created = top;
+    }
+    if (!created) {
+        if (!fs::is_directory(dir, ec))
+            throw InputError(fmt::format("--out {}: exists and is not a folder", dir.string()));
+        remove_stale_temporaries(dir);
+        if (!force && !fs::is_empty(dir, ec))
+            throw InputError(fmt::format("--out {}: folder exists and is not empty ({})", dir.string(), remedy));
     }
     const fs::path probe = dir / fmt::format(".polyroll-probe-{}", ::getpid());
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
