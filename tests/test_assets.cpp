@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "sim/assets.h"
+#include "sim/model_choice.h"
 #include "sim/scene_json.h"
 
 using namespace polyroll;
@@ -61,6 +62,9 @@ TEST_CASE("the default scene is the issue's: small hexagon, BBs, r = 0.25, air t
     CHECK(s.ramp.angle_deg == 20.0);
     CHECK(s.release.pose == ReleasePose::vertex);
     CHECK(s.fidelity.preset == "standard");
-    CHECK(s.run.model == Model::grains);
+    // Model only what the scene requires (issue 13): auto, which for this filled shell is the grain simulation.
+    CHECK(s.run.model == Model::automatic);
+    CHECK(choose_model(s).model == Model::grains);
+    CHECK(!choose_model(s).then);
     CHECK(s.run.sample_hz == 30.0);
 }

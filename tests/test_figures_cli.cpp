@@ -54,13 +54,15 @@ TEST_CASE("figures: a run folder and a compare folder give speed and energy agai
         // The CSV holds every trajectory row of every run drawn, plus the impacts marked.
         const std::string energy = read_file(out / "energy_vs_time.csv");
         CHECK(energy.rfind("run,time_s,kinetic_J,potential_J,dissipated_J\n", 0) == 0);
-        const std::string models = std::string(folder) == "run" ? "grains" : "grains segments rigid";
+        // A run of the default model is labelled with what auto ran (a filled shell: the grains).
+        const std::string models = std::string(folder) == "run" ? "auto" : "grains segments rigid";
+        const auto label = [&](const std::string& m) { return m == "auto" ? std::string("auto (grains)") : m; };
         std::istringstream names(models);
         size_t trajectory_rows = 0;
         for (std::string m; names >> m;) {
             const fs::path run_dir = std::string(folder) == "run" ? scratch / "run" : scratch / "cmp" / m;
             trajectory_rows += line_count(read_file(run_dir / "trajectory.csv")) - 1;
-            CHECK(energy.find("\n" + m + ",") != std::string::npos);
+            CHECK(energy.find("\n" + label(m) + ",") != std::string::npos);
         }
         CHECK(line_count(energy) - 1 == trajectory_rows);
         // The short report: a row per run, each with the behaviour its summary.json states.
@@ -76,7 +78,7 @@ TEST_CASE("figures: a run folder and a compare folder give speed and energy agai
                                                                  {"time_limit", "time limit reached"}};
             REQUIRE(words_of.count(behaviour) == 1);
             const std::string words = words_of.at(behaviour);
-            CHECK(report.find("| " + m + " | " + words + " |") != std::string::npos);
+            CHECK(report.find("| " + label(m) + " | " + words + " |") != std::string::npos);
         }
     }
 }

@@ -101,7 +101,8 @@ TEST_CASE("the force hook is called before every engine step and its force moves
 
 TEST_CASE("a grain run handed over to itself carries on its records", "[runs][handover]") {
     // The trivial hand-over: the grain model continues its own run of an empty shell from its state.
-    const Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}}, {"run", {{"time_limit_s", 0.6}}}});
+    const Scene s = with_model(test::scene_with({{"fill", {{"ratio", 0.0}}}, {"run", {{"time_limit_s", 0.6}}}}),
+                               Model::grains);
     std::unique_ptr<ModelRun> first = start_run(s);
     const long at = 300;
     while (first->steps() < at && first->step()) {
@@ -139,9 +140,10 @@ TEST_CASE("an empty shell handed over from the rigid model to the grain simulati
     // The rigid model is the exact limit of an empty shell in Box2D: after the hand-over the grain
     // simulation carries on where the rigid model was, at the same position, speed and energy books,
     // and goes on the way the rigid model went.
-    const Scene grains = test::scene_with({{"fill", {{"ratio", 0.0}}},
-                                           {"fidelity", {{"preset", "precise"}}},
-                                           {"run", {{"time_limit_s", 1.0}}}});
+    const Scene grains = with_model(test::scene_with({{"fill", {{"ratio", 0.0}}},
+                                                      {"fidelity", {{"preset", "precise"}}},
+                                                      {"run", {{"time_limit_s", 1.0}}}}),
+                                    Model::grains);
     const Scene rigid = with_model(grains, Model::rigid);
     std::unique_ptr<ModelRun> a = start_run(rigid);
     const long at = static_cast<long>(std::lround(0.54 * rigid.fidelity.step_hz));
@@ -192,7 +194,8 @@ TEST_CASE("a reduced model cannot yet carry on another model's run", "[models][h
 TEST_CASE("a filled shell handed over from the rigid model pours its grains moving with the shell", "[runs][handover]") {
     // The grains are poured unsettled in the shell's frame at the hand-over pose, moving with it as
     // one rigid body (the rigid model's frozen fill); they settle as the run goes on.
-    const Scene grains = test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.8}}}});
+    const Scene grains =
+        with_model(test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.8}}}}), Model::grains);
     const Scene rigid = with_model(grains, Model::rigid);
     std::unique_ptr<ModelRun> a = start_run(rigid);
     while (a->steps() < 500 && a->step()) {

@@ -817,7 +817,7 @@ def speed_vs_time_figure(run_dirs):
         t = np.array([float(r["time_s"]) for r in traj])
         v = np.array([float(r["speed_m_s"]) for r in traj])
         label = (f"n = {s['shell']['sides']}, {s['fill']['material'].get('preset', 'custom')}, "
-                 f"r = {s['fill']['ratio']:g}, {s['ramp']['angle_deg']:g} deg, {s['run']['model']}: "
+                 f"r = {s['fill']['ratio']:g}, {s['ramp']['angle_deg']:g} deg, {model_label(summary)}: "
                  f"{BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}")
         c = colours(k % 10)
         name = os.path.basename(os.path.normpath(d))
@@ -868,8 +868,20 @@ ENERGY_STYLES = [("kinetic_J", "kinetic", "#4477aa", "-"), ("potential_J", "pote
                  ("dissipated_J", "dissipated", "#ee6677", ":")]
 
 
+def model_label(summary):
+    """The model a run names, and for auto the model(s) it ran: "auto (grains)", "auto (rigid then grains from 0.465 s)"."""
+    model = summary["scene"]["run"]["model"]
+    choice = summary["results"].get("model_choice")
+    if model != "auto" or not choice:
+        return model
+    ran = choice["model"]
+    if choice.get("then") and choice.get("hand_over_time_s") is not None:
+        ran += f" then {choice['then']} from {choice['hand_over_time_s']:.3f} s"  # no comma: a CSV cell
+    return f"auto ({ran})"
+
+
 def run_name(summary, d):
-    return summary["scene"]["run"]["model"] if summary else os.path.basename(os.path.normpath(d))
+    return model_label(summary) if summary else os.path.basename(os.path.normpath(d))
 
 
 def energy_vs_time_figure(run_dirs):
