@@ -594,8 +594,10 @@ TEST_CASE("the model row names the model or what auto chose and when it handed o
     c.then = Model::grains;
     c.reason = "empty shell";
     LaneReadout r = lane_readout(s, Measurements{}, 0.2, &c);
-    CHECK(r.model == "auto: rigid until lift-off");
+    CHECK(r.model == "auto: rigid");
     CHECK(r.model_reason == "empty shell");
+    c.lift_off_time_s = 0.3;
+    CHECK(lane_readout(s, Measurements{}, 0.35, &c).model == "auto: rigid, free to hop from 0.30 s");
     c.hand_over_time_s = 0.412;
     CHECK(lane_readout(s, Measurements{}, 0.5, &c).model == "auto: grains from 0.41 s");
     ModelChoice filled;

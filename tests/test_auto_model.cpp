@@ -1,14 +1,16 @@
 // `--model auto` (issue 13, items 1 and 2): the registry's rule, a filled shell computed exactly as
-// the grain model computes it, and an empty shell run by the rigid model that hands the shell over to
-// Box2D at lift-off with its records carrying on, measured against the grain model on the issue's
-// empty scenes.
+// the grain model computes it, and an empty shell run by the rigid model, then from lift-off by the
+// free rigid body, then (only where that meets a contact it does not model) by Box2D, the records
+// carrying on across each hand-over; measured against the grain model on the issue's empty scenes.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
+#include "sim/run_snapshot.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -64,7 +66,7 @@ TEST_CASE("auto on a filled shell computes exactly what the grain model computes
     CHECK(ja == jg);
 }
 
-TEST_CASE("auto on an empty shell that lifts off hands over to Box2D at the step before, records carrying on",
+TEST_CASE("auto on an empty shell that lifts off carries it on as a free rigid body, records carrying on",
           "[runs][models][handover][auto]") {
     const Scene s = empty_scene(8, 30.0);
     const RunResult rigid = run_scene(with_model(s, Model::rigid));
@@ -72,41 +74,75 @@ TEST_CASE("auto on an empty shell that lifts off hands over to Box2D at the step
     const double lift_off_s = *rigid.model_invalid_time_s;
 
     AutoRun run(s);
-    CHECK(!run.choice().hand_over_time_s);
+    CHECK(!run.choice().lift_off_time_s);
     std::vector<FaceImpact> before;
-    while (run.step() && !run.choice().hand_over_time_s) before = run.measured().impacts;
-    REQUIRE(run.choice().hand_over_time_s);
-    const double t = *run.choice().hand_over_time_s;
+    while (run.step() && !run.choice().lift_off_time_s) before = run.measured().impacts;
+    REQUIRE(run.choice().lift_off_time_s);
+    const double t = *run.choice().lift_off_time_s;
     // The last tracker step at which the rigid model still holds.
     CHECK(t <= lift_off_s);
     CHECK(t > lift_off_s - run.step_s() - 1e-12);
-    // The impacts landed before the hand-over are kept as they were.
+    // The impacts landed before are kept as they were.
     REQUIRE(run.measured().impacts.size() >= before.size());
     for (size_t i = 0; i < before.size(); ++i) {
         CHECK(run.measured().impacts[i].time_s == before[i].time_s);
         CHECK(run.measured().impacts[i].position_m == before[i].position_m);
         CHECK(run.measured().impacts[i].kinetic_after_J == before[i].kinetic_after_J);
     }
-    run.run_to_end();
+    // Drawn on the way: the shell leaves the ramp (its lowest vertex above it) at some step.
+    double highest_lowest_vertex_m = 0.0;
+    while (run.step()) {
+        const RunSnapshot snap = run.snapshot();
+        double lowest = 1e9;
+        for (const geom::Vec2& v : snap.outer_local_m)
+            lowest = std::min(lowest, snap.shell_centre_m.y + geom::rotate(v, snap.shell_angle_rad).y);
+        CHECK(lowest > -1e-9);  // never into the ramp
+        highest_lowest_vertex_m = std::max(highest_lowest_vertex_m, lowest);
+    }
+    CHECK(highest_lowest_vertex_m > 1e-4);
 
     const RunResult r = run.result();
     CHECK(r.measured.behaviour == Behaviour::rolled_to_end);
-    CHECK(r.model_valid);  // Box2D computed everything after lift-off
-    CHECK(model_that_ran(r) == Model::grains);
+    CHECK(r.model_valid);
+    CHECK(!r.model_choice->hand_over_time_s);  // no Box2D world was built
+    CHECK(model_that_ran(r) == Model::rigid);
     const json j = summary_json(r);
-    CHECK(j.contains("engine"));
-    CHECK(j["results"]["model_choice"]["model"] == "rigid");
-    CHECK(j["results"]["model_choice"]["then"] == "grains");
-    CHECK(j["results"]["model_choice"]["hand_over_time_s"].get<double>() == Approx(t));
+    CHECK(!j.contains("engine"));
+    CHECK(j["results"]["model_choice"]["lift_off_time_s"].get<double>() == Approx(t));
+    CHECK(j["results"]["model_choice"]["hand_over_time_s"].is_null());
     const Measurements& m = r.measured;
     for (size_t i = 1; i < m.trajectory.size(); ++i) CHECK(m.trajectory[i].time_s > m.trajectory[i - 1].time_s);
     for (size_t i = 0; i < m.impacts.size(); ++i) CHECK(m.impacts[i].index == static_cast<int>(i) + 1);
     for (size_t i = 1; i < m.impacts.size(); ++i) CHECK(m.impacts[i].position_m > m.impacts[i - 1].position_m);
+    // The energy books: nothing is made, only lost (impacts, sliding).
+    CHECK(m.max_energy_gain_J <= 1e-12);
+    for (size_t i = 1; i < m.trajectory.size(); ++i)
+        CHECK(m.trajectory[i].dissipated_J >= m.trajectory[i - 1].dissipated_J - 1e-12);
 
     // run_scene goes the same way as stepping.
     const RunResult whole = run_scene(s);
     CHECK(trajectory_csv(whole) == trajectory_csv(r));
     CHECK(impacts_csv(whole) == impacts_csv(r));
+}
+
+TEST_CASE("auto hands a shell to Box2D at the step before a contact the free rigid body does not model",
+          "[runs][models][handover][auto]") {
+    // A triangle released on a vertex at 20 deg sets its next face down flat on both vertices.
+    const Scene s = empty_scene(3, 20.0);
+    AutoRun run(s);
+    run.run_to_end();
+    const RunResult r = run.result();
+    REQUIRE(r.model_choice);
+    const ModelChoice& c = *r.model_choice;
+    REQUIRE(c.lift_off_time_s);
+    REQUIRE(c.hand_over_time_s);
+    CHECK(c.hand_over_why == "a face set down on both its vertices at once");
+    CHECK(*c.hand_over_time_s >= *c.lift_off_time_s);
+    CHECK(model_that_ran(r) == Model::grains);
+    CHECK(summary_json(r).contains("engine"));
+    CHECK(r.measured.behaviour == run_scene(with_model(s, Model::grains)).measured.behaviour);
+    const Measurements& m = r.measured;
+    for (size_t i = 1; i < m.trajectory.size(); ++i) CHECK(m.trajectory[i].time_s > m.trajectory[i - 1].time_s);
 }
 
 TEST_CASE("auto on an empty shell that never lifts off is the rigid model throughout", "[runs][models][auto]") {

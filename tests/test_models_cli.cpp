@@ -37,11 +37,12 @@ TEST_CASE("polyroll run --model writes the same files for each model", "[models]
 }
 
 TEST_CASE("polyroll run --model auto says what it chose, why, and when it handed over", "[models][cli]") {
-    // An empty octagon at 30 deg lifts off: the rigid model hands the shell to Box2D.
+    // An empty octagon at 30 deg lifts off: the rigid body goes on free of the ramp, no Box2D.
     const Output o = run_polyroll("run --model auto --fill 0 --sides 8 --angle 30");
     INFO(o.out);
     REQUIRE(o.exit_code == 0);
-    CHECK(o.out.find("model              rigid, handed over to grains at t = ") != std::string::npos);
+    CHECK(o.out.find("model              rigid, free to leave the ramp from t = ") != std::string::npos);
+    CHECK(o.out.find("no hand-over to grains") != std::string::npos);
     CHECK(o.out.find("why                empty shell") != std::string::npos);
     const Output j = run_polyroll("run --model auto --fill 0 --sides 8 --angle 30 --json");
     REQUIRE(j.exit_code == 0);
@@ -49,8 +50,15 @@ TEST_CASE("polyroll run --model auto says what it chose, why, and when it handed
     CHECK(summary["scene"]["run"]["model"] == "auto");
     CHECK(summary["results"]["model_choice"]["model"] == "rigid");
     CHECK(summary["results"]["model_choice"]["then"] == "grains");
-    CHECK(summary["results"]["model_choice"]["hand_over_time_s"].is_number());
-    CHECK(summary.contains("engine"));
+    CHECK(summary["results"]["model_choice"]["lift_off_time_s"].is_number());
+    CHECK(summary["results"]["model_choice"]["hand_over_time_s"].is_null());
+    CHECK(!summary.contains("engine"));
+    // A triangle at 20 deg sets a face down flat: Box2D takes it from there, and the run says why.
+    const Output t = run_polyroll("run --fill 0 --sides 3 --angle 20");
+    INFO(t.out);
+    REQUIRE(t.exit_code == 0);
+    CHECK(t.out.find(", handed over to grains at t = ") != std::string::npos);
+    CHECK(t.out.find("(a face set down on both its vertices at once)") != std::string::npos);
     // Misspelt: one clear line, exit 2.
     const Output bad = run_polyroll("run --model autoo");
     CHECK(bad.exit_code == 2);

@@ -1,4 +1,4 @@
-// The grain simulation of an empty shell against the rigid impact model (docs/physics.md): each
+// The grain simulation (named: auto would run the rigid model itself) of an empty shell against the rigid impact model (docs/physics.md): each
 // face impact should keep the share of kinetic energy the model predicts from the shell's mass,
 // moment of inertia and pivot radius, wherever the model's assumption (no hopping) holds.
 #include <catch2/catch.hpp>
@@ -24,7 +24,8 @@ Check rolling_check(int sides, double angle_deg, const char* fidelity) {
     const Scene s = test::scene_with({{"shell", {{"preset", "hexagon-small"}, {"sides", sides}}},
                                       {"fill", {{"ratio", 0.0}}},
                                       {"ramp", {{"angle_deg", angle_deg}}},
-                                      {"fidelity", fidelity}});
+                                      {"fidelity", fidelity},
+                                      {"run", {{"model", "grains"}}}});
     const RunResult r = run_scene(s);
     Check c;
     c.model_ratio = rigid_impact_energy_ratio(sides, r.shell.mass_kg, r.shell.inertia_kg_m2, r.shell.pivot_radius_m);

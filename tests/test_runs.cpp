@@ -136,7 +136,8 @@ TEST_CASE("a shell nearing the engine's per-step speed limit is stopped as diver
     // Empty, steep and coarse: 2 cm per step at 60 Hz caps speeds at 1.2 m/s; the shell passes 0.96.
     const Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}},
                                       {"fidelity", {{"step_hz", 60}, {"substeps", 1}}},
-                                      {"ramp", {{"angle_deg", 45}}}});
+                                      {"ramp", {{"angle_deg", 45}}},
+                                      {"run", {{"model", "grains"}}}});
     const RunResult r = run_scene(s);
     CHECK(r.measured.behaviour == Behaviour::diverged);
     CHECK(r.measured.divergence.find("engine's limit") != std::string::npos);

@@ -26,11 +26,13 @@ std::string behaviour_label(Behaviour b) {
 std::string model_label(const Scene& scene, const ModelChoice* choice) {
     if (!choice) return to_string(scene.run.model);
     if (!choice->then) return "auto: " + to_string(choice->model);
-    // The hand-over is the moment the first model's validity check would fail (lift-off): say
-    // which model runs now, and since when.
+    // Say which model runs now, and since when: the rigid body on the ramp, then free to fly from
+    // lift-off, then Box2D where the free body meets a contact it does not model.
     if (choice->hand_over_time_s)
         return fmt::format("auto: {} from {:.2f} s", to_string(*choice->then), *choice->hand_over_time_s);
-    return fmt::format("auto: {} until lift-off", to_string(choice->model));
+    if (choice->lift_off_time_s)
+        return fmt::format("auto: {}, free to hop from {:.2f} s", to_string(choice->model), *choice->lift_off_time_s);
+    return fmt::format("auto: {}", to_string(choice->model));
 }
 
 LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s, const ModelChoice* choice) {

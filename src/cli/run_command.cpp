@@ -42,12 +42,16 @@ void print_summary(const RunResult& r, const std::string& out) {
     fmt::print("polyroll run: {}\n", describe_scene(r));
     if (r.model_choice) {
         const ModelChoice& c = *r.model_choice;
+        const std::string flight =
+            c.lift_off_time_s
+                ? fmt::format(", free to leave the ramp from t = {:.3f} s (where it would lift off)", *c.lift_off_time_s)
+                : std::string(" (it never lifts off)");
         if (c.hand_over_time_s)
-            fmt::print("  model              {}, handed over to {} at t = {:.3f} s (lift-off)\n", to_string(c.model),
-                       to_string(*c.then), *c.hand_over_time_s);
+            fmt::print("  model              {}{}, handed over to {} at t = {:.3f} s ({})\n", to_string(c.model), flight,
+                       to_string(*c.then), *c.hand_over_time_s, c.hand_over_why);
         else if (c.then)
-            fmt::print("  model              {} throughout (it never lifted off: no hand-over to {})\n",
-                       to_string(c.model), to_string(*c.then));
+            fmt::print("  model              {}{}; no hand-over to {}\n", to_string(c.model), flight,
+                       to_string(*c.then));
         else
             fmt::print("  model              {}\n", to_string(c.model));
         fmt::print("  why                {}\n", c.reason);

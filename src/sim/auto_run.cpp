@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/model_registry.h"
+#include "sim/models/hopping_run.h"
 #include "sim/models/reduced_run.h"
 
 namespace polyroll {
@@ -15,8 +16,10 @@ ModelChoice choose_model(const Scene& scene) {
         c.then = Model::grains;
         c.reason =
             "empty shell: the rigid impact model is the exact limit of an empty shell while it stays on the ramp "
-            "(docs/physics.md); Box2D takes the shell over at the step before the normal force the model needs "
-            "would turn negative (lift-off)";
+            "(docs/physics.md); where the normal force it needs would turn negative, the same rigid body leaves "
+            "the ramp and flies, lands on a vertex without bouncing and rolls or slides on with the ramp's "
+            "friction; Box2D takes the shell over only where that meets a contact it does not model (a face set "
+            "down on both vertices at once, coming to rest)";
     } else {
         // docs/tradeoff/tradeoff.md, over its 21 scenes against the reference.
         c.model = Model::grains;
@@ -33,10 +36,12 @@ AutoRun::AutoRun(const Scene& scene) : scene_(scene), choice_(choose_model(scene
     first.run.model = choice_.model;
     if (choice_.model == Model::rigid && choice_.then) {
         // The rigid model computes its whole run at once, so the lift-off time is known from the start.
-        auto rigid = std::make_unique<models::ReducedRun>(first, models::FillMotion::frozen);
+        // Computed only up to lift-off: past it the rigid model means nothing (and a shell that would
+        // hop can rock ever faster in it, costing a second of integration for nothing).
+        auto rigid = std::make_unique<models::ReducedRun>(first, models::FillMotion::frozen, true);
         const RunResult whole = rigid->result();
         if (whole.model_invalid_time_s)
-            hand_over_step_ = static_cast<long>(std::floor(*whole.model_invalid_time_s * scene.fidelity.step_hz));
+            lift_off_step_ = static_cast<long>(std::floor(*whole.model_invalid_time_s * scene.fidelity.step_hz));
         run_ = std::move(rigid);
     } else {
         run_ = start_run(first);
@@ -45,12 +50,24 @@ AutoRun::AutoRun(const Scene& scene) : scene_(scene), choice_(choose_model(scene
 }
 
 void AutoRun::hand_over_if_due() {
-    if (hand_over_step_ < 0 || choice_.hand_over_time_s || run_->steps() < hand_over_step_ || run_->finished())
-        return;
-    Scene next = scene_;
-    next.run.model = *choice_.then;
-    run_ = continue_run(next, run_->hand_over());
-    choice_.hand_over_time_s = run_->time_s();
+    // The rigid run was computed up to lift-off only (it may end there): hand over at that step.
+    if (stage_ == Stage::first && lift_off_step_ >= 0 && run_->steps() >= lift_off_step_) {
+        auto flying = std::make_unique<models::HoppingRun>(scene_, run_->hand_over());
+        choice_.lift_off_time_s = flying->time_s();
+        if (flying->hand_over_step()) {
+            hand_over_step_ = *flying->hand_over_step();
+            choice_.hand_over_why = flying->unsupported_why();
+        }
+        run_ = std::move(flying);
+        stage_ = Stage::flight;
+    }
+    if (stage_ == Stage::flight && hand_over_step_ >= 0 && run_->steps() >= hand_over_step_) {
+        Scene next = scene_;
+        next.run.model = *choice_.then;
+        run_ = continue_run(next, run_->hand_over());
+        choice_.hand_over_time_s = run_->time_s();
+        stage_ = Stage::then;
+    }
 }
 
 bool AutoRun::step() {
@@ -61,9 +78,13 @@ bool AutoRun::step() {
 }
 
 void AutoRun::run_to_end() {
-    if (hand_over_step_ >= 0 && !choice_.hand_over_time_s) {
-        while (run_->steps() < hand_over_step_ && run_->step()) {
+    if (stage_ == Stage::first && lift_off_step_ >= 0) {
+        while (run_->steps() < lift_off_step_ && run_->step()) {
         }
+        hand_over_if_due();
+    }
+    if (stage_ == Stage::flight && hand_over_step_ >= 0) {
+        run_->run_to_end();  // to the hand-over step
         hand_over_if_due();
     }
     run_->run_to_end();

@@ -1,8 +1,9 @@
-// A run of `--model auto`: the model choose_model picks for the scene, and for an empty shell the
-// rigid impact model handing the shell over to Box2D at the tracker step before it would lift off
-// (its validity check, docs/physics.md: the normal force it needs turns negative). The records carry
-// on across the hand-over (HandOver, continue_run); a rigid run that never lifts off runs alone,
-// which is where auto's speed comes from.
+// A run of `--model auto`: the model choose_model picks for the scene. For an empty shell, the rigid
+// impact model until the tracker step before it would lift off (its validity check, docs/physics.md:
+// the normal force it needs turns negative); from there the same rigid body free to leave the ramp
+// (models/hopping_run.h: flights, vertex impacts, rolling and sliding), which hands the shell to
+// Box2D only where it meets a contact it does not model. The records carry on across each hand-over
+// (HandOver); no Box2D world is built unless that happens, which is where auto's speed comes from.
 #pragma once
 
 #include <memory>
@@ -37,8 +38,11 @@ private:
 
     Scene scene_;
     ModelChoice choice_;
+    enum class Stage { first, flight, then };
+    Stage stage_ = Stage::first;
     std::unique_ptr<ModelRun> run_;
-    long hand_over_step_ = -1;  // the tracker step at which the first model hands over; -1: never
+    long lift_off_step_ = -1;   // the tracker step at which the rigid model hands over; -1: never
+    long hand_over_step_ = -1;  // the tracker step at which the free rigid body hands over; -1: never
 };
 
 }  // namespace polyroll

@@ -48,4 +48,9 @@ struct Measurements {
 // impacts' positions and times. Empty with fewer than two impacts. Sets terminal_velocity_faces.
 void set_terminal_velocity(Measurements& m, int sides);
 
+// The same for a run that ended at `end` (its last state, in the trajectory or about to be): where
+// no face rhythm gives one (fewer than two impacts: a sliding or hopping shell), the mean speed of
+// the last tenth of the run from the trajectory.
+void set_terminal_velocity_at_end(Measurements& m, int sides, const TrajectorySample& end);
+
 }  // namespace polyroll

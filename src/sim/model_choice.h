@@ -14,8 +14,14 @@ struct ModelChoice {
     Model model = Model::grains;       // the model the run starts with
     std::optional<Model> then;         // the model it hands over to when the first stops holding
     std::string reason;
-    // When the hand-over happened (a tracker step), if it did; empty when the first model ran alone.
+    // For an empty shell: the tracker step before the rigid model's shell would lift off, from which
+    // the free rigid body (models/hopping_polygon.h) carries it on, flying, landing on vertices,
+    // rolling and sliding.
+    std::optional<double> lift_off_time_s;
+    // When the hand-over to `then` happened (a tracker step), if it did, and why; empty when the
+    // first model (with its flights) ran alone.
     std::optional<double> hand_over_time_s;
+    std::string hand_over_why;
     // The model that computed the end of the run.
     Model last() const { return hand_over_time_s && then ? *then : model; }
 };

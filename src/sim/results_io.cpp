@@ -49,7 +49,9 @@ json summary_json(const RunResult& r) {
         choice["model"] = to_string(c.model);
         choice["then"] = c.then ? json(to_string(*c.then)) : json(nullptr);
         choice["reason"] = c.reason;
+        choice["lift_off_time_s"] = c.lift_off_time_s ? json(*c.lift_off_time_s) : json(nullptr);
         choice["hand_over_time_s"] = c.hand_over_time_s ? json(*c.hand_over_time_s) : json(nullptr);
+        choice["hand_over_why"] = c.hand_over_why;
         results["model_choice"] = choice;
     }
 

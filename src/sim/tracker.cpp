@@ -16,6 +16,18 @@ void set_terminal_velocity(Measurements& m, int sides) {
     m.terminal_velocity_faces = static_cast<int>(last - first);
 }
 
+void set_terminal_velocity_at_end(Measurements& m, int sides, const TrajectorySample& end) {
+    set_terminal_velocity(m, sides);
+    if (m.terminal_velocity_m_s) return;
+    const double t0 = 0.9 * end.time_s;
+    for (const TrajectorySample& s : m.trajectory) {
+        if (s.time_s >= t0 && s.time_s < end.time_s) {
+            m.terminal_velocity_m_s = (end.position_m - s.position_m) / (end.time_s - s.time_s);
+            return;
+        }
+    }
+}
+
 std::string to_string(Behaviour b) {
     switch (b) {
         case Behaviour::running: return "running";
@@ -115,20 +127,7 @@ void Tracker::finish(Behaviour b, double time_s) {
     if (b != Behaviour::diverged) m_.grains_inside = count_grains_inside();
     // The last state is always in the trajectory, so the file ends where the run ended.
     if (m_.trajectory.empty() || m_.trajectory.back().time_s < time_s) m_.trajectory.push_back(now_);
-    if (b == Behaviour::rolled_to_end) {
-        set_terminal_velocity(m_, w_.scene.shell.sides);
-        if (!m_.terminal_velocity_m_s) {
-            // No face rhythm to average over (a sliding or hopping shell): the mean speed of the
-            // last tenth of the run.
-            const double t0 = 0.9 * time_s;
-            for (const TrajectorySample& s : m_.trajectory) {
-                if (s.time_s >= t0 && s.time_s < time_s) {
-                    m_.terminal_velocity_m_s = (now_.position_m - s.position_m) / (time_s - s.time_s);
-                    break;
-                }
-            }
-        }
-    }
+    if (b == Behaviour::rolled_to_end) set_terminal_velocity_at_end(m_, w_.scene.shell.sides, now_);
 }
 
 void Tracker::diverge(const std::string& why, double time_s) {

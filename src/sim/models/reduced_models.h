@@ -19,7 +19,7 @@ RollingBody rolling_body(const Scene& scene);
 RollingTrack rolling_track(const Scene& scene);
 
 // Runs a validated scene with the fill moving as `fill` says (frozen: the rigid model; relevel: the
-// segment model), and times it.
-RunResult run_reduced_model(const Scene& scene, FillMotion fill);
+// segment model), and times it. `until_invalid`: stop where the model stops holding (RollingTrack).
+RunResult run_reduced_model(const Scene& scene, FillMotion fill, bool until_invalid = false);
 
 }  // namespace polyroll::models

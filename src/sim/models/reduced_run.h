@@ -4,6 +4,7 @@
 // run sampled at every tracker step, so the polygon turns smoothly between the scene's samples.
 #pragma once
 
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -14,7 +15,9 @@ namespace polyroll::models {
 
 class ReducedRun final : public ModelRun {
 public:
-    ReducedRun(const Scene& scene, FillMotion fill);
+    // `until_invalid`: the run ends where the model stops holding (for `--model auto`, which hands
+    // the shell on at the step before).
+    ReducedRun(const Scene& scene, FillMotion fill, bool until_invalid = false);
 
     bool step() override;
     bool finished() const override;
@@ -31,13 +34,16 @@ private:
     // The pose track is computed the first time it is needed: `polyroll run` never draws.
     const std::vector<TrajectorySample>& pose_track() const;
     TrajectorySample now() const;  // at time_s(), held at the end
+    TrajectorySample state_for_hand_over() const;  // now(), without computing the pose track
     void reveal();
 
     Scene scene_;
     FillMotion fill_;
+    bool until_invalid_ = false;
     RunResult full_;
     mutable std::once_flag pose_once_;
     mutable std::vector<TrajectorySample> pose_track_;
+    mutable std::atomic<bool> pose_done_{false};
     std::vector<geom::Vec2> outer_, inner_;
     Measurements shown_;
     long steps_ = 0;

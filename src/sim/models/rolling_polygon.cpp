@@ -521,6 +521,12 @@ RollingRun Roller::run() {
             finish(Behaviour::time_limit, t_);
             break;
         }
+        if (tr_.stop_when_invalid && !out_.model_valid) {
+            out_.measured.end_time_s = t_;
+            out_.measured.distance_m = sample(t_).position_m;
+            running_ = false;
+            break;
+        }
         if (timing_ == FaceTiming::energy_integral && time_arc()) continue;
         const PendulumSeries s(psi(), omega_, piv_.a);
         const double h = std::min({s.accurate_step_s(), kMaxStepS, left});

@@ -51,6 +51,9 @@ struct RollingTrack {
     double sample_grid_hz = 0.0;
     double rest_speed_m_s = 0.0;
     double rest_time_s = 0.0;
+    // End the run where the model stops holding (model_invalid_time_s), its behaviour left "running":
+    // for `--model auto`, which hands the shell on there and needs nothing of the rigid model past it.
+    bool stop_when_invalid = false;
 };
 
 struct RollingRun {

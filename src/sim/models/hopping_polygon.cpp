@@ -1,0 +1,563 @@
+// An empty shell after lift-off, event-driven: see hopping_polygon.h.
+//
+// Conventions, those of shell_pose.h and tracker.cpp: the ramp frame has x down the slope and y along
+// its normal, the surface at y = 0; the angle a is counter-clockwise (rolling down turns it
+// negative); vertex j (unwrapped) points straight down at a = pi/n - 2 pi j/n, so the lowest vertex is
+// floor(1 - a n / (2 pi)), and vertex 1 was the pivot at release.
+#include "sim/models/hopping_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace polyroll::models {
+
+using geom::Vec2;
+
+namespace {
+
+constexpr double kPi = geom::kPi;
+// Runge-Kutta step on a vertex: the pendulum's rate a = M g R / I_pivot is about 100 /s^2 for the
+// bundled shells, so 1 ms leaves a local error near 1e-10 rad; never more than 1/50 rad of turn.
+constexpr double kContactStepS = 1e-3;
+constexpr double kContactTurnRad = 0.02;
+// Events inside a step are found to this time (false position, first_root).
+constexpr double kEventTolS = 1e-9;
+// A vertex closer to the ramp than this at the start is on it.
+constexpr double kTouchM = 1e-9;
+// Shortest step of the search for a flight's touch-down (see flight_stretch).
+constexpr double kFlightMinStepS = 1e-4;
+// More stretches than this in a row, each shorter than kChatterS: the run is caught between two
+// contact states (two vertices on the ramp, a grazing lift-off: contacts it does not model) and stops.
+constexpr int kMaxChatter = 100;
+constexpr double kChatterS = 1e-6;
+// Far more events than a 2.5 m ramp gives (about 4 per face): a run stuck in a loop stops.
+constexpr long kMaxSteps = 2'000'000;
+
+struct State {
+    double x = 0, y = 0, a = 0, vx = 0, vy = 0, w = 0;  // centre, angle, their rates (w counter-clockwise)
+};
+
+State add(const State& s, const State& d, double h) {
+    return {s.x + h * d.x, s.y + h * d.y, s.a + h * d.a, s.vx + h * d.vx, s.vy + h * d.vy, s.w + h * d.w};
+}
+
+enum class Phase { flight, stick, slide };
+
+// The first tau in (lo, hi] where f turns non-positive, given f(lo) > 0 >= f(hi): false position with
+// the Illinois halving (a handful of evaluations for a smooth f where halving takes thirty), ending
+// with the bracket under tol_s; returns its upper end, where f <= 0 holds.
+template <class F>
+double first_root(F f, double lo, double f_lo, double hi, double f_hi, double tol_s, long& evaluations) {
+    int side = 0;
+    for (int i = 0; i < 100 && hi - lo > tol_s; ++i) {
+        double m = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        if (!(m > lo && m < hi)) m = 0.5 * (lo + hi);
+        const double fm = f(m);
+        ++evaluations;
+        if (fm <= 0.0) {
+            hi = m;
+            f_hi = fm;
+            if (side < 0) f_lo *= 0.5;
+            side = -1;
+        } else {
+            lo = m;
+            f_lo = fm;
+            if (side > 0) f_hi *= 0.5;
+            side = 1;
+        }
+    }
+    return hi;
+}
+
+class Hopper {
+public:
+    Hopper(const HopBody& body, const HopRules& rules, const HopStart& start);
+    HopRun run();
+
+private:
+    struct Contact {
+        double F = 0, N = 0;  // friction (along x) and normal force on the shell, N
+        State rate;           // d/dt of the state
+    };
+
+    // Vertex j (unwrapped) relative to the centre at angle a.
+    Vec2 arm(long j, double a) const {
+        const double b = beta_[static_cast<size_t>(((j % n_) + n_) % n_)] + a;
+        return {radius_ * std::cos(b), radius_ * std::sin(b)};
+    }
+    long lowest(double a) const { return static_cast<long>(std::floor(1.0 - a * n_ / (2.0 * kPi))); }
+    Vec2 vertex_velocity(const State& s, Vec2 r) const { return {s.vx - s.w * r.y, s.vy + s.w * r.x}; }
+
+    Contact contact(const State& s, Phase p) const;
+    State rk4(const State& s, Phase p, double h) const;
+    void project(State& s, Phase p) const;
+    State flight_at(const State& s, double tau) const;
+
+    // What ends a contact step. Each has a value that is positive before it and turns non-positive
+    // where it happens (a neighbour's height, the normal force, the friction to spare, ...).
+    enum class Event { none, touch, lift, slip, grip, end, rest };
+    static constexpr Event kContactEvents[] = {Event::touch, Event::lift, Event::slip, Event::grip, Event::end, Event::rest};
+    double event_value(const State& s, Phase p, Event e) const;
+
+    void contact_stretch();
+    void flight_stretch();
+    // Resolves the impact of vertex j (unwrapped) and picks the stretch that follows.
+    void impact(long j);
+    // The stretch on vertex j with the vertex's velocity along the ramp as it is (after an impact or a
+    // slip's end): sticking if it is at rest and friction holds it, flying if the ramp would pull.
+    void settle_on(long j);
+
+    TrajectorySample sample(const State& s, double t) const;
+    double sample_time(long row) const;
+    template <class At>
+    void emit_rows_before(double t_end, At state_at);
+    void note_landing(long j, double kinetic_before_J);
+    void finish(Behaviour b);
+    void stop_unsupported(const std::string& why);
+
+    const HopBody& body_;
+    const HopRules& rules_;
+    int n_ = 0;
+    double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
+    double gx_ = 0.0, gy_ = 0.0, g_cos_ = 0.0;
+    std::vector<double> beta_;
+    Vec2 up_;
+    double start_x_ = 0.0, start_a_ = 0.0, potential_offset_J_ = 0.0;
+
+    State s_;
+    double t_ = 0.0;
+    Phase phase_ = Phase::stick;
+    long on_ = 1;          // the vertex in contact (stick, slide)
+    int slip_sign_ = 0;    // sign of the vertex's velocity along the ramp while sliding
+    double pivot_x_ = 0.0; // where the sticking vertex is
+    long landed_ = 1;
+    long next_row_ = 0;
+    int chatter_ = 0;  // stretches in a row shorter than kChatterS
+    bool running_ = true;
+    HopRun out_;
+};
+
+Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start) : body_(body), rules_(rules) {
+    n_ = static_cast<int>(body.outer_m.size());
+    radius_ = geom::length(body.outer_m[0]);
+    for (const Vec2& v : body.outer_m) beta_.push_back(std::atan2(v.y, v.x));
+    m_ = body.mass_kg;
+    inertia_ = body.inertia_kg_m2;
+    mu_ = rules.friction;
+    const double theta = rules.angle_deg * kPi / 180.0;
+    gx_ = rules.gravity_m_s2 * std::sin(theta);
+    gy_ = -rules.gravity_m_s2 * std::cos(theta);
+    g_cos_ = -gy_;
+    up_ = {-std::sin(theta), std::cos(theta)};
+    start_x_ = start.release.centre_m.x;
+    start_a_ = start.release.angle_rad;
+    const ShellState& st = start.state;
+    s_ = {st.pose.centre_m.x, st.pose.centre_m.y, st.pose.angle_rad, st.velocity_m_s.x, st.velocity_m_s.y,
+          st.angular_velocity_rad_s};
+    t_ = start.time_s;
+    landed_ = start.landed_vertex;
+    out_.measured = start.measured;
+    out_.measured.behaviour = Behaviour::running;
+    next_row_ = start.first_row >= 0 ? start.first_row : static_cast<long>(out_.measured.trajectory.size());
+    // Booked potential = M g (up . centre) - offset, continuous with the records so far.
+    potential_offset_J_ = m_ * rules.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
+}
+
+Hopper::Contact Hopper::contact(const State& s, Phase p) const {
+    Contact c;
+    if (p != Phase::flight) {
+        const Vec2 r = arm(on_, s.a);
+        const double w2 = s.w * s.w;
+        if (p == Phase::stick) {
+            // The vertex stays put: both components of its acceleration vanish,
+            // a_c + alpha x r - w^2 r = 0 with M a_c = M g + (F, N), I alpha = r x (F, N).
+            const double k11 = 1.0 / m_ + r.y * r.y / inertia_, k12 = -r.x * r.y / inertia_;
+            const double k22 = 1.0 / m_ + r.x * r.x / inertia_;
+            const double b1 = w2 * r.x - gx_, b2 = w2 * r.y - gy_;
+            const double det = k11 * k22 - k12 * k12;
+            c.F = (b1 * k22 - k12 * b2) / det;
+            c.N = (k11 * b2 - k12 * b1) / det;
+        } else {
+            // The vertex slides along the ramp: only its normal acceleration vanishes, and friction
+            // is mu N against the slip.
+            const double f = -mu_ * slip_sign_;  // F = f N
+            c.N = (w2 * r.y - gy_) / (1.0 / m_ + r.x * (r.x - f * r.y) / inertia_);
+            c.F = f * c.N;
+        }
+        const double alpha = (r.x * c.N - r.y * c.F) / inertia_;
+        c.rate = {s.vx, s.vy, s.w, gx_ + c.F / m_, gy_ + c.N / m_, alpha};
+    } else {
+        c.rate = {s.vx, s.vy, s.w, gx_, gy_, 0.0};
+    }
+    return c;
+}
+
+State Hopper::rk4(const State& s, Phase p, double h) const {
+    const State k1 = contact(s, p).rate;
+    const State k2 = contact(add(s, k1, h / 2), p).rate;
+    const State k3 = contact(add(s, k2, h / 2), p).rate;
+    const State k4 = contact(add(s, k3, h), p).rate;
+    State r = s;
+    r.x += h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
+    r.y += h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y);
+    r.a += h / 6 * (k1.a + 2 * k2.a + 2 * k3.a + k4.a);
+    r.vx += h / 6 * (k1.vx + 2 * k2.vx + 2 * k3.vx + k4.vx);
+    r.vy += h / 6 * (k1.vy + 2 * k2.vy + 2 * k3.vy + k4.vy);
+    r.w += h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w);
+    project(r, p);
+    return r;
+}
+
+void Hopper::project(State& s, Phase p) const {
+    // The integrator drifts off the constraint by its truncation error; put the vertex back on it.
+    if (p == Phase::flight) return;
+    const Vec2 r = arm(on_, s.a);
+    s.y = -r.y;
+    s.vy = -s.w * r.x;
+    if (p == Phase::stick) {
+        s.x = pivot_x_ - r.x;
+        s.vx = s.w * r.y;
+    }
+}
+
+State Hopper::flight_at(const State& s, double tau) const {
+    return {s.x + s.vx * tau + 0.5 * gx_ * tau * tau, s.y + s.vy * tau + 0.5 * gy_ * tau * tau, s.a + s.w * tau,
+            s.vx + gx_ * tau, s.vy + gy_ * tau, s.w};
+}
+
+double Hopper::event_value(const State& s, Phase p, Event e) const {
+    constexpr double kNever = 1.0;
+    switch (e) {
+        case Event::touch:  // a neighbour of the contact vertex meeting the ramp
+            return std::min(s.y + arm(on_ - 1, s.a).y, s.y + arm(on_ + 1, s.a).y);
+        case Event::lift: return contact(s, p).N;
+        case Event::slip: {
+            if (p != Phase::stick) return kNever;
+            const Contact c = contact(s, p);
+            return mu_ * c.N - std::fabs(c.F);
+        }
+        case Event::grip:
+            return p == Phase::slide ? vertex_velocity(s, arm(on_, s.a)).x * slip_sign_ : kNever;
+        case Event::end: return rules_.end_centre_x_m - s.x;
+        case Event::rest:
+            return std::max(std::hypot(s.vx, s.vy), std::fabs(s.w) * radius_) - rules_.rest_speed_m_s;
+        case Event::none: break;
+    }
+    return kNever;
+}
+
+TrajectorySample Hopper::sample(const State& s, double t) const {
+    TrajectorySample r;
+    r.time_s = t;
+    r.position_m = s.x - start_x_;
+    r.speed_m_s = s.vx;
+    r.angle_deg = -(s.a - start_a_) * 180.0 / kPi;
+    r.kinetic_J = 0.5 * m_ * (s.vx * s.vx + s.vy * s.vy) + 0.5 * inertia_ * s.w * s.w;
+    r.potential_J = m_ * rules_.gravity_m_s2 * geom::dot({s.x, s.y}, up_) - potential_offset_J_;
+    r.dissipated_J = -(r.kinetic_J + r.potential_J);
+    return r;
+}
+
+double Hopper::sample_time(long row) const {
+    // The tracker's rule (tracker.cpp): the first grid step at or after row / sample_hz.
+    return std::ceil(static_cast<double>(row) * rules_.sample_grid_hz / rules_.sample_hz - 1e-9) /
+           rules_.sample_grid_hz;
+}
+
+template <class At>
+void Hopper::emit_rows_before(double t_end, At state_at) {
+    for (;;) {
+        const double ts = sample_time(next_row_);
+        if (ts >= t_end) break;
+        const State s = state_at(std::max(0.0, ts - t_));
+        out_.measured.trajectory.push_back(sample(s, ts));
+        out_.states.push_back({{s.a, {s.x, s.y}}, {s.vx, s.vy}, s.w});
+        out_.landed_vertices.push_back(landed_);
+        ++next_row_;
+    }
+}
+
+void Hopper::note_landing(long j, double kinetic_before_J) {
+    if (j <= landed_) return;
+    landed_ = j;
+    FaceImpact f;
+    f.index = static_cast<int>(out_.measured.impacts.size()) + 1;
+    f.time_s = t_;
+    f.position_m = s_.x - start_x_;
+    f.kinetic_before_J = kinetic_before_J;
+    f.kinetic_after_J = sample(s_, t_).kinetic_J;
+    out_.measured.impacts.push_back(f);
+}
+
+void Hopper::finish(Behaviour b) {
+    running_ = false;
+    Measurements& m = out_.measured;
+    m.behaviour = b;
+    m.end_time_s = t_;
+    const TrajectorySample last = sample(s_, t_);
+    m.distance_m = last.position_m;
+    if (m.trajectory.empty() || m.trajectory.back().time_s < t_) {
+        m.trajectory.push_back(last);
+        out_.states.push_back({{s_.a, {s_.x, s_.y}}, {s_.vx, s_.vy}, s_.w});
+        out_.landed_vertices.push_back(landed_);
+    }
+    if (b == Behaviour::rolled_to_end) set_terminal_velocity_at_end(m, n_, last);
+}
+
+void Hopper::stop_unsupported(const std::string& why) {
+    running_ = false;
+    out_.unsupported_time_s = t_;
+    out_.unsupported_why = why;
+}
+
+void Hopper::impact(long j) {
+    const double kinetic_before = sample(s_, t_).kinetic_J;
+    const Vec2 r = arm(j, s_.a);
+    const Vec2 v = vertex_velocity(s_, r);
+    if (v.y < 0.0) {
+        // Impulse P = (Pt, Pn) at the vertex: its velocity changes by K P. No bounce: the normal
+        // velocity ends at zero; the tangential one too if |Pt| <= mu Pn, else Pt = -+mu Pn.
+        const double k11 = 1.0 / m_ + r.y * r.y / inertia_, k12 = -r.x * r.y / inertia_;
+        const double k22 = 1.0 / m_ + r.x * r.x / inertia_;
+        const double det = k11 * k22 - k12 * k12;
+        double pt = (-v.x * k22 + k12 * v.y) / det;
+        double pn = (-k11 * v.y + k12 * v.x) / det;
+        if (std::fabs(pt) > mu_ * pn) {
+            const double sign = pt > 0.0 ? 1.0 : -1.0;
+            pn = -v.y / (k22 + k12 * mu_ * sign);
+            pt = sign * mu_ * pn;
+        }
+        s_.vx += pt / m_;
+        s_.vy += pn / m_;
+        s_.w += (r.x * pn - r.y * pt) / inertia_;
+    }
+    // The vertex that was on the ramp (if any) must not be driven into it by the impact: that is a
+    // face set down flat on both its vertices, which this model leaves to Box2D.
+    if (phase_ != Phase::flight && on_ != j) {
+        const Vec2 ro = arm(on_, s_.a);
+        if (s_.y + ro.y < 1e-6 && vertex_velocity(s_, ro).y < -1e-6) {
+            stop_unsupported("a face set down on both its vertices at once");
+            return;
+        }
+    }
+    // The landing vertex itself: at a face's landing both its vertices are equally low.
+    note_landing(j, kinetic_before);
+    settle_on(j);
+}
+
+void Hopper::settle_on(long j) {
+    on_ = j;
+    const Vec2 r = arm(j, s_.a);
+    const double vt = vertex_velocity(s_, r).x;
+    // Below a micrometre per second the vertex has stopped along the ramp.
+    if (std::fabs(vt) < 1e-6) {
+        phase_ = Phase::stick;
+        pivot_x_ = s_.x + r.x;
+        project(s_, phase_);
+        const Contact c = contact(s_, Phase::stick);
+        if (c.N < 0.0) {
+            phase_ = Phase::flight;
+        } else if (std::fabs(c.F) > mu_ * c.N) {
+            phase_ = Phase::slide;
+            slip_sign_ = c.F > 0.0 ? -1 : 1;  // friction at its limit pushes the way it was needed
+            ++out_.slides;
+        }
+    } else {
+        phase_ = Phase::slide;
+        slip_sign_ = vt > 0.0 ? 1 : -1;
+        project(s_, phase_);
+        ++out_.slides;
+        if (contact(s_, Phase::slide).N < 0.0) phase_ = Phase::flight;
+    }
+    if (phase_ == Phase::flight) {
+        ++out_.flights;
+        if (!out_.first_flight_s) out_.first_flight_s = t_;
+    }
+}
+
+void Hopper::contact_stretch() {
+    const double h_turn = kContactTurnRad / std::max(std::fabs(s_.w), 1e-9);
+    const double h = std::min({kContactStepS, h_turn, rules_.time_limit_s - t_});
+    const Phase p = phase_;
+    State next = rk4(s_, p, h);
+    ++out_.steps;
+    // The first event within the step: each one that holds at its end is traced back to where it
+    // began, and the earliest wins.
+    Event e = Event::none;
+    double tau = h;
+    for (Event k : kContactEvents) {
+        const double at_end = event_value(next, p, k);
+        if (at_end > 0.0) continue;
+        const double at_start = event_value(s_, p, k);
+        // Coming to rest is slowing down through the rest speed, not starting from rest.
+        if (k == Event::rest && at_start <= 0.0) continue;
+        const double when = at_start <= 0.0 ? 0.0
+                                            : first_root([&](double dt) { return event_value(rk4(s_, p, dt), p, k); },
+                                                         0.0, at_start, h, at_end, kEventTolS, out_.steps);
+        if (e == Event::none || when < tau) {
+            e = k;
+            tau = when;
+        }
+    }
+    if (e != Event::none) next = rk4(s_, p, tau);
+    const State start = s_;
+    emit_rows_before(t_ + tau, [&](double dt) { return rk4(start, p, dt); });
+    s_ = next;
+    t_ += tau;
+    switch (e) {
+        case Event::touch: {
+            // The lower neighbour (the event holds where its height reached zero, to rounding).
+            const long j = arm(on_ + 1, s_.a).y < arm(on_ - 1, s_.a).y ? on_ + 1 : on_ - 1;
+            s_.y -= s_.y + arm(j, s_.a).y;  // the halving leaves it a fraction of a nanometre in
+            impact(j);
+            break;
+        }
+        case Event::lift:
+            phase_ = Phase::flight;
+            ++out_.flights;
+            if (!out_.first_flight_s) out_.first_flight_s = t_;
+            break;
+        case Event::slip: {
+            const Contact c = contact(s_, Phase::stick);
+            phase_ = Phase::slide;
+            slip_sign_ = c.F > 0.0 ? -1 : 1;
+            ++out_.slides;
+            break;
+        }
+        case Event::grip: {
+            // The slip has stopped: the vertex sticks where it is, if friction can hold it.
+            const Vec2 r = arm(on_, s_.a);
+            s_.vx = s_.w * r.y;  // the vertex at rest
+            settle_on(on_);
+            break;
+        }
+        case Event::end: finish(Behaviour::rolled_to_end); break;
+        case Event::rest: stop_unsupported("the shell comes to rest on the ramp"); break;
+        case Event::none:
+            if (t_ >= rules_.time_limit_s) finish(Behaviour::time_limit);
+            break;
+    }
+}
+
+void Hopper::flight_stretch() {
+    // The first touch of the ramp by the lowest vertex or a neighbour. Each vertex's height
+    // h(tau) = y + vy tau - g cos(theta) tau^2 / 2 + R sin(beta + a + w tau) curves by at most
+    // C = g cos(theta) + R w^2, so it stays above h + h' d - C d^2 / 2 over a step d: the largest d
+    // keeping that positive cannot miss a touch. The vertex just left rises as tau^3 (the normal force
+    // fell to zero smoothly), which would make those steps crawl, so a step is never shorter than
+    // kFlightMinStepS, and a step that ends with a vertex below the ramp is halved back to the touch.
+    // Steps are kept under half a face's turn, so no vertex but these three can come lowest within one.
+    const State s0 = s_;
+    const double curve = g_cos_ + radius_ * s0.w * s0.w;
+    const double d_turn = kPi / n_ / std::max(std::fabs(s0.w), 1e-9);
+    const double left = rules_.time_limit_s - t_;
+    const double end_x = rules_.end_centre_x_m;
+    // The lowest of the three vertices about the lowest one at tau: its height and index.
+    auto lowest_of = [&](const State& s, long& which) {
+        const long k = lowest(s.a);
+        double h_min = std::numeric_limits<double>::infinity();
+        for (long j = k - 1; j <= k + 1; ++j) {
+            const double h = s.y + arm(j, s.a).y;
+            if (h < h_min) {
+                h_min = h;
+                which = j;
+            }
+        }
+        return h_min;
+    };
+    double tau = 0.0, stop = left;
+    long hit = 0;
+    bool touched = false;
+    while (tau < left) {
+        if (++out_.steps > kMaxSteps) return stop_unsupported("the flight search took too many steps");
+        const State s = flight_at(s0, tau);
+        const long k = lowest(s.a);
+        double d = d_turn;
+        for (long j = k - 1; j <= k + 1; ++j) {
+            const Vec2 r = arm(j, s.a);
+            const double h = std::max(0.0, s.y + r.y), rate = s.vy + s.w * r.x;
+            d = std::min(d, (rate + std::sqrt(rate * rate + 2.0 * curve * h)) / curve);
+        }
+        const double next = std::min(tau + std::max(d, kFlightMinStepS), left);
+        long j_next = 0;
+        const double h_next = lowest_of(flight_at(s0, next), j_next);
+        if (h_next < 0.0) {
+            const double h_now = lowest_of(flight_at(s0, tau), j_next);
+            const double hi = first_root([&](double dt) { return lowest_of(flight_at(s0, dt), j_next); }, tau,
+                                         std::max(h_now, 1e-300), next, h_next, kEventTolS, out_.steps);
+            lowest_of(flight_at(s0, hi), hit);
+            stop = hi;
+            touched = true;
+            break;
+        }
+        if (flight_at(s0, next).x >= end_x) {
+            stop = next;
+            break;
+        }
+        tau = next;
+    }
+    // The ramp's end within the flight: the centre's x, monotonic down the ramp here.
+    bool at_end = false;
+    if (flight_at(s0, stop).x >= end_x) {
+        stop = first_root([&](double dt) { return end_x - flight_at(s0, dt).x; }, 0.0, end_x - s0.x, stop,
+                          end_x - flight_at(s0, stop).x, kEventTolS, out_.steps);
+        at_end = true;
+    }
+    emit_rows_before(t_ + stop, [&](double dt) { return flight_at(s0, dt); });
+    s_ = flight_at(s0, stop);
+    t_ += stop;
+    if (at_end) return finish(Behaviour::rolled_to_end);
+    if (!touched) return finish(Behaviour::time_limit);
+    s_.y -= s_.y + arm(hit, s_.a).y;  // exactly on the ramp (the halving leaves it a femtometre in)
+    impact(hit);
+}
+
+HopRun Hopper::run() {
+    // Taken over on the ramp (turning about its lowest vertex) or above it.
+    const long j = lowest(s_.a);
+    on_ = j;
+    if (s_.y + arm(j, s_.a).y > kTouchM) {
+        phase_ = Phase::flight;
+        ++out_.flights;
+        out_.first_flight_s = t_;
+    } else {
+        phase_ = Phase::stick;  // so that a first impact sees no other vertex down
+        settle_on(j);
+    }
+    while (running_) {
+        if (out_.steps > kMaxSteps) {
+            stop_unsupported("more than two million steps");
+            break;
+        }
+        if (t_ >= rules_.time_limit_s) {
+            finish(Behaviour::time_limit);
+            break;
+        }
+        const double t_before = t_;
+        if (phase_ == Phase::flight) flight_stretch();
+        else contact_stretch();
+        chatter_ = t_ - t_before < kChatterS ? chatter_ + 1 : 0;
+        if (running_ && chatter_ > kMaxChatter) {
+            stop_unsupported("the contact switches state again and again within a microsecond");
+            break;
+        }
+        if (running_ && !(std::isfinite(s_.x) && std::isfinite(s_.y) && std::isfinite(s_.w)))
+            stop_unsupported("the state is not a finite number");
+    }
+    if (out_.unsupported_time_s) out_.measured.behaviour = Behaviour::running;
+    for (const TrajectorySample& s : out_.measured.trajectory)
+        out_.measured.max_energy_gain_J = std::max(out_.measured.max_energy_gain_J, -s.dissipated_J);
+    return out_;
+}
+
+}  // namespace
+
+HopRun hop(const HopBody& body, const HopRules& rules, const HopStart& start) {
+    Hopper h(body, rules, start);
+    return h.run();
+}
+
+}  // namespace polyroll::models

@@ -1,0 +1,164 @@
+// An empty shell's run after lift-off, revealed step by step: see hopping_run.h.
+#include "sim/models/hopping_run.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/fill_plan.h"
+#include "sim/run_snapshot.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll::models {
+
+namespace {
+HopStart start_from(const HandOver& from, double step_hz) {
+    HopStart s;
+    s.time_s = static_cast<double>(from.steps) / step_hz;
+    s.state = from.shell;
+    s.release = from.release;
+    s.potential_J = from.potential_J;
+    s.landed_vertex = from.landed_vertex;
+    s.measured = from.measured;
+    return s;
+}
+}  // namespace
+
+HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene), from_(from) {
+    const ShellProperties sp = shell_properties(scene.shell);
+    body_.outer_m = shell_outer_polygon_m(scene.shell);
+    body_.mass_kg = sp.mass_kg;
+    body_.inertia_kg_m2 = sp.inertia_kg_m2;
+    rules_.angle_deg = scene.ramp.angle_deg;
+    rules_.gravity_m_s2 = scene.run.gravity_m_s2;
+    // Box2D mixes two fixtures' coefficients as sqrt(a b); the shell's fixtures carry the ramp's own.
+    rules_.friction = scene.ramp.friction;
+    rules_.end_centre_x_m = scene.ramp.length_m - sp.outer_circumradius_m;  // as build_world
+    rules_.time_limit_s = scene.run.time_limit_s;
+    rules_.sample_hz = scene.run.sample_hz;
+    rules_.sample_grid_hz = scene.fidelity.step_hz;
+    rules_.rest_speed_m_s = scene.run.rest_speed_m_s;
+    full_ = hop(body_, rules_, start_from(from, scene.fidelity.step_hz));
+    if (full_.unsupported_time_s)
+        hand_over_step_ = std::max(from.steps, static_cast<long>(std::floor(*full_.unsupported_time_s * scene.fidelity.step_hz)));
+    outer_ = shell_outer_polygon_m(scene.shell);
+    inner_ = shell_inner_polygon_m(scene.shell);
+    steps_ = from.steps;
+    shown_ = from.measured;
+    shown_.behaviour = Behaviour::running;
+    reveal();
+}
+
+const HopRun& HoppingRun::fine() const {
+    std::call_once(fine_once_, [this] {
+        HopRules every_step = rules_;
+        every_step.sample_hz = scene_.fidelity.step_hz;
+        HopStart s = start_from(from_, scene_.fidelity.step_hz);
+        s.measured.trajectory.clear();  // row i of the result is step from.steps + 1 + i
+        s.first_row = from_.steps + 1;
+        fine_ = hop(body_, every_step, s);
+    });
+    return fine_;
+}
+
+ShellState HoppingRun::state_now() const {
+    if (steps_ <= from_.steps) return from_.shell;
+    const HopRun& f = fine();
+    if (f.states.empty()) return from_.shell;
+    const size_t i = std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.states.size() - 1);
+    return f.states[i];
+}
+
+TrajectorySample HoppingRun::sample_now() const {
+    if (steps_ > from_.steps) {
+        const HopRun& f = fine();
+        if (!f.measured.trajectory.empty()) {
+            const size_t i =
+                std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.measured.trajectory.size() - 1);
+            return f.measured.trajectory[i];
+        }
+    }
+    TrajectorySample s = from_.measured.trajectory.empty() ? TrajectorySample{} : from_.measured.trajectory.back();
+    s.time_s = time_s();
+    s.potential_J = from_.potential_J;
+    return s;
+}
+
+bool HoppingRun::finished() const {
+    return !hand_over_step_ && time_s() >= full_.measured.end_time_s - 1e-12;
+}
+
+bool HoppingRun::step() {
+    // Past the hand-over step the run has nothing to show: whoever runs it hands the shell over there.
+    if (finished() || (hand_over_step_ && steps_ >= *hand_over_step_)) return false;
+    ++steps_;
+    reveal();
+    return !finished();
+}
+
+void HoppingRun::run_to_end() {
+    const double hz = scene_.fidelity.step_hz;
+    if (hand_over_step_) {
+        steps_ = std::max(steps_, *hand_over_step_);
+    } else {
+        const double end = full_.measured.end_time_s - 1e-12;
+        long s = std::max(steps_, static_cast<long>(std::ceil(end * hz)));
+        while (s > steps_ && static_cast<double>(s - 1) / hz >= end) --s;
+        while (static_cast<double>(s) / hz < end) ++s;
+        steps_ = s;
+    }
+    reveal();
+}
+
+RunSnapshot HoppingRun::snapshot() const {
+    RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
+    s.time_s = finished() ? full_.measured.end_time_s : time_s();
+    const ShellState st = state_now();
+    s.shell_centre_m = st.pose.centre_m;
+    s.shell_angle_rad = st.pose.angle_rad;
+    set_measured(s, sample_now(), shown_);
+    return s;
+}
+
+RunResult HoppingRun::result() const {
+    RunResult r;
+    r.scene = scene_;
+    r.shell = shell_properties(scene_.shell);
+    r.measured = finished() ? full_.measured : shown_;
+    r.grains = 0;
+    r.settled = true;
+    r.steps = full_.steps;
+    return r;
+}
+
+HandOver HoppingRun::hand_over() const {
+    HandOver h;
+    h.steps = steps_;
+    h.shell = state_now();
+    h.release = from_.release;
+    h.measured = shown_;
+    h.measured.behaviour = Behaviour::running;
+    h.landed_vertex = from_.landed_vertex;
+    if (steps_ > from_.steps && !fine().landed_vertices.empty())
+        h.landed_vertex = fine().landed_vertices[std::min(static_cast<size_t>(steps_ - from_.steps - 1),
+                                                          fine().landed_vertices.size() - 1)];
+    h.potential_J = sample_now().potential_J;
+    return h;
+}
+
+// Moves what has happened by now from the whole run into the shown measurements.
+void HoppingRun::reveal() {
+    const Measurements& m = full_.measured;
+    const double t = time_s() + 1e-12;
+    while (shown_.trajectory.size() < m.trajectory.size() && m.trajectory[shown_.trajectory.size()].time_s <= t)
+        shown_.trajectory.push_back(m.trajectory[shown_.trajectory.size()]);
+    while (shown_.impacts.size() < m.impacts.size() && m.impacts[shown_.impacts.size()].time_s <= t)
+        shown_.impacts.push_back(m.impacts[shown_.impacts.size()]);
+    if (finished()) {
+        shown_ = m;
+    } else if (!shown_.trajectory.empty()) {
+        shown_.distance_m = shown_.trajectory.back().position_m;
+        shown_.end_time_s = time_s();
+    }
+}
+
+}  // namespace polyroll::models
