@@ -118,7 +118,6 @@ private:
     void finish(Behaviour b);
     void stop_unsupported(const std::string& why);
 
-    const HopBody& body_;
     const HopRules& rules_;
     int n_ = 0;
     double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
@@ -140,7 +139,7 @@ private:
     HopRun out_;
 };
 
-Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start) : body_(body), rules_(rules) {
+Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start) : rules_(rules) {
     n_ = static_cast<int>(body.outer_m.size());
     radius_ = geom::length(body.outer_m[0]);
     for (const Vec2& v : body.outer_m) beta_.push_back(std::atan2(v.y, v.x));
