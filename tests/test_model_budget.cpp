@@ -144,7 +144,7 @@ TEST_CASE("the panel names what the budget chose and what it costs", "[app][budg
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * f.full_detail.terminal_velocity_error)));
     CHECK(budget_model_label("grains", l) == level_label(l));
-    CHECK(budget_model_label("auto: grains", l) == "auto: grains, " + level_label(l));
+    CHECK(budget_model_label("auto: grains", l) == "auto: " + level_label(l));
     CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("full detail"));
     CHECK(level_label({2.0, "draft", 0, 0, 0, ""}) == "grains 2x larger, draft step");
     CHECK(level_label({1.5, "", 0, 0, 0, ""}) == "grains 1.5x larger");

@@ -60,7 +60,10 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
 }
 
 std::string budget_model_label(const std::string& model_label, const BudgetLevel& level) {
-    return model_label == "grains" ? level_label(level) : model_label + ", " + level_label(level);
+    // The level names the grains ("grains 1.5x larger"): said once, after auto's prefix if any.
+    if (model_label == "grains") return level_label(level);
+    if (model_label == "auto: grains") return "auto: " + level_label(level);
+    return model_label + ", " + level_label(level);
 }
 
 std::string budget_status(const BudgetLevel& level) {
