@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sim/fill_plan.h"
+#include "sim/models/reveal.h"
 #include "sim/run_snapshot.h"
 #include "sim/shell_properties.h"
 
@@ -96,16 +97,8 @@ bool HoppingRun::step() {
 }
 
 void HoppingRun::run_to_end() {
-    const double hz = scene_.fidelity.step_hz;
-    if (hand_over_step_) {
-        steps_ = std::max(steps_, *hand_over_step_);
-    } else {
-        const double end = full_.measured.end_time_s - 1e-12;
-        long s = std::max(steps_, static_cast<long>(std::ceil(end * hz)));
-        while (s > steps_ && static_cast<double>(s - 1) / hz >= end) --s;
-        while (static_cast<double>(s) / hz < end) ++s;
-        steps_ = s;
-    }
+    steps_ = hand_over_step_ ? std::max(steps_, *hand_over_step_)
+                             : first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
     reveal();
 }
 
@@ -145,20 +138,6 @@ HandOver HoppingRun::hand_over() const {
     return h;
 }
 
-// Moves what has happened by now from the whole run into the shown measurements.
-void HoppingRun::reveal() {
-    const Measurements& m = full_.measured;
-    const double t = time_s() + 1e-12;
-    while (shown_.trajectory.size() < m.trajectory.size() && m.trajectory[shown_.trajectory.size()].time_s <= t)
-        shown_.trajectory.push_back(m.trajectory[shown_.trajectory.size()]);
-    while (shown_.impacts.size() < m.impacts.size() && m.impacts[shown_.impacts.size()].time_s <= t)
-        shown_.impacts.push_back(m.impacts[shown_.impacts.size()]);
-    if (finished()) {
-        shown_ = m;
-    } else if (!shown_.trajectory.empty()) {
-        shown_.distance_m = shown_.trajectory.back().position_m;
-        shown_.end_time_s = time_s();
-    }
-}
+void HoppingRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 }  // namespace polyroll::models

@@ -6,6 +6,7 @@
 
 #include "sim/fill_plan.h"
 #include "sim/models/reduced_models.h"
+#include "sim/models/reveal.h"
 #include "sim/shell_pose.h"
 
 namespace polyroll::models {
@@ -63,17 +64,7 @@ bool ReducedRun::step() {
 }
 
 void ReducedRun::run_to_end() {
-    // The first tracker step at which finished() holds, computed rather than counted up to: counting
-    // ten thousand steps one by one cost about a third of a segment-model run on the default scene.
-    const double hz = scene_.fidelity.step_hz, end = full_.measured.end_time_s - 1e-12;
-    if (!std::isfinite(end) || !(hz > 0.0)) {  // no end to jump to (never for a validated scene)
-        reveal();
-        return;
-    }
-    long s = std::max(steps_, static_cast<long>(std::ceil(end * hz)));
-    while (s > steps_ && static_cast<double>(s - 1) / hz >= end) --s;
-    while (static_cast<double>(s) / hz < end) ++s;
-    steps_ = s;
+    steps_ = first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
     reveal();
 }
 
@@ -120,20 +111,6 @@ HandOver ReducedRun::hand_over() const {
     return h;
 }
 
-// Moves what has happened by now from the full run into the shown measurements.
-void ReducedRun::reveal() {
-    const Measurements& m = full_.measured;
-    const double t = time_s() + 1e-12;
-    while (shown_.trajectory.size() < m.trajectory.size() && m.trajectory[shown_.trajectory.size()].time_s <= t)
-        shown_.trajectory.push_back(m.trajectory[shown_.trajectory.size()]);
-    while (shown_.impacts.size() < m.impacts.size() && m.impacts[shown_.impacts.size()].time_s <= t)
-        shown_.impacts.push_back(m.impacts[shown_.impacts.size()]);
-    if (finished()) {
-        shown_ = m;  // the behaviour, distance and terminal velocity are known once it has ended
-    } else if (!shown_.trajectory.empty()) {
-        shown_.distance_m = shown_.trajectory.back().position_m;
-        shown_.end_time_s = time_s();
-    }
-}
+void ReducedRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 }  // namespace polyroll::models
