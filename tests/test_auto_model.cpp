@@ -9,6 +9,7 @@
 
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
+#include "sim/models/reduced_models.h"
 #include "sim/results_io.h"
 #include "sim/run_snapshot.h"
 #include "test_helpers.h"
@@ -69,9 +70,11 @@ TEST_CASE("auto on a filled shell computes exactly what the grain model computes
 TEST_CASE("auto on an empty shell that lifts off carries it on as a free rigid body, records carrying on",
           "[runs][models][handover][auto]") {
     const Scene s = empty_scene(8, 30.0);
-    const RunResult rigid = run_scene(with_model(s, Model::rigid));
+    // Where the rigid model stops holding by auto's rule: lift-off, or a slip (the ramp's friction).
+    const RunResult rigid = models::run_reduced_model(with_model(s, Model::rigid), models::FillMotion::frozen, true);
     REQUIRE(rigid.model_invalid_time_s);
     const double lift_off_s = *rigid.model_invalid_time_s;
+    CHECK(lift_off_s <= *run_scene(with_model(s, Model::rigid)).model_invalid_time_s);
 
     AutoRun run(s);
     CHECK(!run.choice().lift_off_time_s);
@@ -143,6 +146,29 @@ TEST_CASE("auto hands a shell to Box2D at the step before a contact the free rig
     CHECK(r.measured.behaviour == run_scene(with_model(s, Model::grains)).measured.behaviour);
     const Measurements& m = r.measured;
     for (size_t i = 1; i < m.trajectory.size(); ++i) CHECK(m.trajectory[i].time_s > m.trajectory[i - 1].time_s);
+}
+
+TEST_CASE("auto hands the rigid model's shell on where it would slip, not only where it would lift off",
+          "[runs][models][handover][auto]") {
+    // The empty hexagon at 20 deg never lifts off, but just before each impact its no-slip rolling
+    // needs a friction force 16.7 times the normal force (README, polyroll bench --auto): the ramp's
+    // 0.9 cannot give it, and the free rigid body takes over there, sliding, with no Box2D.
+    const Scene s = empty_scene(6, 20.0);
+    const Scene rigid = with_model(s, Model::rigid);
+    CHECK(run_scene(rigid).model_valid);
+    const RunResult until = models::run_reduced_model(rigid, models::FillMotion::frozen, true);
+    REQUIRE(until.model_invalid_time_s);
+    const RunResult a = run_scene(s);
+    REQUIRE(a.model_choice);
+    REQUIRE(a.model_choice->lift_off_time_s);
+    CHECK(*a.model_choice->lift_off_time_s <= *until.model_invalid_time_s);
+    CHECK(*a.model_choice->lift_off_time_s > *until.model_invalid_time_s - 1.0 / s.fidelity.step_hz - 1e-12);
+    CHECK(!a.model_choice->hand_over_time_s);
+    CHECK(a.measured.behaviour == Behaviour::rolled_to_end);
+    // With a ramp that grips (friction 2.0, the allowed maximum) the needed 16.7 is still too much.
+    Scene grippy = rigid;
+    grippy.ramp.friction = 2.0;
+    CHECK(models::run_reduced_model(grippy, models::FillMotion::frozen, true).model_invalid_time_s);
 }
 
 TEST_CASE("auto on an empty shell that never lifts off is the rigid model throughout", "[runs][models][auto]") {

@@ -44,7 +44,8 @@ void print_summary(const RunResult& r, const std::string& out) {
         const ModelChoice& c = *r.model_choice;
         const std::string flight =
             c.lift_off_time_s
-                ? fmt::format(", free to leave the ramp from t = {:.3f} s (where it would lift off)", *c.lift_off_time_s)
+                ? fmt::format(", free to leave the ramp from t = {:.3f} s (where it would lift off or slip)",
+                              *c.lift_off_time_s)
                 : std::string(" (it never lifts off)");
         if (c.hand_over_time_s)
             fmt::print("  model              {}{}, handed over to {} at t = {:.3f} s ({})\n", to_string(c.model), flight,

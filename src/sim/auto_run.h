@@ -1,6 +1,7 @@
 // A run of `--model auto`: the model choose_model picks for the scene. For an empty shell, the rigid
-// impact model until the tracker step before it would lift off (its validity check, docs/physics.md:
-// the normal force it needs turns negative); from there the same rigid body free to leave the ramp
+// impact model until the tracker step before it stops holding (docs/physics.md: the normal force it
+// needs turns negative, or the friction it needs exceeds the ramp's); from there the same rigid body
+// free to leave the ramp and to slide on it
 // (models/hopping_run.h: flights, vertex impacts, rolling and sliding), which hands the shell to
 // Box2D only where it meets a contact it does not model. The records carry on across each hand-over
 // (HandOver); no Box2D world is built unless that happens, which is where auto's speed comes from.

@@ -14,7 +14,8 @@ struct ModelChoice {
     Model model = Model::grains;       // the model the run starts with
     std::optional<Model> then;         // the model it hands over to when the first stops holding
     std::string reason;
-    // For an empty shell: the tracker step before the rigid model's shell would lift off, from which
+    // For an empty shell: the tracker step before the rigid model's shell would lift off or slip (the
+    // friction its rolling needs above the ramp's coefficient), from which
     // the free rigid body (models/hopping_polygon.h) carries it on, flying, landing on vertices,
     // rolling and sliding.
     std::optional<double> lift_off_time_s;

@@ -45,6 +45,7 @@ RunResult run_reduced_model(const Scene& scene, FillMotion motion, bool until_in
     // 1e-11 (tests/test_face_clock.cpp runs the matrix with both fill motions).
     RollingTrack track = rolling_track(scene);
     track.stop_when_invalid = until_invalid;
+    if (until_invalid) track.slip_friction = scene.ramp.friction;
     const RollingRun run = roll(rolling_body(scene), motion, track, FaceTiming::energy_integral);
     RunResult r;
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

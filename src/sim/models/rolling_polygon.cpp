@@ -88,6 +88,9 @@ private:
     void handle(Event e);
     void note_negative_normal();  // on the current pivot (hop_pivots)
     void note_friction(double sin_psi, double cos_psi, double rate_rad_s);  // max_friction_share
+    // Whether rolling without slipping needs more friction than track.slip_friction gives.
+    bool slips(double sin_psi, double cos_psi, double rate_rad_s) const;
+    double friction_force(double sin_psi, double cos_psi, double rate_rad_s) const;
 
     const RollingBody& b_;
     const FillMotion fill_motion_;
@@ -211,14 +214,23 @@ double Roller::normal_force(double sp, double cp, double rate) const {
     return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
 }
 
-void Roller::note_friction(double sp, double cp, double rate) {
+double Roller::friction_force(double sp, double cp, double rate) const {
     // M a_cm = M g + (F, N) in the ramp frame, the centre of mass turning about the fixed pivot:
     // a_cm.x = phi'' r.y - phi'^2 r.x (see normal_force for a_cm.y).
+    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_), ry = piv_.d * (cp * cos_t_ + sp * sin_t_);
+    return body_.mass_kg * (piv_.a * sp * ry - rate * rate * rx - g_ * sin_t_);
+}
+
+void Roller::note_friction(double sp, double cp, double rate) {
     const double n = normal_force(sp, cp, rate);
     if (!(n > 0.0)) return;
-    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_), ry = piv_.d * (cp * cos_t_ + sp * sin_t_);
-    const double f = body_.mass_kg * (piv_.a * sp * ry - rate * rate * rx - g_ * sin_t_);
-    out_.max_friction_share = std::max(out_.max_friction_share, std::fabs(f) / n);
+    out_.max_friction_share = std::max(out_.max_friction_share, std::fabs(friction_force(sp, cp, rate)) / n);
+}
+
+bool Roller::slips(double sp, double cp, double rate) const {
+    if (tr_.slip_friction <= 0.0) return false;
+    const double n = normal_force(sp, cp, rate);
+    return n > 0.0 && std::fabs(friction_force(sp, cp, rate)) > tr_.slip_friction * n;
 }
 
 void Roller::rebuild_body_landed(long face) {
@@ -291,13 +303,19 @@ void Roller::check_normal(const PendulumSeries& s) {
         const double w2 = std::max(0.0, 2.0 * (c - piv_.a * std::cos(p.psi)));
         note_friction(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
         if (nf < 0.0) note_negative_normal();
-        if (nf < 0.0 && out_.model_valid) {
-            // Bisection for when it turned negative; psi is monotonic between checkpoints.
+        const bool slip = slips(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
+        if ((nf < 0.0 || slip) && out_.model_valid) {
+            // Bisection for when it turned negative (or began to slip); psi is monotonic between
+            // checkpoints.
+            auto holds = [&](double tau) {
+                const double psi = s.psi(tau);
+                return normal_force(psi, c) >= 0.0 && !slips(std::sin(psi), std::cos(psi), s.rate(tau));
+            };
             double x = i > 0 ? path_[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
             for (int it = 0; it < 100 && i > 0; ++it) {
                 const double m = 0.5 * (x + y);
                 if (m <= x || m >= y) break;
-                (normal_force(s.psi(m), c) >= 0.0 ? x : y) = m;
+                (holds(m) ? x : y) = m;
             }
             out_.model_valid = false;
             out_.model_invalid_time_s = t_ + y;
@@ -362,6 +380,11 @@ void Roller::impact(int direction) {
         const Vec2 p{w * b_r.y - omega_ * a_r.y, -(w * b_r.x - omega_ * a_r.x)};
         if (p.y > 0.0)
             out_.max_impact_friction_share = std::max(out_.max_impact_friction_share, std::fabs(p.x) / p.y);
+        // An impact that needs more friction than the ramp gives: the real vertex slides as it lands.
+        if (tr_.slip_friction > 0.0 && out_.model_valid && !(p.y > 0.0 && std::fabs(p.x) <= tr_.slip_friction * p.y)) {
+            out_.model_valid = false;
+            out_.model_invalid_time_s = t_;
+        }
     }
 
     // A full polygon's fill is the whole inside whatever the orientation: nothing to re-level.
@@ -465,11 +488,13 @@ bool Roller::time_arc() {
     // rate changes fastest). Where it turns negative the stepper times the arc again to find when.
     const ArcPoint end = arc.point(arc.u_to());
     double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_), normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s));
+    bool slip = slips(std::sin(psi0), std::cos(psi0), omega_) || slips(end.sin_psi, end.cos_psi, end.rate_rad_s);
     arc.for_each_node([&](const ArcPoint& p) {
         n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s));
         note_friction(p.sin_psi, p.cos_psi, p.rate_rad_s);
+        slip = slip || slips(p.sin_psi, p.cos_psi, p.rate_rad_s);
     });
-    if (n_min < 0.0 && out_.model_valid) return false;
+    if ((n_min < 0.0 || slip) && out_.model_valid) return false;
     if (n_min < 0.0) note_negative_normal();
     out_.min_normal_force_N = std::min(out_.min_normal_force_N, n_min);
     emit_arc_samples(arc, t_ + tau);

@@ -54,6 +54,10 @@ struct RollingTrack {
     // End the run where the model stops holding (model_invalid_time_s), its behaviour left "running":
     // for `--model auto`, which hands the shell on there and needs nothing of the rigid model past it.
     bool stop_when_invalid = false;
+    // With stop_when_invalid: the model also stops holding where its no-slip rolling needs a friction
+    // force above this share of the normal force, between impacts or at one (the ramp's coefficient:
+    // the real shell slips there). 0: not checked (the reduced models as the experimenters made them).
+    double slip_friction = 0.0;
 };
 
 struct RollingRun {
