@@ -31,7 +31,7 @@ std::string model_label(const Scene& scene, const ModelChoice* choice) {
     if (choice->hand_over_time_s)
         return fmt::format("auto: {} from {:.2f} s", to_string(*choice->then), *choice->hand_over_time_s);
     if (choice->lift_off_time_s)
-        return fmt::format("auto: {}, free to hop or slide from {:.2f} s", to_string(choice->model), *choice->lift_off_time_s);
+        return fmt::format("auto: free body from {:.2f} s", *choice->lift_off_time_s);  // the rigid body, free to hop
     return fmt::format("auto: {}", to_string(choice->model));
 }
 
