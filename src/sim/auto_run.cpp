@@ -18,8 +18,9 @@ ModelChoice choose_model(const Scene& scene) {
             "empty shell: the rigid impact model is the exact limit of an empty shell while it rolls on the ramp "
             "without slipping (docs/physics.md); where the normal force it needs would turn negative or the "
             "friction it needs exceed the ramp's, the same rigid body goes on free to leave the ramp and to slide: "
-            "it flies, lands on a vertex without bouncing and rolls or slides on with the ramp's friction; Box2D takes the shell over only where that meets a contact it does not model (a face set "
-            "down on both vertices at once, coming to rest)";
+            "it flies, lands on a vertex without bouncing and rolls or slides on with the ramp's friction; Box2D "
+            "takes the shell over only where that meets a contact it does not model (a face set down on both "
+            "vertices at once, coming to rest)";
     } else {
         // docs/tradeoff/tradeoff.md, over its 21 scenes against the reference.
         c.model = Model::grains;

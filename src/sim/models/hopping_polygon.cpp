@@ -10,8 +10,6 @@
 #include <cmath>
 #include <limits>
 
-#include <fmt/format.h>
-
 namespace polyroll::models {
 
 using geom::Vec2;
@@ -373,7 +371,6 @@ void Hopper::settle_on(long j) {
     }
     if (phase_ == Phase::flight) {
         ++out_.flights;
-        if (!out_.first_flight_s) out_.first_flight_s = t_;
     }
 }
 
@@ -417,8 +414,7 @@ void Hopper::contact_stretch() {
         case Event::lift:
             phase_ = Phase::flight;
             ++out_.flights;
-            if (!out_.first_flight_s) out_.first_flight_s = t_;
-            break;
+                break;
         case Event::slip: {
             const Contact c = contact(s_, Phase::stick);
             phase_ = Phase::slide;
@@ -521,7 +517,6 @@ HopRun Hopper::run() {
     if (s_.y + arm(j, s_.a).y > kTouchM) {
         phase_ = Phase::flight;
         ++out_.flights;
-        out_.first_flight_s = t_;
     } else {
         phase_ = Phase::stick;  // so that a first impact sees no other vertex down
         settle_on(j);

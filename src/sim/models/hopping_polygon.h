@@ -64,7 +64,6 @@ struct HopRun {
     std::vector<long> landed_vertices;  // the highest vertex landed after each row added
     std::optional<double> unsupported_time_s;  // where the run met a contact it does not model
     std::string unsupported_why;
-    std::optional<double> first_flight_s;  // when the shell first left the ramp
     long flights = 0;                 // stretches without contact
     long slides = 0;                  // contact stretches sliding
     long steps = 0;                   // Runge-Kutta steps, flight search points and events

@@ -28,8 +28,6 @@ public:
     HandOver hand_over() const override;
     void run_to_end() override;
 
-    // When the shell first left the ramp, if it did.
-    std::optional<double> first_flight_s() const { return full_.first_flight_s; }
     // The tracker step at which to hand the shell to Box2D: the last one before the run met a contact
     // it does not model (unsupported_why), if it did.
     std::optional<long> hand_over_step() const { return hand_over_step_; }
