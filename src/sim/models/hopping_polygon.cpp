@@ -7,8 +7,11 @@
 #include "sim/models/hopping_polygon.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "sim/models/pivot_motion.h"
 
 namespace polyroll::models {
 
@@ -17,10 +20,15 @@ using geom::Vec2;
 namespace {
 
 constexpr double kPi = geom::kPi;
-// Runge-Kutta step on a vertex: the pendulum's rate a = M g R / I_pivot is about 100 /s^2 for the
-// bundled shells, so 1 ms leaves a local error near 1e-10 rad; never more than 1/50 rad of turn.
+// Runge-Kutta step on a sliding vertex: the pendulum's rate a = M g R / I_pivot is about 100 /s^2 for
+// the bundled shells, so 1 ms leaves a local error near 1e-10 rad; never more than 1/50 rad of turn.
+// A sticking vertex's motion is the rigid model's pendulum series (pivot_motion.h), exact to rounding;
+// its events are looked for on the same grid.
 constexpr double kContactStepS = 1e-3;
 constexpr double kContactTurnRad = 0.02;
+// The sticking stretch's grid for events: the series needs no small steps, so only the turn and this
+// bound the gap in which an event could come and go unseen.
+constexpr double kStickGridS = 5e-3;
 // Events inside a step are found to this time (false position, first_root).
 constexpr double kEventTolS = 1e-9;
 // A vertex closer to the ramp than this at the start is on it.
@@ -70,6 +78,27 @@ double first_root(F f, double lo, double f_lo, double hi, double f_hi, double to
     return hi;
 }
 
+// How long a vertex's height above the ramp in flight surely stays positive, from its derivatives now
+// (h, h1 = dh/dt, h2, h3 the second and third) and a bound k4 on the fourth's size over the flight:
+// the Taylor polynomial with that remainder, L(t) = h + h1 t + h2 t^2/2 + h3 t^3/6 - k4 t^4/24, is a
+// lower bound of the height, and L > 0 on (0, d] wherever its Bernstein coefficients on [0, d] are all
+// non-negative and the last positive. Halves d from d_max until they are; 0 if 30 halvings do not.
+// Unlike a second-order bound, this proves a step for the vertex just left, which rises as t^3 (its
+// height, speed and acceleration along the ramp's normal all vanish at lift-off).
+double positive_for(double h, double h1, double h2, double h3, double k4, double d_max) {
+    double d = d_max;
+    for (int i = 0; i < 30; ++i, d *= 0.5) {
+        const double c1 = h1 * d, c2 = h2 * d * d / 2.0, c3 = h3 * d * d * d / 6.0, c4 = -k4 * d * d * d * d / 24.0;
+        // Power basis to Bernstein basis of degree 4: b_i = sum over k <= i of C(i,k) / C(4,k) c_k.
+        const double b1 = h + c1 / 4.0;
+        const double b2 = h + c1 / 2.0 + c2 / 6.0;
+        const double b3 = h + 3.0 * c1 / 4.0 + c2 / 2.0 + c3 / 4.0;
+        const double b4 = h + c1 + c2 + c3 + c4;
+        if (b1 >= 0.0 && b2 >= 0.0 && b3 >= 0.0 && b4 > 0.0) return d;
+    }
+    return 0.0;
+}
+
 class Hopper {
 public:
     Hopper(const HopBody& body, const HopRules& rules, const HopStart& start);
@@ -81,26 +110,61 @@ private:
         State rate;           // d/dt of the state
     };
 
-    // Vertex j (unwrapped) relative to the centre at angle a.
-    Vec2 arm(long j, double a) const {
-        const double b = beta_[static_cast<size_t>(((j % n_) + n_) % n_)] + a;
-        return {radius_ * std::cos(b), radius_ * std::sin(b)};
+    // The turn of the body: the cosine and sine of its angle, worked out once per state.
+    struct Turn {
+        double c = 1.0, s = 0.0;
+    };
+    static Turn turn_of(double a) { return {std::cos(a), std::sin(a)}; }
+    // t turned on by d: a short series for the small turns within a step (under 0.1 rad, the first
+    // term left out is under 3e-17), the library beyond.
+    static Turn turned(Turn t, double d) {
+        double c = 0.0, s = 0.0;
+        if (std::fabs(d) < 0.1) {
+            const double d2 = d * d;
+            c = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
+            s = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))));
+        } else {
+            c = std::cos(d);
+            s = std::sin(d);
+        }
+        return {t.c * c - t.s * s, t.s * c + t.c * s};
     }
+    size_t index(long j) const { return static_cast<size_t>(((j % n_) + n_) % n_); }
+    // Vertex j (unwrapped) relative to the centre, with the body turned by t (or by angle a).
+    Vec2 arm(long j, Turn t) const {
+        const Vec2 u = unit_[index(j)];
+        return {radius_ * (u.x * t.c - u.y * t.s), radius_ * (u.x * t.s + u.y * t.c)};
+    }
+    Vec2 arm(long j, double a) const { return arm(j, turn_of(a)); }
     long lowest(double a) const { return static_cast<long>(std::floor(1.0 - a * n_ / (2.0 * kPi))); }
     Vec2 vertex_velocity(const State& s, Vec2 r) const { return {s.vx - s.w * r.y, s.vy + s.w * r.x}; }
 
-    Contact contact(const State& s, Phase p) const;
+    // The forces with the contact vertex at r from the centre.
+    Contact contact(const State& s, Phase p, Vec2 r) const;
+    Contact contact(const State& s, Phase p) const { return contact(s, p, arm(on_, s.a)); }
     State rk4(const State& s, Phase p, double h) const;
-    void project(State& s, Phase p) const;
+    void project(State& s, Phase p, Turn t) const;
+    void project(State& s, Phase p) const { project(s, p, turn_of(s.a)); }
     State flight_at(const State& s, double tau) const;
 
     // What ends a contact step. Each has a value that is positive before it and turns non-positive
     // where it happens (a neighbour's height, the normal force, the friction to spare, ...).
     enum class Event { none, touch, lift, slip, grip, end, rest };
     static constexpr Event kContactEvents[] = {Event::touch, Event::lift, Event::slip, Event::grip, Event::end, Event::rest};
-    double event_value(const State& s, Phase p, Event e) const;
+    // c: the contact forces at s if already worked out (they are the same for every event).
+    double event_value(const State& s, Phase p, Event e, Turn t, const Contact* c = nullptr) const;
+    double event_value(const State& s, Phase p, Event e) const { return event_value(s, p, e, turn_of(s.a)); }
 
+    // The sticking vertex's pendulum (pivot_motion.h): psi is the turn past the centre straight above
+    // the pivot, psi = beta + a - theta + pi/2 for the contact vertex's beta.
+    double psi_of(double a) const { return beta_[index(on_)] + a - theta_ + kPi / 2.0; }
+    // The state at tau into a series begun at psi0 from angle a0, and the body's turn there.
+    State stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const;
+
+    void stick_stretch();
     void contact_stretch();
+    // What follows a contact stretch's event (s_ and t_ at it).
+    void after_contact_event(Event e);
     void flight_stretch();
     // Resolves the impact of vertex j (unwrapped) and picks the stretch that follows.
     void impact(long j);
@@ -119,8 +183,12 @@ private:
     const HopRules& rules_;
     int n_ = 0;
     double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
+    double inv_m_ = 0.0, inv_i_ = 0.0;
+    double theta_ = 0.0, cos_theta_ = 1.0, sin_theta_ = 0.0;
     double gx_ = 0.0, gy_ = 0.0, g_cos_ = 0.0;
+    double pendulum_a_ = 0.0;  // M g R / I_pivot, 1/s^2
     std::vector<double> beta_;
+    std::vector<Vec2> unit_;  // (cos beta, sin beta) of each vertex
     Vec2 up_;
     double start_x_ = 0.0, start_a_ = 0.0, potential_offset_J_ = 0.0;
 
@@ -140,15 +208,23 @@ private:
 Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start) : rules_(rules) {
     n_ = static_cast<int>(body.outer_m.size());
     radius_ = geom::length(body.outer_m[0]);
-    for (const Vec2& v : body.outer_m) beta_.push_back(std::atan2(v.y, v.x));
+    for (const Vec2& v : body.outer_m) {
+        beta_.push_back(std::atan2(v.y, v.x));
+        unit_.push_back({std::cos(beta_.back()), std::sin(beta_.back())});
+    }
     m_ = body.mass_kg;
     inertia_ = body.inertia_kg_m2;
+    inv_m_ = 1.0 / m_;
+    inv_i_ = 1.0 / inertia_;
     mu_ = rules.friction;
-    const double theta = rules.angle_deg * kPi / 180.0;
-    gx_ = rules.gravity_m_s2 * std::sin(theta);
-    gy_ = -rules.gravity_m_s2 * std::cos(theta);
+    theta_ = rules.angle_deg * kPi / 180.0;
+    cos_theta_ = std::cos(theta_);
+    sin_theta_ = std::sin(theta_);
+    gx_ = rules.gravity_m_s2 * sin_theta_;
+    gy_ = -rules.gravity_m_s2 * cos_theta_;
     g_cos_ = -gy_;
-    up_ = {-std::sin(theta), std::cos(theta)};
+    pendulum_a_ = m_ * rules.gravity_m_s2 * radius_ / (inertia_ + m_ * radius_ * radius_);
+    up_ = {-sin_theta_, cos_theta_};
     start_x_ = start.release.centre_m.x;
     start_a_ = start.release.angle_rad;
     const ShellState& st = start.state;
@@ -163,29 +239,28 @@ Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start
     potential_offset_J_ = m_ * rules.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
 }
 
-Hopper::Contact Hopper::contact(const State& s, Phase p) const {
+Hopper::Contact Hopper::contact(const State& s, Phase p, Vec2 r) const {
     Contact c;
     if (p != Phase::flight) {
-        const Vec2 r = arm(on_, s.a);
         const double w2 = s.w * s.w;
         if (p == Phase::stick) {
             // The vertex stays put: both components of its acceleration vanish,
             // a_c + alpha x r - w^2 r = 0 with M a_c = M g + (F, N), I alpha = r x (F, N).
-            const double k11 = 1.0 / m_ + r.y * r.y / inertia_, k12 = -r.x * r.y / inertia_;
-            const double k22 = 1.0 / m_ + r.x * r.x / inertia_;
+            const double k11 = inv_m_ + r.y * r.y * inv_i_, k12 = -r.x * r.y * inv_i_;
+            const double k22 = inv_m_ + r.x * r.x * inv_i_;
             const double b1 = w2 * r.x - gx_, b2 = w2 * r.y - gy_;
-            const double det = k11 * k22 - k12 * k12;
-            c.F = (b1 * k22 - k12 * b2) / det;
-            c.N = (k11 * b2 - k12 * b1) / det;
+            const double inv_det = 1.0 / (k11 * k22 - k12 * k12);
+            c.F = (b1 * k22 - k12 * b2) * inv_det;
+            c.N = (k11 * b2 - k12 * b1) * inv_det;
         } else {
             // The vertex slides along the ramp: only its normal acceleration vanishes, and friction
             // is mu N against the slip.
             const double f = -mu_ * slip_sign_;  // F = f N
-            c.N = (w2 * r.y - gy_) / (1.0 / m_ + r.x * (r.x - f * r.y) / inertia_);
+            c.N = (w2 * r.y - gy_) / (inv_m_ + r.x * (r.x - f * r.y) * inv_i_);
             c.F = f * c.N;
         }
-        const double alpha = (r.x * c.N - r.y * c.F) / inertia_;
-        c.rate = {s.vx, s.vy, s.w, gx_ + c.F / m_, gy_ + c.N / m_, alpha};
+        const double alpha = (r.x * c.N - r.y * c.F) * inv_i_;
+        c.rate = {s.vx, s.vy, s.w, gx_ + c.F * inv_m_, gy_ + c.N * inv_m_, alpha};
     } else {
         c.rate = {s.vx, s.vy, s.w, gx_, gy_, 0.0};
     }
@@ -193,10 +268,13 @@ Hopper::Contact Hopper::contact(const State& s, Phase p) const {
 }
 
 State Hopper::rk4(const State& s, Phase p, double h) const {
-    const State k1 = contact(s, p).rate;
-    const State k2 = contact(add(s, k1, h / 2), p).rate;
-    const State k3 = contact(add(s, k2, h / 2), p).rate;
-    const State k4 = contact(add(s, k3, h), p).rate;
+    // One sine and cosine per step: each stage's turn is the start's turned on by its few hundredths
+    // of a radian.
+    const Turn t0 = turn_of(s.a);
+    const State k1 = contact(s, p, arm(on_, t0)).rate;
+    const State k2 = contact(add(s, k1, h / 2), p, arm(on_, turned(t0, h / 2 * k1.a))).rate;
+    const State k3 = contact(add(s, k2, h / 2), p, arm(on_, turned(t0, h / 2 * k2.a))).rate;
+    const State k4 = contact(add(s, k3, h), p, arm(on_, turned(t0, h * k3.a))).rate;
     State r = s;
     r.x += h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
     r.y += h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y);
@@ -204,14 +282,14 @@ State Hopper::rk4(const State& s, Phase p, double h) const {
     r.vx += h / 6 * (k1.vx + 2 * k2.vx + 2 * k3.vx + k4.vx);
     r.vy += h / 6 * (k1.vy + 2 * k2.vy + 2 * k3.vy + k4.vy);
     r.w += h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w);
-    project(r, p);
+    project(r, p, turned(t0, r.a - s.a));
     return r;
 }
 
-void Hopper::project(State& s, Phase p) const {
+void Hopper::project(State& s, Phase p, Turn t) const {
     // The integrator drifts off the constraint by its truncation error; put the vertex back on it.
     if (p == Phase::flight) return;
-    const Vec2 r = arm(on_, s.a);
+    const Vec2 r = arm(on_, t);
     s.y = -r.y;
     s.vy = -s.w * r.x;
     if (p == Phase::stick) {
@@ -225,19 +303,19 @@ State Hopper::flight_at(const State& s, double tau) const {
             s.vx + gx_ * tau, s.vy + gy_ * tau, s.w};
 }
 
-double Hopper::event_value(const State& s, Phase p, Event e) const {
+double Hopper::event_value(const State& s, Phase p, Event e, Turn t, const Contact* c) const {
     constexpr double kNever = 1.0;
     switch (e) {
         case Event::touch:  // a neighbour of the contact vertex meeting the ramp
-            return std::min(s.y + arm(on_ - 1, s.a).y, s.y + arm(on_ + 1, s.a).y);
-        case Event::lift: return contact(s, p).N;
+            return std::min(s.y + arm(on_ - 1, t).y, s.y + arm(on_ + 1, t).y);
+        case Event::lift: return c ? c->N : contact(s, p, arm(on_, t)).N;
         case Event::slip: {
             if (p != Phase::stick) return kNever;
-            const Contact c = contact(s, p);
-            return mu_ * c.N - std::fabs(c.F);
+            const Contact f = c ? *c : contact(s, p, arm(on_, t));
+            return mu_ * f.N - std::fabs(f.F);
         }
         case Event::grip:
-            return p == Phase::slide ? vertex_velocity(s, arm(on_, s.a)).x * slip_sign_ : kNever;
+            return p == Phase::slide ? vertex_velocity(s, arm(on_, t)).x * slip_sign_ : kNever;
         case Event::end: return rules_.end_centre_x_m - s.x;
         case Event::rest:
             return std::max(std::hypot(s.vx, s.vy), std::fabs(s.w) * radius_) - rules_.rest_speed_m_s;
@@ -384,10 +462,12 @@ void Hopper::contact_stretch() {
     // began, and the earliest wins.
     Event e = Event::none;
     double tau = h;
+    const Turn turn_next = turn_of(next.a), turn_now = turn_of(s_.a);
+    const Contact c_next = contact(next, p, arm(on_, turn_next));
     for (Event k : kContactEvents) {
-        const double at_end = event_value(next, p, k);
+        const double at_end = event_value(next, p, k, turn_next, &c_next);
         if (at_end > 0.0) continue;
-        const double at_start = event_value(s_, p, k);
+        const double at_start = event_value(s_, p, k, turn_now);
         // Coming to rest is slowing down through the rest speed, not starting from rest.
         if (k == Event::rest && at_start <= 0.0) continue;
         const double when = at_start <= 0.0 ? 0.0
@@ -403,6 +483,79 @@ void Hopper::contact_stretch() {
     emit_rows_before(t_ + tau, [&](double dt) { return rk4(start, p, dt); });
     s_ = next;
     t_ += tau;
+    after_contact_event(e);
+}
+
+State Hopper::stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const {
+    double psi = 0.0, rate = 0.0, sin_psi = 0.0, cos_psi = 0.0;
+    ps.psi_and_rate(tau, psi, rate);
+    ps.sin_cos_psi(tau, sin_psi, cos_psi);
+    // The contact vertex points along phi = psi + theta - pi/2 from the centre, and the centre is
+    // where that puts the vertex on the pivot, moving about it.
+    const double c_phi = sin_psi * cos_theta_ + cos_psi * sin_theta_;
+    const double s_phi = sin_psi * sin_theta_ - cos_psi * cos_theta_;
+    const Vec2 r{radius_ * c_phi, radius_ * s_phi};
+    const Vec2 u = unit_[index(on_)];  // a = phi - beta
+    t = {c_phi * u.x + s_phi * u.y, s_phi * u.x - c_phi * u.y};
+    return {pivot_x_ - r.x, -r.y, a0 + (psi - psi0), rate * r.y, -rate * r.x, rate};
+}
+
+void Hopper::stick_stretch() {
+    // One stretch of the series, as long as it stays accurate to rounding; events looked for on the
+    // Runge-Kutta stretch's grid (the series gives each grid point without integrating) and traced
+    // back to where they begin, as there.
+    const double a0 = s_.a, psi0 = psi_of(a0);
+    const PendulumSeries ps(psi0, s_.w, pendulum_a_);
+    const double span = std::min(ps.accurate_step_s(), rules_.time_limit_s - t_);
+    Turn turn0;
+    State s0 = stick_state(ps, psi0, a0, 0.0, turn0);
+    std::array<double, std::size(kContactEvents)> v0{};
+    const Contact c0 = contact(s0, Phase::stick, arm(on_, turn0));
+    for (size_t k = 0; k < v0.size(); ++k) v0[k] = event_value(s0, Phase::stick, kContactEvents[k], turn0, &c0);
+    double lo = 0.0, tau = span;
+    Event e = Event::none;
+    while (lo < span && e == Event::none) {
+        const double h = std::min({kStickGridS, kContactTurnRad / std::max(std::fabs(s0.w), 1e-9), span - lo});
+        const double hi = lo + h;
+        ++out_.steps;
+        Turn turn1;
+        const State s1 = stick_state(ps, psi0, a0, hi, turn1);
+        std::array<double, std::size(kContactEvents)> v1{};
+        const Contact c1 = contact(s1, Phase::stick, arm(on_, turn1));
+        for (size_t k = 0; k < v1.size(); ++k) {
+            const Event ev = kContactEvents[k];
+            v1[k] = event_value(s1, Phase::stick, ev, turn1, &c1);
+            if (v1[k] > 0.0) continue;
+            if (ev == Event::rest && v0[k] <= 0.0) continue;  // as in contact_stretch
+            const double when =
+                v0[k] <= 0.0 ? lo
+                             : first_root(
+                                   [&](double x) {
+                                       Turn tx;
+                                       const State sx = stick_state(ps, psi0, a0, x, tx);
+                                       return event_value(sx, Phase::stick, ev, tx);
+                                   },
+                                   lo, v0[k], hi, v1[k], kEventTolS, out_.steps);
+            if (e == Event::none || when < tau) {
+                e = ev;
+                tau = when;
+            }
+        }
+        if (e == Event::none) {
+            lo = hi;
+            s0 = s1;
+            v0 = v1;
+        }
+    }
+    if (e == Event::none) tau = span;
+    Turn unused;
+    emit_rows_before(t_ + tau, [&](double dt) { return stick_state(ps, psi0, a0, dt, unused); });
+    s_ = stick_state(ps, psi0, a0, tau, unused);
+    t_ += tau;
+    after_contact_event(e);
+}
+
+void Hopper::after_contact_event(Event e) {
     switch (e) {
         case Event::touch: {
             // The lower neighbour (the event holds where its height reached zero, to rounding).
@@ -440,10 +593,12 @@ void Hopper::contact_stretch() {
 void Hopper::flight_stretch() {
     // The first touch of the ramp by the lowest vertex or a neighbour. Each vertex's height
     // h(tau) = y + vy tau - g cos(theta) tau^2 / 2 + R sin(beta + a + w tau) curves by at most
-    // C = g cos(theta) + R w^2, so it stays above h + h' d - C d^2 / 2 over a step d: the largest d
-    // keeping that positive cannot miss a touch. The vertex just left rises as tau^3 (the normal force
-    // fell to zero smoothly), which would make those steps crawl, so a step is never shorter than
-    // kFlightMinStepS, and a step that ends with a vertex below the ramp is halved back to the touch.
+    // C = g cos(theta) + R w^2, so it stays above h + h' d - C d^2 / 2 over a step d, and its fourth
+    // derivative is at most R w^4 in size (positive_for): the longer step either bound proves cannot
+    // miss a touch. The fourth-order bound lets the search pass the vertex just left (rising as tau^3:
+    // the normal force fell to zero smoothly) in a few steps where the second-order one crawled. A step
+    // is never shorter than kFlightMinStepS, and one that ends with a vertex below the ramp is traced
+    // back to the touch.
     // Steps are kept under half a face's turn, so no vertex but these three can come lowest within one.
     const State s0 = s_;
     const double curve = g_cos_ + radius_ * s0.w * s0.w;
@@ -471,10 +626,14 @@ void Hopper::flight_stretch() {
         const State s = flight_at(s0, tau);
         const long k = lowest(s.a);
         double d = d_turn;
+        const double w2 = s.w * s.w;
         for (long j = k - 1; j <= k + 1; ++j) {
             const Vec2 r = arm(j, s.a);
             const double h = std::max(0.0, s.y + r.y), rate = s.vy + s.w * r.x;
-            d = std::min(d, (rate + std::sqrt(rate * rate + 2.0 * curve * h)) / curve);
+            const double second = (rate + std::sqrt(rate * rate + 2.0 * curve * h)) / curve;
+            const double fourth =
+                positive_for(h, rate, -g_cos_ - w2 * r.y, -w2 * s.w * r.x, w2 * w2 * radius_, d_turn);
+            d = std::min(d, std::max(second, fourth));
         }
         const double next = std::min(tau + std::max(d, kFlightMinStepS), left);
         long j_next = 0;
@@ -532,6 +691,7 @@ HopRun Hopper::run() {
         }
         const double t_before = t_;
         if (phase_ == Phase::flight) flight_stretch();
+        else if (phase_ == Phase::stick) stick_stretch();
         else contact_stretch();
         chatter_ = t_ - t_before < kChatterS ? chatter_ + 1 : 0;
         if (running_ && chatter_ > kMaxChatter) {
