@@ -633,7 +633,8 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
         row("model", &LaneReadout::model,
             "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty shell, "
-            "handing over to Box2D at lift-off; grains for a filled one. Hover a lane's entry for its reason.");
+            "going on as a free rigid body where it would lift off or slip; grains for a filled one. Hover a "
+            "lane's entry for its reason.");
         ImGui::EndTable();
     }
     ImGui::EndChild();

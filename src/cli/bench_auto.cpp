@@ -41,6 +41,16 @@ std::string speed(const std::optional<double>& v) { return v ? fmt::format("{:.3
 
 }  // namespace
 
+Scene at_finest_box2d(Scene s) {
+    s.run.model = Model::grains;
+    s.fidelity.preset.clear();
+    s.fidelity.step_hz = 10000.0;
+    s.fidelity.substeps = 8;
+    s.fidelity.velocity_iterations = 40;
+    s.fidelity.position_iterations = 10;
+    return s;
+}
+
 void bench_auto(const Scene& base, int repeats) {
     fmt::print("\nauto against grains on empty shells ({} fidelity for grains; reference: one grain run at the\n"
                "reference preset), best of {} on one core\n",
@@ -60,16 +70,7 @@ void bench_auto(const Scene& base, int repeats) {
             s.run.model = Model::grains;
             const Timed g = time_runs(s, repeats);
             const RunResult ref = run_scene(at_fidelity_preset(s, "reference"));
-            // Box2D far finer than any preset (80,000 engine steps a second, 40 and 10 iterations):
-            // where a shell hops, the grain model's answer still moves with the step at the reference
-            // preset, so this is the nearest to its converged answer the bench can afford.
-            Scene fine = s;
-            fine.fidelity.preset.clear();
-            fine.fidelity.step_hz = 10000.0;
-            fine.fidelity.substeps = 8;
-            fine.fidelity.velocity_iterations = 40;
-            fine.fidelity.position_iterations = 10;
-            const RunResult finest = run_scene(fine);
+            const RunResult finest = run_scene(at_finest_box2d(s));
             s.run.model = Model::rigid;
             const RunResult rigid = run_scene(s);
             // The rigid model run on past lift-off: on how many of its faces the normal force it needs

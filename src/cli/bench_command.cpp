@@ -27,6 +27,7 @@ struct BenchOptions {
     std::vector<std::string> presets;
     bool render_only = false, no_render = false, no_calibration = false;
     bool auto_only = false;
+    int ensemble = 0;  // with auto_only: members per shell of the ensemble table; 0: none
 };
 
 using Clock = std::chrono::steady_clock;
@@ -37,6 +38,7 @@ int bench(const BenchOptions& o) {
     Scene base = o.scene.resolve();
     if (o.auto_only) {
         bench_auto(base, o.repeats);
+        if (o.ensemble > 0) bench_auto_ensemble(base, o.ensemble);
         return kExitOk;
     }
     if (o.render_only) {
@@ -97,8 +99,14 @@ Action add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1, 100));
     sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
     sub->add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
-    sub->add_flag("--auto", opts->auto_only,
-                  "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
+    CLI::Option* auto_flag =
+        sub->add_flag("--auto", opts->auto_only,
+                      "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
+    sub->add_option("--ensemble", opts->ensemble,
+                    "with --auto: also run each shell from this many releases 0.001 deg apart and compare the "
+                    "models' mean terminal velocities and ranges (hopping shells are sensitive to tiny changes)")
+        ->check(CLI::Range(2, 50))
+        ->needs(auto_flag);
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     sub->add_flag("--no-calibration", opts->no_calibration,
                   "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");

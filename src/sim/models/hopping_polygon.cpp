@@ -525,7 +525,15 @@ void Hopper::stick_stretch() {
         for (size_t k = 0; k < v1.size(); ++k) {
             const Event ev = kContactEvents[k];
             v1[k] = event_value(s1, Phase::stick, ev, turn1, &c1);
-            if (v1[k] > 0.0) continue;
+            // A shell rocking on the vertex passes through rest where it turns back; a grid point
+            // either side of that can both be above the rest speed, so the turn itself is looked at.
+            double end = hi, at_end = v1[k];
+            if (ev == Event::rest && at_end > 0.0 && s0.w * s1.w < 0.0) {
+                end = ps.solve_turn(lo, hi);
+                Turn tt;
+                at_end = event_value(stick_state(ps, psi0, a0, end, tt), Phase::stick, ev, tt);
+            }
+            if (at_end > 0.0) continue;
             if (ev == Event::rest && v0[k] <= 0.0) continue;  // as in contact_stretch
             const double when =
                 v0[k] <= 0.0 ? lo
@@ -535,7 +543,7 @@ void Hopper::stick_stretch() {
                                        const State sx = stick_state(ps, psi0, a0, x, tx);
                                        return event_value(sx, Phase::stick, ev, tx);
                                    },
-                                   lo, v0[k], hi, v1[k], kEventTolS, out_.steps);
+                                   lo, v0[k], end, at_end, kEventTolS, out_.steps);
             if (e == Event::none || when < tau) {
                 e = ev;
                 tau = when;
