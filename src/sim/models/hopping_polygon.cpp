@@ -616,9 +616,10 @@ void Hopper::flight_stretch() {
     // The lowest of the three vertices about the lowest one at tau: its height and index.
     auto lowest_of = [&](const State& s, long& which) {
         const long k = lowest(s.a);
+        const Turn t = turn_of(s.a);
         double h_min = std::numeric_limits<double>::infinity();
         for (long j = k - 1; j <= k + 1; ++j) {
-            const double h = s.y + arm(j, s.a).y;
+            const double h = s.y + arm(j, t).y;
             if (h < h_min) {
                 h_min = h;
                 which = j;
@@ -635,8 +636,9 @@ void Hopper::flight_stretch() {
         const long k = lowest(s.a);
         double d = d_turn;
         const double w2 = s.w * s.w;
+        const Turn t = turn_of(s.a);
         for (long j = k - 1; j <= k + 1; ++j) {
-            const Vec2 r = arm(j, s.a);
+            const Vec2 r = arm(j, t);
             const double h = std::max(0.0, s.y + r.y), rate = s.vy + s.w * r.x;
             const double second = (rate + std::sqrt(rate * rate + 2.0 * curve * h)) / curve;
             const double fourth =
