@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 
 #include "cli/bench_auto.h"
+#include "sim/errors.h"
 #include "sim/model_registry.h"
+#include "sim/scene_validate.h"
 
 namespace polyroll::cli {
 
@@ -57,11 +59,18 @@ void bench_auto_ensemble(const Scene& base, int members) {
     for (int sides : {6, 8, 10, 18}) {
         for (double angle : {5.0, 10.0, 20.0, 30.0}) {
             Spread a, g, f;
+            Scene s = base;
+            s.fill.ratio = 0.0;
+            s.shell.sides = sides;
+            s.ramp.angle_deg = angle;
+            s.release.tilt_deg = base.release.tilt_deg + 0.001 * (members - 1);
+            try {
+                validate_scene(s);  // the largest tilt; a --tilt fit for the base shell may not fit this one
+            } catch (const InputError& e) {
+                fmt::print("{:>3} {:>5g}  skipped: {}\n", sides, angle, e.what());
+                continue;
+            }
             for (int k = 0; k < members; ++k) {
-                Scene s = base;
-                s.fill.ratio = 0.0;
-                s.shell.sides = sides;
-                s.ramp.angle_deg = angle;
                 s.release.tilt_deg = base.release.tilt_deg + 0.001 * k;
                 s.run.model = Model::automatic;
                 a.add(run_scene(s).measured.terminal_velocity_m_s);
