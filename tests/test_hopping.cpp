@@ -1,8 +1,11 @@
 // The free rigid body that carries an empty shell on after lift-off (models/hopping_polygon.h):
 // exact flight, the impact law (no bounce, Coulomb friction), the pivot stretch against the rigid
-// impact model it continues, and the hand-over back into a ModelRun (models/hopping_run.h).
+// impact model it continues, the sliding stretch's series (models/slide_motion.h), and the hand-over
+// back into a ModelRun (models/hopping_run.h).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "sim/fill_plan.h"
@@ -10,6 +13,7 @@
 #include "sim/models/hopping_polygon.h"
 #include "sim/models/hopping_run.h"
 #include "sim/models/reduced_run.h"
+#include "sim/models/slide_motion.h"
 #include "sim/shell_properties.h"
 #include "test_helpers.h"
 
@@ -141,4 +145,69 @@ TEST_CASE("the free rigid body hands over mid-run with the state it shows", "[mo
     while (grains->step()) {
     }
     CHECK(grains->measured().behaviour == Behaviour::rolled_to_end);
+}
+
+TEST_CASE("a sliding vertex's series follows its equations of motion and keeps energy without friction",
+          "[models][hopping][slide]") {
+    // The hexagon of the default scene, sliding down the 20-degree ramp on a vertex 30 degrees below
+    // its centre's level, turning at 3 rad/s, with friction against the slip and without.
+    const Scene scene = empty_scene(6, 20.0);
+    const ShellProperties sp = shell_properties(scene.shell);
+    const double theta = 20.0 * kPi / 180.0, g = scene.run.gravity_m_s2;
+    SlideBody b;
+    b.radius_m = sp.outer_circumradius_m;
+    b.inv_mass_per_kg = 1.0 / sp.mass_kg;
+    b.inv_inertia = 1.0 / sp.inertia_kg_m2;
+    b.gravity_along_m_s2 = g * std::sin(theta);
+    b.gravity_normal_m_s2 = g * std::cos(theta);
+    const double phi0 = -kPi / 2.0 - kPi / 6.0, omega0 = 3.0, x0 = 0.1, vx0 = 0.4;
+
+    // The same equations, written out from slide_motion.h and stepped by classical Runge-Kutta at
+    // 10 us: [phi, omega, x, vx].
+    using Y = std::array<double, 4>;
+    auto rate = [&](const Y& y) {
+        const double c = std::cos(y[0]), s = std::sin(y[0]), r = b.radius_m, f = b.friction_ratio;
+        const double n = (r * y[1] * y[1] * s + b.gravity_normal_m_s2) /
+                         (b.inv_mass_per_kg + r * r * c * (c - f * s) * b.inv_inertia);
+        return Y{y[1], n * r * (c - f * s) * b.inv_inertia, y[3], b.gravity_along_m_s2 + f * n * b.inv_mass_per_kg};
+    };
+    auto integrate = [&](double t_end) {
+        Y y{phi0, omega0, x0, vx0};
+        const int steps = static_cast<int>(std::lround(t_end / 1e-5));
+        const double h = t_end / steps;
+        auto plus = [](Y a, const Y& d, double k) {
+            for (size_t i = 0; i < 4; ++i) a[i] += k * d[i];
+            return a;
+        };
+        for (int i = 0; i < steps; ++i) {
+            const Y k1 = rate(y), k2 = rate(plus(y, k1, h / 2)), k3 = rate(plus(y, k2, h / 2)), k4 = rate(plus(y, k3, h));
+            for (size_t j = 0; j < 4; ++j) y[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+        }
+        return y;
+    };
+
+    for (double f : {-0.9, 0.0, 0.9}) {
+        b.friction_ratio = f;
+        const SlideSeries ss(b, phi0, omega0, x0, vx0);
+        const double t = std::min(0.02, 0.9 * ss.accurate_step_s());
+        REQUIRE(t > 0.005);  // the series covers a useful stretch, not a sliver
+        const SlideSeries::Point p = ss.at(t);
+        const Y y = integrate(t);
+        CHECK(p.phi == Approx(y[0]).margin(1e-10));
+        CHECK(p.omega == Approx(y[1]).margin(1e-8));
+        CHECK(p.x_m == Approx(y[2]).margin(1e-10));
+        CHECK(p.vx_m_s == Approx(y[3]).margin(1e-8));
+        CHECK(p.sin_phi == Approx(std::sin(p.phi)).margin(1e-12));
+        CHECK(p.cos_phi == Approx(std::cos(p.phi)).margin(1e-12));
+        if (f == 0.0) {
+            // Without friction the ramp's force is normal to the vertex's path: no work.
+            auto energy = [&](const SlideSeries::Point& q) {
+                const double vy = -q.omega * b.radius_m * q.cos_phi, y_c = -b.radius_m * q.sin_phi;
+                return 0.5 * sp.mass_kg * (q.vx_m_s * q.vx_m_s + vy * vy) + 0.5 * sp.inertia_kg_m2 * q.omega * q.omega +
+                       sp.mass_kg * (-b.gravity_along_m_s2 * q.x_m + b.gravity_normal_m_s2 * y_c);
+            };
+            const double e0 = energy(ss.at(0.0));
+            for (double tau = 0.0; tau <= t; tau += t / 20) CHECK(energy(ss.at(tau)) == Approx(e0).margin(1e-12));
+        }
+    }
 }

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "sim/models/pivot_motion.h"
+#include "sim/models/slide_motion.h"
 
 namespace polyroll::models {
 
@@ -20,15 +21,12 @@ using geom::Vec2;
 namespace {
 
 constexpr double kPi = geom::kPi;
-// Runge-Kutta step on a sliding vertex: the pendulum's rate a = M g R / I_pivot is about 100 /s^2 for
-// the bundled shells, so 1 ms leaves a local error near 1e-10 rad; never more than 1/50 rad of turn.
-// A sticking vertex's motion is the rigid model's pendulum series (pivot_motion.h), exact to rounding;
-// its events are looked for on the same grid.
-constexpr double kContactStepS = 1e-3;
-constexpr double kContactTurnRad = 0.02;
-// The sticking stretch's grid for events: the series needs no small steps, so only the turn and this
-// bound the gap in which an event could come and go unseen.
-constexpr double kStickGridS = 5e-3;
+// A contact stretch follows a Taylor series, exact to rounding (the rigid model's pendulum for a
+// sticking vertex, pivot_motion.h; slide_motion.h for a sliding one), so it needs no small steps; its
+// events are looked for on a grid of series evaluations this far apart in time and in turn, which
+// bounds how briefly an event could come and go unseen.
+constexpr double kContactGridS = 10e-3;
+constexpr double kContactTurnRad = 0.05;
 // Events inside a step are found to this time (false position, first_root).
 constexpr double kEventTolS = 1e-9;
 // A vertex closer to the ramp than this at the start is on it.
@@ -45,10 +43,6 @@ constexpr long kMaxSteps = 2'000'000;
 struct State {
     double x = 0, y = 0, a = 0, vx = 0, vy = 0, w = 0;  // centre, angle, their rates (w counter-clockwise)
 };
-
-State add(const State& s, const State& d, double h) {
-    return {s.x + h * d.x, s.y + h * d.y, s.a + h * d.a, s.vx + h * d.vx, s.vy + h * d.vy, s.w + h * d.w};
-}
 
 enum class Phase { flight, stick, slide };
 
@@ -106,8 +100,7 @@ public:
 
 private:
     struct Contact {
-        double F = 0, N = 0;  // friction (along x) and normal force on the shell, N
-        State rate;           // d/dt of the state
+        double F = 0, N = 0;  // friction (along x) and normal force on the shell, N; 0 in flight
     };
 
     // The turn of the body: the cosine and sine of its angle, worked out once per state.
@@ -142,7 +135,6 @@ private:
     // The forces with the contact vertex at r from the centre.
     Contact contact(const State& s, Phase p, Vec2 r) const;
     Contact contact(const State& s, Phase p) const { return contact(s, p, arm(on_, s.a)); }
-    State rk4(const State& s, Phase p, double h) const;
     void project(State& s, Phase p, Turn t) const;
     void project(State& s, Phase p) const { project(s, p, turn_of(s.a)); }
     State flight_at(const State& s, double tau) const;
@@ -160,9 +152,18 @@ private:
     double psi_of(double a) const { return beta_[index(on_)] + a - theta_ + kPi / 2.0; }
     // The state at tau into a series begun at psi0 from angle a0, and the body's turn there.
     State stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const;
+    // The same for a sliding vertex (slide_motion.h), whose direction from the centre is phi = beta + a.
+    State slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const;
+    // The state on the ramp with the contact vertex in direction (c_phi, s_phi) from the centre: the
+    // body's turn, its y and vy (the vertex on the ramp); x, vx, a and w as given.
+    State on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const;
 
     void stick_stretch();
-    void contact_stretch();
+    void slide_stretch();
+    // A contact stretch along a series, as long as it stays accurate (span, s): events looked for on
+    // a grid of series evaluations and located by false position. state_at(tau, turn) gives the state.
+    template <class StateAt>
+    void follow(Phase p, double span, StateAt state_at);
     // What follows a contact stretch's event (s_ and t_ at it).
     void after_contact_event(Event e);
     void flight_stretch();
@@ -259,31 +260,8 @@ Hopper::Contact Hopper::contact(const State& s, Phase p, Vec2 r) const {
             c.N = (w2 * r.y - gy_) / (inv_m_ + r.x * (r.x - f * r.y) * inv_i_);
             c.F = f * c.N;
         }
-        const double alpha = (r.x * c.N - r.y * c.F) * inv_i_;
-        c.rate = {s.vx, s.vy, s.w, gx_ + c.F * inv_m_, gy_ + c.N * inv_m_, alpha};
-    } else {
-        c.rate = {s.vx, s.vy, s.w, gx_, gy_, 0.0};
     }
     return c;
-}
-
-State Hopper::rk4(const State& s, Phase p, double h) const {
-    // One sine and cosine per step: each stage's turn is the start's turned on by its few hundredths
-    // of a radian.
-    const Turn t0 = turn_of(s.a);
-    const State k1 = contact(s, p, arm(on_, t0)).rate;
-    const State k2 = contact(add(s, k1, h / 2), p, arm(on_, turned(t0, h / 2 * k1.a))).rate;
-    const State k3 = contact(add(s, k2, h / 2), p, arm(on_, turned(t0, h / 2 * k2.a))).rate;
-    const State k4 = contact(add(s, k3, h), p, arm(on_, turned(t0, h * k3.a))).rate;
-    State r = s;
-    r.x += h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
-    r.y += h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y);
-    r.a += h / 6 * (k1.a + 2 * k2.a + 2 * k3.a + k4.a);
-    r.vx += h / 6 * (k1.vx + 2 * k2.vx + 2 * k3.vx + k4.vx);
-    r.vy += h / 6 * (k1.vy + 2 * k2.vy + 2 * k3.vy + k4.vy);
-    r.w += h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w);
-    project(r, p, turned(t0, r.a - s.a));
-    return r;
 }
 
 void Hopper::project(State& s, Phase p, Turn t) const {
@@ -452,38 +430,10 @@ void Hopper::settle_on(long j) {
     }
 }
 
-void Hopper::contact_stretch() {
-    const double h_turn = kContactTurnRad / std::max(std::fabs(s_.w), 1e-9);
-    const double h = std::min({kContactStepS, h_turn, rules_.time_limit_s - t_});
-    const Phase p = phase_;
-    State next = rk4(s_, p, h);
-    ++out_.steps;
-    // The first event within the step: each one that holds at its end is traced back to where it
-    // began, and the earliest wins.
-    Event e = Event::none;
-    double tau = h;
-    const Turn turn_next = turn_of(next.a), turn_now = turn_of(s_.a);
-    const Contact c_next = contact(next, p, arm(on_, turn_next));
-    for (Event k : kContactEvents) {
-        const double at_end = event_value(next, p, k, turn_next, &c_next);
-        if (at_end > 0.0) continue;
-        const double at_start = event_value(s_, p, k, turn_now);
-        // Coming to rest is slowing down through the rest speed, not starting from rest.
-        if (k == Event::rest && at_start <= 0.0) continue;
-        const double when = at_start <= 0.0 ? 0.0
-                                            : first_root([&](double dt) { return event_value(rk4(s_, p, dt), p, k); },
-                                                         0.0, at_start, h, at_end, kEventTolS, out_.steps);
-        if (e == Event::none || when < tau) {
-            e = k;
-            tau = when;
-        }
-    }
-    if (e != Event::none) next = rk4(s_, p, tau);
-    const State start = s_;
-    emit_rows_before(t_ + tau, [&](double dt) { return rk4(start, p, dt); });
-    s_ = next;
-    t_ += tau;
-    after_contact_event(e);
+State Hopper::on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const {
+    const Vec2 u = unit_[index(on_)];  // a = phi - beta
+    t = {c_phi * u.x + s_phi * u.y, s_phi * u.x - c_phi * u.y};
+    return {x, -radius_ * s_phi, a, vx, -w * radius_ * c_phi, w};
 }
 
 State Hopper::stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const {
@@ -494,56 +444,81 @@ State Hopper::stick_state(const PendulumSeries& ps, double psi0, double a0, doub
     // where that puts the vertex on the pivot, moving about it.
     const double c_phi = sin_psi * cos_theta_ + cos_psi * sin_theta_;
     const double s_phi = sin_psi * sin_theta_ - cos_psi * cos_theta_;
-    const Vec2 r{radius_ * c_phi, radius_ * s_phi};
-    const Vec2 u = unit_[index(on_)];  // a = phi - beta
-    t = {c_phi * u.x + s_phi * u.y, s_phi * u.x - c_phi * u.y};
-    return {pivot_x_ - r.x, -r.y, a0 + (psi - psi0), rate * r.y, -rate * r.x, rate};
+    return on_vertex(c_phi, s_phi, pivot_x_ - radius_ * c_phi, rate * radius_ * s_phi, a0 + (psi - psi0), rate, t);
+}
+
+State Hopper::slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const {
+    const SlideSeries::Point q = ss.at(tau);
+    return on_vertex(q.cos_phi, q.sin_phi, q.x_m, q.vx_m_s, a0 + (q.phi - phi0), q.omega, t);
 }
 
 void Hopper::stick_stretch() {
-    // One stretch of the series, as long as it stays accurate to rounding; events looked for on the
-    // Runge-Kutta stretch's grid (the series gives each grid point without integrating) and traced
-    // back to where they begin, as there.
     const double a0 = s_.a, psi0 = psi_of(a0);
     const PendulumSeries ps(psi0, s_.w, pendulum_a_);
-    const double span = std::min(ps.accurate_step_s(), rules_.time_limit_s - t_);
+    follow(Phase::stick, ps.accurate_step_s(),
+           [&](double tau, Turn& t) { return stick_state(ps, psi0, a0, tau, t); });
+}
+
+void Hopper::slide_stretch() {
+    const double a0 = s_.a, phi0 = beta_[index(on_)] + a0;
+    SlideBody b;
+    b.radius_m = radius_;
+    b.inv_mass_per_kg = inv_m_;
+    b.inv_inertia = inv_i_;
+    b.friction_ratio = -mu_ * slip_sign_;
+    b.gravity_along_m_s2 = gx_;
+    b.gravity_normal_m_s2 = g_cos_;
+    const SlideSeries ss(b, phi0, s_.w, s_.x, s_.vx);
+    follow(Phase::slide, ss.accurate_step_s(),
+           [&](double tau, Turn& t) { return slide_state(ss, phi0, a0, tau, t); });
+}
+
+template <class StateAt>
+void Hopper::follow(Phase p, double span_s, StateAt state_at) {
+    // Each event that holds at a grid point is traced back to where it began, and the earliest wins.
+    const double span = std::min(span_s, rules_.time_limit_s - t_);
     Turn turn0;
-    State s0 = stick_state(ps, psi0, a0, 0.0, turn0);
+    State s0 = state_at(0.0, turn0);
     std::array<double, std::size(kContactEvents)> v0{};
-    const Contact c0 = contact(s0, Phase::stick, arm(on_, turn0));
-    for (size_t k = 0; k < v0.size(); ++k) v0[k] = event_value(s0, Phase::stick, kContactEvents[k], turn0, &c0);
+    const Contact c0 = contact(s0, p, arm(on_, turn0));
+    for (size_t k = 0; k < v0.size(); ++k) v0[k] = event_value(s0, p, kContactEvents[k], turn0, &c0);
     double lo = 0.0, tau = span;
     Event e = Event::none;
+    auto value_at = [&](double x, Event ev) {
+        Turn tx;
+        const State sx = state_at(x, tx);
+        return event_value(sx, p, ev, tx);
+    };
     while (lo < span && e == Event::none) {
-        const double h = std::min({kStickGridS, kContactTurnRad / std::max(std::fabs(s0.w), 1e-9), span - lo});
+        const double h = std::min({kContactGridS, kContactTurnRad / std::max(std::fabs(s0.w), 1e-9), span - lo});
         const double hi = lo + h;
         ++out_.steps;
         Turn turn1;
-        const State s1 = stick_state(ps, psi0, a0, hi, turn1);
+        const State s1 = state_at(hi, turn1);
         std::array<double, std::size(kContactEvents)> v1{};
-        const Contact c1 = contact(s1, Phase::stick, arm(on_, turn1));
+        const Contact c1 = contact(s1, p, arm(on_, turn1));
         for (size_t k = 0; k < v1.size(); ++k) {
             const Event ev = kContactEvents[k];
-            v1[k] = event_value(s1, Phase::stick, ev, turn1, &c1);
+            v1[k] = event_value(s1, p, ev, turn1, &c1);
             // A shell rocking on the vertex passes through rest where it turns back; a grid point
             // either side of that can both be above the rest speed, so the turn itself is looked at.
             double end = hi, at_end = v1[k];
             if (ev == Event::rest && at_end > 0.0 && s0.w * s1.w < 0.0) {
-                end = ps.solve_turn(lo, hi);
-                Turn tt;
-                at_end = event_value(stick_state(ps, psi0, a0, end, tt), Phase::stick, ev, tt);
+                const double sign = s0.w > 0.0 ? 1.0 : -1.0;
+                end = first_root(
+                    [&](double x) {
+                        Turn tx;
+                        return sign * state_at(x, tx).w;
+                    },
+                    lo, sign * s0.w, hi, sign * s1.w, kEventTolS, out_.steps);
+                at_end = value_at(end, ev);
             }
             if (at_end > 0.0) continue;
-            if (ev == Event::rest && v0[k] <= 0.0) continue;  // as in contact_stretch
-            const double when =
-                v0[k] <= 0.0 ? lo
-                             : first_root(
-                                   [&](double x) {
-                                       Turn tx;
-                                       const State sx = stick_state(ps, psi0, a0, x, tx);
-                                       return event_value(sx, Phase::stick, ev, tx);
-                                   },
-                                   lo, v0[k], end, at_end, kEventTolS, out_.steps);
+            // Coming to rest is slowing down through the rest speed, not starting from rest.
+            if (ev == Event::rest && v0[k] <= 0.0) continue;
+            const double when = v0[k] <= 0.0 ? lo
+                                             : first_root([&](double x) { return value_at(x, ev); }, lo, v0[k], end,
+                                                          at_end, kEventTolS, out_.steps);
             if (e == Event::none || when < tau) {
                 e = ev;
                 tau = when;
@@ -557,8 +532,8 @@ void Hopper::stick_stretch() {
     }
     if (e == Event::none) tau = span;
     Turn unused;
-    emit_rows_before(t_ + tau, [&](double dt) { return stick_state(ps, psi0, a0, dt, unused); });
-    s_ = stick_state(ps, psi0, a0, tau, unused);
+    emit_rows_before(t_ + tau, [&](double dt) { return state_at(dt, unused); });
+    s_ = state_at(tau, unused);
     t_ += tau;
     after_contact_event(e);
 }
@@ -702,7 +677,7 @@ HopRun Hopper::run() {
         const double t_before = t_;
         if (phase_ == Phase::flight) flight_stretch();
         else if (phase_ == Phase::stick) stick_stretch();
-        else contact_stretch();
+        else slide_stretch();
         chatter_ = t_ - t_before < kChatterS ? chatter_ + 1 : 0;
         if (running_ && chatter_ > kMaxChatter) {
             stop_unsupported("the contact switches state again and again within a microsecond");

@@ -5,9 +5,9 @@
 // Three kinds of stretch, with events between them:
 // - flight: no contact, exact (a parabola and a constant spin); ends where the lowest vertex meets
 //   the ramp;
-// - contact on one vertex, sticking (a pendulum about it) or sliding (Coulomb friction, the ramp's
-//   coefficient as Box2D mixes it), stepped with fourth-order Runge-Kutta and the vertex projected
-//   back onto the ramp after each step; ends where the normal force would turn negative (flight),
+// - contact on one vertex, sticking (a pendulum about it, pivot_motion.h) or sliding (Coulomb
+//   friction, the ramp's coefficient as Box2D mixes it, slide_motion.h), each followed along its
+//   Taylor series, exact to rounding; ends where the normal force would turn negative (flight),
 //   where sticking needs more friction than the ramp gives (sliding), where the slip stops
 //   (sticking), or where a second vertex meets the ramp;
 // - impact of one vertex: no bounce (restitution 0, as both ramps), the tangential impulse sticking
@@ -66,7 +66,7 @@ struct HopRun {
     std::string unsupported_why;
     long flights = 0;                 // stretches without contact
     long slides = 0;                  // contact stretches sliding
-    long steps = 0;                   // Runge-Kutta steps, flight search points and events
+    long steps = 0;                   // contact grid points, flight search points and event evaluations
 };
 
 // Runs from `start` to the ramp's end, the time limit, or the first contact it does not model.
