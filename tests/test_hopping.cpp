@@ -207,7 +207,7 @@ TEST_CASE("a sliding vertex's series follows its equations of motion and keeps e
                        sp.mass_kg * (-b.gravity_along_m_s2 * q.x_m + b.gravity_normal_m_s2 * y_c);
             };
             const double e0 = energy(ss.at(0.0));
-            for (double tau = 0.0; tau <= t; tau += t / 20) CHECK(energy(ss.at(tau)) == Approx(e0).margin(1e-12));
+            for (int i = 0; i <= 20; ++i) CHECK(energy(ss.at(t * i / 20.0)) == Approx(e0).margin(1e-12));
         }
     }
 }
