@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace polyroll::models {
 
@@ -120,14 +121,13 @@ double PendulumSeries::solve_turn(double lo, double hi) const {
         lo, hi);
 }
 
-double PendulumSeries::accurate_step_s() const {
-    // Odd or even coefficients vanish in symmetric cases, so both of the last two are looked at.
+double accurate_series_step_s(double second_last, double last, int order) {
     double rho = std::numeric_limits<double>::infinity();
-    for (int k : {N - 1, N}) {
-        const double c = std::fabs(x_[static_cast<size_t>(k)]);
+    for (const auto& [c, k] : {std::pair{std::fabs(second_last), order - 1}, std::pair{std::fabs(last), order}})
         if (c > 0.0) rho = std::min(rho, std::pow(c, -1.0 / k));
-    }
     return kStepShare * rho;
 }
+
+double PendulumSeries::accurate_step_s() const { return accurate_series_step_s(x_[N - 1], x_[N], N); }
 
 }  // namespace polyroll::models

@@ -9,6 +9,12 @@
 
 namespace polyroll::models {
 
+// The step over which a Taylor series of order kOrder with these last two coefficients (of the angle,
+// in radians) stays accurate to about 1e-16: a fifth of the radius of convergence they estimate, so
+// the first neglected term is near 0.2^21 of the coefficients' scale. Both are looked at because odd
+// or even coefficients vanish in symmetric cases. Infinite if both are zero (an equilibrium).
+double accurate_series_step_s(double second_last, double last, int order);
+
 class PendulumSeries {
 public:
     static constexpr int kOrder = 20;

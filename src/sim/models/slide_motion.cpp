@@ -1,17 +1,14 @@
 // The sliding vertex's Taylor series: see slide_motion.h.
 #include "sim/models/slide_motion.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "sim/models/pivot_motion.h"
 
 namespace polyroll::models {
 
 namespace {
 constexpr int K = SlideSeries::kOrder;
-// As pivot_motion.cpp: a step of this share of the estimated radius of convergence leaves the first
-// neglected term near 0.2^21 of the coefficients' scale.
-constexpr double kStepShare = 0.2;
 
 // Coefficient k of the product of two series known up to k.
 template <class A, class B>
@@ -83,13 +80,8 @@ SlideSeries::Point SlideSeries::at(double tau) const {
 }
 
 double SlideSeries::accurate_step_s() const {
-    // As PendulumSeries: the last two coefficients of the angle estimate the radius of convergence.
-    double rho = std::numeric_limits<double>::infinity();
-    for (int k : {K - 1, K}) {
-        const double c = std::fabs(phi_[static_cast<size_t>(k)]);
-        if (c > 0.0) rho = std::min(rho, std::pow(c, -1.0 / k));
-    }
-    return kStepShare * rho;
+    // From the angle's last two coefficients, as the pendulum's (pivot_motion.h).
+    return accurate_series_step_s(phi_[K - 1], phi_[K], K);
 }
 
 }  // namespace polyroll::models
