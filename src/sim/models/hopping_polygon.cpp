@@ -108,20 +108,6 @@ private:
         double c = 1.0, s = 0.0;
     };
     static Turn turn_of(double a) { return {std::cos(a), std::sin(a)}; }
-    // t turned on by d: a short series for the small turns within a step (under 0.1 rad, the first
-    // term left out is under 3e-17), the library beyond.
-    static Turn turned(Turn t, double d) {
-        double c = 0.0, s = 0.0;
-        if (std::fabs(d) < 0.1) {
-            const double d2 = d * d;
-            c = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
-            s = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))));
-        } else {
-            c = std::cos(d);
-            s = std::sin(d);
-        }
-        return {t.c * c - t.s * s, t.s * c + t.c * s};
-    }
     size_t index(long j) const { return static_cast<size_t>(((j % n_) + n_) % n_); }
     // Vertex j (unwrapped) relative to the centre, with the body turned by t (or by angle a).
     Vec2 arm(long j, Turn t) const {
@@ -135,8 +121,7 @@ private:
     // The forces with the contact vertex at r from the centre.
     Contact contact(const State& s, Phase p, Vec2 r) const;
     Contact contact(const State& s, Phase p) const { return contact(s, p, arm(on_, s.a)); }
-    void project(State& s, Phase p, Turn t) const;
-    void project(State& s, Phase p) const { project(s, p, turn_of(s.a)); }
+    void project(State& s, Phase p) const;
     State flight_at(const State& s, double tau) const;
 
     // What ends a contact step. Each has a value that is positive before it and turns non-positive
@@ -264,10 +249,11 @@ Hopper::Contact Hopper::contact(const State& s, Phase p, Vec2 r) const {
     return c;
 }
 
-void Hopper::project(State& s, Phase p, Turn t) const {
-    // The integrator drifts off the constraint by its truncation error; put the vertex back on it.
+void Hopper::project(State& s, Phase p) const {
+    // Puts the contact vertex exactly on the ramp (and at rest on it, sticking) as a stretch on it
+    // begins: an event located to a nanosecond leaves it a rounding error off.
     if (p == Phase::flight) return;
-    const Vec2 r = arm(on_, t);
+    const Vec2 r = arm(on_, s.a);
     s.y = -r.y;
     s.vy = -s.w * r.x;
     if (p == Phase::stick) {
