@@ -130,7 +130,6 @@ private:
     static constexpr Event kContactEvents[] = {Event::touch, Event::lift, Event::slip, Event::grip, Event::end, Event::rest};
     // c: the contact forces at s if already worked out (they are the same for every event).
     double event_value(const State& s, Phase p, Event e, Turn t, const Contact* c = nullptr) const;
-    double event_value(const State& s, Phase p, Event e) const { return event_value(s, p, e, turn_of(s.a)); }
 
     // The sticking vertex's pendulum (pivot_motion.h): psi is the turn past the centre straight above
     // the pivot, psi = beta + a - theta + pi/2 for the contact vertex's beta.
