@@ -104,7 +104,7 @@ void bench_auto(const Scene& base, int repeats) {
                "hops: faces on which the rigid model, run on past lift-off, needs a negative normal force / its\n"
                "faces; mu_need: the friction share of the normal force the rigid model's no-slip rolling needs,\n"
                "between impacts / at an impact (the ramp's friction coefficient is {:g}); Vt_rigid: the rigid model\n"
-               "alone; Vt_ref: grains at the reference preset; Vt_fine: grains at 80,000 engine steps a second;\n"
+               "alone; Vt_ref: grains at the reference preset; Vt_fine: grains at 80,000 engine steps a second (1 mm units);\n"
                "a-g = |Vt_auto - Vt_grain| / Vt_grain, a-ref and g-ref against Vt_ref, a-fine and g-fine against\n"
                "Vt_fine.\n",
                auto_total, grains_total, grains_total / auto_total, base.ramp.friction);

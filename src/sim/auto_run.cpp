@@ -26,7 +26,7 @@ ModelChoice choose_model(const Scene& scene) {
         c.model = Model::grains;
         c.reason =
             "filled shell: the reduced models do not represent a fill well enough (trade study: terminal velocity "
-            "error 27% for rigid and 34% for segments, wrong behaviour in 14% and 0% of scenes, against 5.0% and "
+            "error 27% for rigid and 34% for segments, wrong behaviour in 14% and 0% of scenes, against 5.6% and "
             "0% for grains at the standard preset)";
     }
     return c;

@@ -18,8 +18,10 @@ struct EngineUnits {
     double speed_cap_m_s(const FidelityParams& f) const;
 };
 
-// 1 cm, or 1 mm when the smallest grain radius would be under 0.1 cm (such grains make about 85
-// broad-phase pairs each at 1 cm and crawl) and the finer unit's speed cap still allows the run.
+// 1 cm, or 1 mm when the finer unit's speed cap still allows the run and either the smallest grain
+// radius would be under 0.1 cm (such grains make about 85 broad-phase pairs each at 1 cm and crawl)
+// or the shell is empty (Box2D's polygon skin, 0.2 mm between shell and ramp at 1 cm, biases a
+// hopping shell; 0.02 mm at 1 mm). The standard step (1 kHz) caps 1 mm at 2 m/s, so it keeps 1 cm.
 EngineUnits choose_engine_units(const Scene& scene);
 
 // An upper bound on the speed the shell can reach: sliding without loss down the whole ramp.
