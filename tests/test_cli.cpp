@@ -73,6 +73,18 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
     }
 }
 
+TEST_CASE("bench --auto refuses a --tilt one of its 16 shells cannot take before it runs any", "[cli][bad-input]") {
+    // 25 deg fits the hexagon (its bench rows used to print) but not the octagon on the 5 degree
+    // ramp: the table used to stop half-way there.
+    const Result r = run_polyroll("bench --auto --tilt 25 --no-render");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(line_count(r.out) == 1);
+    for (const char* w : {"bench --auto", "release.tilt_deg = 25", "n = 8 at 5 degrees", "allowed: 0 to"})
+        CHECK(r.out.find(w) != std::string::npos);
+    CHECK(r.out.find("auto against grains") == std::string::npos);
+}
+
 TEST_CASE("a mistyped or missing command is named with the closest one, and polyroll help CMD is CMD --help",
           "[cli][bad-input]") {
     struct Case {

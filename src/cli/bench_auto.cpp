@@ -10,10 +10,12 @@
 
 #include <fmt/format.h>
 
+#include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/models/reduced_models.h"
 #include "sim/scene_names.h"
+#include "sim/scene_validate.h"
 
 namespace polyroll::cli {
 
@@ -41,6 +43,14 @@ std::string speed(const std::optional<double>& v) { return v ? fmt::format("{:.3
 
 }  // namespace
 
+Scene auto_bench_shell(const Scene& base, int sides, double angle_deg) {
+    Scene s = base;
+    s.fill.ratio = 0.0;
+    s.shell.sides = sides;
+    s.ramp.angle_deg = angle_deg;
+    return s;
+}
+
 Scene at_finest_box2d(Scene s) {
     s.run.model = Model::grains;
     s.fidelity.preset.clear();
@@ -52,6 +62,15 @@ Scene at_finest_box2d(Scene s) {
 }
 
 void bench_auto(const Scene& base, int repeats) {
+    for (int sides : kAutoBenchSides) {
+        for (double angle : kAutoBenchAnglesDeg) {
+            try {
+                validate_scene(auto_bench_shell(base, sides, angle));
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("bench --auto: {} (each of its 16 empty shells must fit --tilt)", e.what()));
+            }
+        }
+    }
     fmt::print("\nauto against grains on empty shells ({} fidelity for grains; reference: one grain run at the\n"
                "reference preset), best of {} on one core\n",
                base.fidelity.preset.empty() ? "custom" : base.fidelity.preset, repeats);
@@ -59,12 +78,9 @@ void bench_auto(const Scene& base, int repeats) {
                "n", "deg", "auto_s", "grains_s", "speedup", "free", "box2d", "hops", "mu_need", "Vt_auto", "Vt_rigid", "Vt_grain",
                "Vt_ref", "Vt_fine", "a-g", "a-ref", "g-ref", "a-fine", "g-fine", "behaviour (auto / grains / reference)");
     double auto_total = 0.0, grains_total = 0.0;
-    for (int sides : {6, 8, 10, 18}) {
-        for (double angle : {5.0, 10.0, 20.0, 30.0}) {
-            Scene s = base;
-            s.fill.ratio = 0.0;
-            s.shell.sides = sides;
-            s.ramp.angle_deg = angle;
+    for (int sides : kAutoBenchSides) {
+        for (double angle : kAutoBenchAnglesDeg) {
+            Scene s = auto_bench_shell(base, sides, angle);
             s.run.model = Model::automatic;
             const Timed a = time_runs(s, repeats);
             s.run.model = Model::grains;

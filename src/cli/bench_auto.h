@@ -5,11 +5,23 @@
 // tests/test_auto_model.cpp asserts.
 #pragma once
 
+#include <array>
+
 #include "sim/scene.h"
 
 namespace polyroll::cli {
 
+// The empty shells of issue 13's first done-when: these side counts on ramps at these angles.
+inline constexpr std::array<int, 4> kAutoBenchSides{6, 8, 10, 18};
+inline constexpr std::array<double, 4> kAutoBenchAnglesDeg{5.0, 10.0, 20.0, 30.0};
+
+// `base` emptied (fill ratio 0), with `sides` sides, on a ramp of `angle_deg`: one of the 16 shells.
+Scene auto_bench_shell(const Scene& base, int sides, double angle_deg);
+
 // `base`: the scene the empty shells are made from (its fill ratio is set to 0, sides and angle vary).
+// Every shell is checked before anything runs: a --tilt that fits the base shell may not fit the
+// decagon or the 18-gon, and a table cut off half-way by that is worse than a refusal (InputError
+// naming the shell, the tilt and what the shell allows).
 void bench_auto(const Scene& base, int repeats);
 
 // The same 16 shells, each run `members` times with its release tilt raised by 0.001 degree a member:

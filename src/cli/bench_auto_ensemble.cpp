@@ -56,13 +56,10 @@ void bench_auto_ensemble(const Scene& base, int members) {
                "g-fine", "nearer");
     int auto_within = 0, grains_within = 0, auto_nearer = 0, compared = 0;
     constexpr double kWithin = 0.02;  // issue 13's 2%
-    for (int sides : {6, 8, 10, 18}) {
-        for (double angle : {5.0, 10.0, 20.0, 30.0}) {
+    for (int sides : kAutoBenchSides) {
+        for (double angle : kAutoBenchAnglesDeg) {
             Spread a, g, f;
-            Scene s = base;
-            s.fill.ratio = 0.0;
-            s.shell.sides = sides;
-            s.ramp.angle_deg = angle;
+            Scene s = auto_bench_shell(base, sides, angle);
             s.release.tilt_deg = base.release.tilt_deg + 0.001 * (members - 1);
             try {
                 validate_scene(s);  // the largest tilt; a --tilt fit for the base shell may not fit this one
