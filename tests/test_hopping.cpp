@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "sim/engine_units.h"
+#include "sim/fidelity_preset.h"
 #include "sim/fill_plan.h"
 #include "sim/model_registry.h"
 #include "sim/models/hopping_polygon.h"
@@ -217,20 +218,15 @@ TEST_CASE("an empty shell's Box2D works in millimetres where the step allows, an
           "[models][hopping][units]") {
     // Box2D holds each polygon a skin (0.01 units) outside its outline: 0.2 mm between shell and ramp
     // at 1 cm, which rounds the corners a hopping shell lands on (docs/physics.md, "Against Box2D").
-    Scene s = empty_scene(6, 30.0);
-    CHECK(choose_engine_units(s).units_per_m == 100.0);  // standard: 1 mm would cap the speed at 2 m/s
-    s.fidelity.step_hz = 10000.0;
-    s.fidelity.substeps = 8;
-    s.fidelity.velocity_iterations = 40;
-    s.fidelity.position_iterations = 10;
-    REQUIRE(choose_engine_units(s).units_per_m == 1000.0);
+    CHECK(choose_engine_units(empty_scene(6, 30.0)).units_per_m == 100.0);  // standard: 1 mm would cap at 2 m/s
+    const Scene box2d = at_finest_box2d(empty_scene(6, 30.0));
+    REQUIRE(choose_engine_units(box2d).units_per_m == 1000.0);
 
     // A landing of the hexagon 2.13 s after release, from the free body's state 1 ms before it: the
     // energy Box2D's landing takes matches the free body's impulse law to 0.3% (at 1 cm Box2D took
     // 0.6% less here; at 1 mm 0.1%).
+    Scene s = box2d;
     s.run.model = Model::automatic;
-    Scene box2d = s;
-    box2d.run.model = Model::grains;
     const ShellProperties shell = shell_properties(s.shell);
     const double th = s.ramp.angle_deg * kPi / 180.0, g = s.run.gravity_m_s2;
     auto energy_J = [&](const ShellState& st) {

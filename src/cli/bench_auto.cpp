@@ -51,16 +51,6 @@ Scene auto_bench_shell(const Scene& base, int sides, double angle_deg) {
     return s;
 }
 
-Scene at_finest_box2d(Scene s) {
-    s.run.model = Model::grains;
-    s.fidelity.preset.clear();
-    s.fidelity.step_hz = 10000.0;
-    s.fidelity.substeps = 8;
-    s.fidelity.velocity_iterations = 40;
-    s.fidelity.position_iterations = 10;
-    return s;
-}
-
 void bench_auto(const Scene& base, int repeats) {
     for (int sides : kAutoBenchSides) {
         for (double angle : kAutoBenchAnglesDeg) {

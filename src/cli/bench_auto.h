@@ -30,11 +30,4 @@ void bench_auto(const Scene& base, int repeats);
 // Box2D are compared by their means and ranges. No timings: one run each.
 void bench_auto_ensemble(const Scene& base, int members);
 
-// `s` run by Box2D far finer than any preset: 80,000 engine steps a second, 40 velocity and 10
-// position iterations (an empty shell in millimetre units there: engine_units.h). Where a shell hops the grain model's answer still moves with the step at the
-// reference preset, so this is the nearest to its converged answer the bench has; finer is not
-// better: from 320,000 steps a second on, Box2D's single-precision positions and angles advance by
-// only a few units in the last place per step (docs/physics.md, "Against Box2D").
-Scene at_finest_box2d(Scene s);
-
 }  // namespace polyroll::cli

@@ -10,6 +10,7 @@
 
 #include "cli/bench_auto.h"
 #include "sim/errors.h"
+#include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/scene_validate.h"
 

@@ -15,4 +15,14 @@ Scene at_fidelity_preset(Scene scene, const std::string& preset) {
     return scene;
 }
 
+Scene at_finest_box2d(Scene scene) {
+    scene.run.model = Model::grains;
+    scene.fidelity.preset.clear();
+    scene.fidelity.step_hz = 10000.0;
+    scene.fidelity.substeps = 8;
+    scene.fidelity.velocity_iterations = 40;
+    scene.fidelity.position_iterations = 10;
+    return scene;
+}
+
 }  // namespace polyroll
