@@ -190,7 +190,7 @@ TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") 
     CHECK(header == "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J");
     std::ifstream imp(out / "impacts.csv");
     std::getline(imp, header);
-    CHECK(header == "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio");
+    CHECK(header == "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms");
     // Only the three files: no temporaries left behind.
     size_t files = 0;
     for (const auto& e : fs::directory_iterator(out)) files += e.is_regular_file();

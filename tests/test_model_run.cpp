@@ -32,9 +32,11 @@ json summary_without_wall_time(const RunResult& r) {
 
 TEST_CASE("every registered model steps to the end run_scene gives, with a snapshot at each step", "[runs][models]") {
     const Scene base = test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.4}}}});
-    REQUIRE(all_models().size() == 3);
+    REQUIRE(all_models().size() == 4);
     CHECK(all_models().front() == reference_model());
-    for (Model m : all_models()) {
+    // The 3D reference (a minute of Yade a run) has its own tests: tests/test_dem3d.cpp.
+    REQUIRE(everyday_models().size() == 3);
+    for (Model m : everyday_models()) {
         INFO("model " << to_string(m));
         const Scene s = with_model(base, m);
         const ModelTraits& traits = model_traits(m);

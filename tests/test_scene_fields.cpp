@@ -62,7 +62,7 @@ TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scen
 }
 
 TEST_CASE("the enumerations' names, one list each", "[scene][fields]") {
-    CHECK(model_names() == std::vector<std::string>{"grains", "segments", "rigid", "auto"});
+    CHECK(model_names() == std::vector<std::string>{"grains", "segments", "rigid", "dem3d", "auto"});
     CHECK(release_pose_names() == std::vector<std::string>{"vertex", "face"});
     for (const std::string& n : model_names()) CHECK(to_string(*model_named(n)) == n);
     for (const std::string& n : release_pose_names()) CHECK(to_string(*release_pose_named(n)) == n);

@@ -62,6 +62,6 @@ Scene lane_scene(const nlohmann::ordered_json& base, const LaneControls& lane, c
 
 // Parsing and naming the enumerations the panel offers.
 ReleasePose release_pose_from(const std::string& name);  // "vertex", "face"
-Model model_from(const std::string& name);              // "grains", "segments", "rigid"
+Model model_from(const std::string& name);              // one of window_model_names()
 
 }  // namespace polyroll::app

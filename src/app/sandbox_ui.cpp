@@ -21,6 +21,7 @@
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/model_registry.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sim/scene_names.h"
@@ -269,7 +270,7 @@ void physics_controls(SandboxState& s, UiRequests& req) {
     }
     tip("Set down flat on a face, then let go.");
     const SceneField& model = scene_field("run.model");
-    const std::vector<std::string>& models = model_names();
+    const std::vector<std::string>& models = window_model_names();
     int m = static_cast<int>(std::find(models.begin(), models.end(), to_string(c.model)) - models.begin());
     if (names_combo(std::string(model.label).c_str(), models, m)) {
         set_model(c, model_from(models[static_cast<size_t>(m)]));

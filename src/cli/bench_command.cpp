@@ -7,6 +7,7 @@
 
 #include "cli/bench_auto.h"
 #include "cli/bench_calibration.h"
+#include "cli/bench_dem3d.h"
 #include "cli/bench_models.h"
 #include "cli/bench_render.h"
 #include "cli/commands.h"
@@ -27,6 +28,7 @@ struct BenchOptions {
     std::vector<std::string> presets;
     bool render_only = false, no_render = false, no_calibration = false;
     bool auto_only = false;
+    bool dem3d_only = false, no_dem3d = false;
     int ensemble = 0;  // with auto_only: members per shell of the ensemble table; 0: none
 };
 
@@ -39,6 +41,10 @@ int bench(const BenchOptions& o) {
     if (o.auto_only) {
         bench_auto(base, o.repeats);
         if (o.ensemble > 0) bench_auto_ensemble(base, o.ensemble);
+        return kExitOk;
+    }
+    if (o.dem3d_only) {
+        bench_dem3d(base, std::nullopt);
         return kExitOk;
     }
     if (o.render_only) {
@@ -83,6 +89,7 @@ int bench(const BenchOptions& o) {
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
     bench_models(base, o.repeats, grain_run_s);
+    if (!o.no_dem3d) bench_dem3d(base, grain_run_s);
     if (!o.no_calibration) bench_calibration("standard");
     if (!o.no_render) bench_rendering(base, o.repeats);
     return kExitOk;
@@ -107,6 +114,10 @@ Action add_bench_command(CLI::App& app) {
                     "models' mean terminal velocities and ranges (hopping shells are sensitive to tiny changes)")
         ->check(CLI::Range(2, 50))
         ->needs(auto_flag);
+    CLI::Option* dem3d_flag = sub->add_flag(
+        "--dem3d", opts->dem3d_only, "measure only the 3D reference (--model dem3d: one Yade run, about a minute)");
+    sub->add_flag("--no-dem3d", opts->no_dem3d, "skip the 3D reference's row (one Yade run, about a minute)")
+        ->excludes(dem3d_flag);
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     sub->add_flag("--no-calibration", opts->no_calibration,
                   "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");

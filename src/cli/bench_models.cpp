@@ -67,7 +67,7 @@ void bench_models(const Scene& base, int repeats, std::optional<double> grain_ru
         std::fflush(stdout);
     };
     row(to_string(grains.run.model).c_str(), g);
-    for (Model m : all_models()) {
+    for (Model m : everyday_models()) {
         if (m == grains.run.model) continue;
         Scene s = base;
         s.run.model = m;

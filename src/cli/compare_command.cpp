@@ -109,7 +109,7 @@ int compare(const CompareOptions& o) {
     if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
     std::vector<RunResult> runs;
     try {
-        for (Model model : all_models()) {  // the reference (grains) first: the others are timed against it
+        for (Model model : everyday_models()) {  // the reference (grains) first: the others are timed against it
             Scene s = base;
             s.run.model = model;
             runs.push_back(run_scene(s));

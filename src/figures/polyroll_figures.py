@@ -155,6 +155,46 @@ def tradeoff_figure(args):
     print(args.out)
 
 
+def cross_section_figure(args):
+    """The 2D and 3D behaviour maps side by side: one row per scene (n, r), one cell per angle, split
+    into a half per seed, coloured by behaviour and labelled with the distance rolled."""
+    rows = read_rows(args.maps)
+    scenes = sorted({(int(r["sides"]), float(r["fill_ratio"])) for r in rows})
+    models = [("grains", "2D grain model (standard)"), ("dem3d", "3D reference (Yade)")]
+    seeds = sorted({int(r["seed"]) for r in rows})
+    angles = sorted({float(r["angle_deg"]) for r in rows})
+    fig, axes = plt.subplots(1, 2, figsize=(15, 1.0 + 0.75 * len(scenes)), layout="constrained", sharey=True)
+    for ax, (model, title) in zip(axes, models):
+        for y, (n, fill) in enumerate(scenes):
+            for r in rows:
+                if r["model"] != model or int(r["sides"]) != n or float(r["fill_ratio"]) != fill:
+                    continue
+                a, k = float(r["angle_deg"]), seeds.index(int(r["seed"]))
+                h = 0.9 / len(seeds)
+                y0 = y - 0.45 + k * h
+                ax.add_patch(plt.Rectangle((a - 0.45, y0), 0.9, h, color=BEHAVIOUR_COLOURS.get(r["behaviour"], "#bbbbbb")))
+                d = num(r["distance_m"])
+                if math.isfinite(d) and r["behaviour"] != "rolled_to_end":
+                    ax.text(a, y0 + h / 2, f"{d:.2f}", ha="center", va="center", fontsize=6, color="white")
+        ax.set_xlim(min(angles) - 0.8, max(angles) + 0.8)
+        ax.set_ylim(-0.6, len(scenes) - 0.4)
+        ax.set_yticks(range(len(scenes)))
+        ax.set_yticklabels([f"n = {n}, r = {f:g}" for n, f in scenes])
+        ax.set_xticks(angles)
+        ax.set_xticklabels([f"{a:g}" for a in angles], fontsize=7)
+        ax.set_xlabel("ramp angle (degrees)")
+        ax.set_title(title, fontsize=10)
+    present = [b for b in BEHAVIOURS if any(r["behaviour"] == b for r in rows)]
+    handles = [plt.Rectangle((0, 0), 1, 1, color=BEHAVIOUR_COLOURS[b]) for b in present]
+    fig.legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="outside lower center", ncol=len(present),
+               fontsize=8)
+    fig.suptitle("Behaviour on the 1.21 m wooden ramp, BBs: each cell one angle, its lower half seed 1 and upper "
+                 "half seed 2; numbers: distance rolled (m)", fontsize=10)
+    fig.savefig(args.out, dpi=110)
+    plt.close(fig)
+    print(args.out)
+
+
 # ---------------------------------------------------------------------------------------------------
 # polyroll validate: D against theta for each angle-range observation, and the behaviour map of every
 # observation. scorecard.json says which runs are an observation's (and where each sits); results.csv
@@ -964,6 +1004,9 @@ def main():
     t = sub.add_parser("tradeoff")
     t.add_argument("points")
     t.add_argument("out")
+    c = sub.add_parser("cross-section")
+    c.add_argument("maps", help="cross-section.csv of polyroll tradeoff --dem3d")
+    c.add_argument("out")
     v = sub.add_parser("validate")
     v.add_argument("scorecard", help="scorecard.json of polyroll validate")
     v.add_argument("results", help="results.csv of the same folder")
@@ -975,6 +1018,8 @@ def main():
         run_figures(args)
     elif args.what == "validate":
         validate_figures(args)
+    elif args.what == "cross-section":
+        cross_section_figure(args)
     else:
         tradeoff_figure(args)
 

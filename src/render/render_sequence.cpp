@@ -65,11 +65,13 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
     // The data run, as `polyroll run` runs it: the same files.
     const auto data_start = Clock::now();
     long data_steps = 0;  // tracker steps (a reduced model's RunResult counts its integrator's)
+    std::unique_ptr<ModelRun> replay;  // the drawn run, where the model can give it without running again
     {
         std::unique_ptr<ModelRun> data_run = start_run(scene);
         data_run->run_to_end();
         data_steps = data_run->steps();
         result.run = data_run->result();
+        replay = data_run->replay();
     }
     result.run.wall_time_s = std::chrono::duration<double>(Clock::now() - data_start).count();
     const RunResult& data = result.run;
@@ -110,7 +112,7 @@ SequenceResult render_sequence(const Scene& scene, const SequenceSettings& st, c
         if (progress) progress({done, expected, std::chrono::duration<double>(Clock::now() - start).count()});
     };
 
-    const std::unique_ptr<ModelRun> run = start_run(scene);
+    const std::unique_ptr<ModelRun> run = replay ? std::move(replay) : start_run(scene);
     for (long k = 0; k < result.run_frames; ++k) {
         const long target = sched.step_for_frame(k);
         while (run->steps() < target && run->step()) {

@@ -34,6 +34,9 @@ Rgba grain_colour(const Snapshot& s, const GrainState& g, GrainColouring how, do
 
 namespace {
 
+// The colour darkened towards black: `light` 1 keeps it, 0 is black.
+Rgba shade(Rgba c, float light) { return {c.r * light, c.g * light, c.b * light, c.a}; }
+
 bool inside(Px p, const PxRect& r, float pad) {
     return p.x >= r.x - pad && p.x <= r.x + r.width + pad && p.y >= r.y - pad && p.y <= r.y + r.height + pad;
 }
@@ -103,13 +106,20 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
         out.shapes.push_back(segment(outer[i], outer[j], st.stroke, palette::shell_outline, Tag::shell_outline));
         out.shapes.push_back(segment(inner[i], inner[j], 0.6f * st.stroke, palette::shell_outline, Tag::shell_outline));
     }
-    for (const GrainState& g : s.grains) {
-        const Px c = cam.to_px(ramp_to_world(g.position_m, s.ramp_angle_deg));
-        const float r = cam.to_px_length(g.radius_m);
+    // 3D grains (--model dem3d) projected on the cross-section: the farthest drawn first, so the
+    // nearer cover them, and each darkened with its distance from the viewer so the pile reads as deep.
+    std::vector<const GrainState*> order;
+    order.reserve(s.grains.size());
+    for (const GrainState& g : s.grains) order.push_back(&g);
+    std::stable_sort(order.begin(), order.end(), [](const GrainState* a, const GrainState* b) { return a->depth > b->depth; });
+    for (const GrainState* g : order) {
+        const Px c = cam.to_px(ramp_to_world(g->position_m, s.ramp_angle_deg));
+        const float r = cam.to_px_length(g->radius_m);
         // Small grains get a thin outline so neighbours stay apart without turning into dark dots.
         const float outline = std::min(1.2f * st.unit, 0.2f * r);
-        out.shapes.push_back(disc(c, r, grain_colour(s, g, st.grain_colouring, st.colour_speed_max_m_s), Tag::grain,
-                                  outline, palette::grain_outline));
+        Rgba fill = grain_colour(s, *g, st.grain_colouring, st.colour_speed_max_m_s);
+        if (g->depth >= 0.0) fill = shade(fill, static_cast<float>(1.0 - 0.55 * g->depth));
+        out.shapes.push_back(disc(c, r, fill, Tag::grain, outline, palette::grain_outline));
     }
     // The tracked dot at the lid's centre, on top: the lid is in front of the grains.
     double inner_r_m = 0.0;

@@ -6,6 +6,9 @@
 #include <fmt/format.h>
 
 #include "sim/auto_run.h"
+#ifndef __EMSCRIPTEN__
+#include "sim/dem3d/dem3d_run.h"
+#endif
 #include "sim/errors.h"
 #include "sim/models/reduced_run.h"
 #include "sim/scene_json.h"
@@ -31,12 +34,21 @@ std::unique_ptr<ModelRun> start_segments(const Scene& s) {
 std::unique_ptr<ModelRun> start_rigid(const Scene& s) {
     return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen);
 }
+std::unique_ptr<ModelRun> start_dem3d([[maybe_unused]] const Scene& s) {
+#ifdef __EMSCRIPTEN__
+    throw InputError("--model dem3d runs Yade as a separate program, which a web page cannot: use polyroll run "
+                     "--model dem3d");
+#else
+    return std::make_unique<dem3d::Dem3dRun>(s);
+#endif
+}
 
 const std::vector<ModelRow>& rows() {
     static const std::vector<ModelRow> table = {
         {{Model::grains, true, true, "", true}, start_grains, carry_on_grains},
         {{Model::segments, false, false, "segments re-levelled at each impact", false}, start_segments, nullptr},
         {{Model::rigid, false, false, "a frozen rigid body", false}, start_rigid, nullptr},
+        {{Model::dem3d, false, true, "", false, false}, start_dem3d, nullptr},
     };
     return table;
 }
@@ -56,6 +68,26 @@ const std::vector<Model>& all_models() {
         return m;
     }();
     return models;
+}
+
+const std::vector<Model>& everyday_models() {
+    static const std::vector<Model> models = [] {
+        std::vector<Model> m;
+        for (const ModelRow& r : rows())
+            if (r.traits.everyday) m.push_back(r.traits.model);
+        return m;
+    }();
+    return models;
+}
+
+const std::vector<std::string>& window_model_names() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (Model m : everyday_models()) n.push_back(to_string(m));
+        n.push_back(to_string(Model::automatic));
+        return n;
+    }();
+    return names;
 }
 
 Model reference_model() { return all_models().front(); }

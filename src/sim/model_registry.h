@@ -23,11 +23,18 @@ struct ModelTraits {
     std::string fill_description;
     // Can carry on a run another model began (continue_run).
     bool continues_hand_over = false;
+    // Cheap enough to run beside the others whenever a command runs them all (compare, bench's model
+    // rows) and to offer in the window; false for the 3D reference, a minute of CPU a run.
+    bool everyday = true;
 };
 
 // Every model, in the order `compare` and `bench` list them: the grain simulation first, the
 // reference the others are timed against.
 const std::vector<Model>& all_models();
+// The everyday ones (ModelTraits::everyday), in the same order.
+const std::vector<Model>& everyday_models();
+// What the window's model list offers: the everyday models' names, then "auto".
+const std::vector<std::string>& window_model_names();
 // The grain simulation: the reference the reduced models are compared with and timed against.
 Model reference_model();
 // Throws InputError for Model::automatic, which is a rule, not a model: ask the result (model_that_ran).

@@ -5,6 +5,8 @@
 // registry's continue_run() builds the next model's run from them, its measurements carrying on.
 #pragma once
 
+#include <memory>
+
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
 #include "sim/run_result.h"
@@ -43,6 +45,10 @@ public:
     virtual HandOver hand_over() const = 0;
     // What `--model auto` chose and why (AutoRun); empty for a model the user named.
     virtual const ModelChoice* model_choice() const { return nullptr; }
+    // The same run again from its release, without computing it again: for a model that computes its
+    // whole run up front at a cost worth saving (the 3D reference) when it is both measured and drawn.
+    // Null where running the scene again is the only way (the engine's state cannot be rewound).
+    virtual std::unique_ptr<ModelRun> replay() const { return nullptr; }
     // Steps to the end (a model that knows its whole run may jump there).
     virtual void run_to_end() {
         while (step()) {

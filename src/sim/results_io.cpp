@@ -78,6 +78,13 @@ json summary_json(const RunResult& r) {
     out["shell"] = shell;
     // Box2D's units and step mean nothing to the reduced models, which integrate their own equations.
     if (model_traits(model_that_ran(r)).engine) out["engine"] = engine;
+    if (r.dem3d) {
+        json yade;
+        yade["yade_version"] = r.dem3d->yade_version;
+        yade["time_step_s"] = r.dem3d->time_step_s;
+        yade["cpu_time_s"] = r.dem3d->cpu_time_s;
+        out["dem3d_engine"] = yade;
+    }
     return out;
 }
 
@@ -96,10 +103,17 @@ std::string trajectory_csv(const RunResult& r) {
 }
 
 std::string impacts_csv(const RunResult& r) {
-    std::string s = "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio\n";
-    for (const FaceImpact& f : r.measured.impacts)
-        s += fmt::format("{},{:.6f},{:.6f},{:.9g},{:.9g},{:.6f}\n", f.index, f.time_s, f.position_m,
+    // The last two columns: the energy read kKineticDelay_s after the landing (empty where the model
+    // has no such instant), and its ratio to the energy before.
+    std::string s = "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms\n";
+    for (const FaceImpact& f : r.measured.impacts) {
+        s += fmt::format("{},{:.6f},{:.6f},{:.9g},{:.9g},{:.6f}", f.index, f.time_s, f.position_m,
                          f.kinetic_before_J, f.kinetic_after_J, f.ratio());
+        if (f.kinetic_delayed_J && f.kinetic_before_J > 0.0)
+            s += fmt::format(",{:.9g},{:.6f}\n", *f.kinetic_delayed_J, *f.kinetic_delayed_J / f.kinetic_before_J);
+        else
+            s += ",,\n";
+    }
     return s;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "sim/engine_units.h"
 #include "sim/measurements.h"
@@ -29,6 +30,13 @@ struct RunResult {
     // turns negative (the real polygon hops), from model_invalid_time_s on. Always true for grains.
     bool model_valid = true;
     std::optional<double> model_invalid_time_s;
+    // Set for a run of the 3D reference (--model dem3d): what Yade ran with and what it cost.
+    struct Dem3dEngine {
+        std::string yade_version;
+        double time_step_s = 0.0;
+        double cpu_time_s = 0.0;  // the subprocess's own CPU time (wall_time_s adds starting it)
+    };
+    std::optional<Dem3dEngine> dem3d;
     // Set for a run of `--model auto` (scene.run.model == automatic): which model ran, and why.
     std::optional<ModelChoice> model_choice;
 };

@@ -17,6 +17,9 @@ struct GrainState {
     geom::Vec2 position_m;
     double radius_m = 0.0;
     double speed_m_s = 0.0;
+    // A 3D grain (--model dem3d) projected on the cross-section: where it lies across the box, 0 at
+    // the lid nearest the viewer to 1 at the far one. Negative for a 2D disc.
+    double depth = -1.0;
 };
 
 // One point of the speed-versus-time plot.

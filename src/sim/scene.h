@@ -78,7 +78,16 @@ struct FidelityParams {
 // Which physics computes the run: the grain simulation, or one of the experimenters' reduced models
 // (docs/physics.md), which treat the polygon and its fill as one rigid body between impacts; or
 // `automatic` ("auto"): the model registry picks per scene (model_choice.h).
-enum class Model { grains, segments, rigid, automatic };
+// `dem3d` is the 3D reference: the box and every grain of the fill in Yade's discrete element method
+// (src/sim/dem3d/), run as a subprocess: a check on the 2D cross-section, never picked by auto.
+enum class Model { grains, segments, rigid, dem3d, automatic };
+
+// What only the 3D reference (--model dem3d) uses: its soft contacts and the shell's rolling edges.
+struct Dem3dParams {
+    double contact_time_s = 0.0;    // duration of a grain's collision (linear spring-dashpot)
+    double time_step_share = 0.0;   // the DEM time step as a share of contact_time_s
+    double edge_radius_m = 0.0;     // radius of the spheres along the shell's outer edges (its ramp contacts)
+};
 
 struct RunParams {
     Model model = Model::grains;
@@ -98,6 +107,7 @@ struct Scene {
     ReleaseParams release;
     FidelityParams fidelity;
     RunParams run;
+    Dem3dParams dem3d;
 };
 
 }  // namespace polyroll

@@ -207,6 +207,18 @@ std::vector<SceneField> make_table() {
             .range(0.0, 1.0).min_open().unit("m/s").help("the shell counts as at rest below this speed..."),
         Row("run.rest_time_s", T::number, member<&Scene::run, &RunParams::rest_time_s>())
             .range(0.0, 60.0).min_open().unit("s").help("... held for this long"),
+
+        // --- dem3d: only the 3D reference (--model dem3d) reads these
+        Row("dem3d.contact_time_s", T::number, member<&Scene::dem3d, &Dem3dParams::contact_time_s>())
+            .range(1e-5, 0.01).unit("s").flag("--contact-time")
+            .help("3D reference: how long one grain collision lasts (its spring's stiffness); shorter is stiffer, "
+                  "truer and slower"),
+        Row("dem3d.time_step_share", T::number, member<&Scene::dem3d, &Dem3dParams::time_step_share>())
+            .range(0.01, 0.2).flag("--time-step-share")
+            .help("3D reference: the time step as a share of dem3d.contact_time_s, no unit"),
+        Row("dem3d.edge_radius_m", T::number, member<&Scene::dem3d, &Dem3dParams::edge_radius_m>())
+            .range(0.0001, 0.005).unit("m").flag("--edge-radius")
+            .help("3D reference: radius of the small spheres along the shell's outer edges that touch the ramp"),
     };
 }
 

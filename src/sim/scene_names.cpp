@@ -12,10 +12,11 @@ constexpr std::array<std::pair<ReleasePose, std::string_view>, 2> kPoses = {{
     {ReleasePose::vertex, "vertex"},
     {ReleasePose::face, "face"},
 }};
-constexpr std::array<std::pair<Model, std::string_view>, 4> kModels = {{
+constexpr std::array<std::pair<Model, std::string_view>, 5> kModels = {{
     {Model::grains, "grains"},
     {Model::segments, "segments"},
     {Model::rigid, "rigid"},
+    {Model::dem3d, "dem3d"},
     {Model::automatic, "auto"},
 }};
 

@@ -16,6 +16,16 @@ void set_terminal_velocity(Measurements& m, int sides) {
     m.terminal_velocity_faces = static_cast<int>(last - first);
 }
 
+void record_delayed_kinetic(Measurements& m, double time_s, double step_s, double kinetic_J) {
+    // Newest first, and only impacts whose delay ends within this step: older ones were read at their
+    // own step, or came from a model without such a reading (a hand-over) and stay without one.
+    for (auto it = m.impacts.rbegin(); it != m.impacts.rend(); ++it) {
+        const double due_s = it->time_s + kKineticDelay_s - 1e-9;
+        if (due_s < time_s - step_s) break;
+        if (time_s >= due_s && !it->kinetic_delayed_J) it->kinetic_delayed_J = kinetic_J;
+    }
+}
+
 void set_terminal_velocity_at_end(Measurements& m, int sides, const TrajectorySample& end) {
     set_terminal_velocity(m, sides);
     if (m.terminal_velocity_m_s) return;
@@ -235,6 +245,7 @@ bool Tracker::observe(long step) {
 
     if (step > 0) check_impact(t, now_.kinetic_J);
     previous_kinetic_J_ = now_.kinetic_J;
+    record_delayed_kinetic(m_, t, step_dt_s_, now_.kinetic_J);
 
     if (step >= next_sample_step_) {
         m_.trajectory.push_back(now_);

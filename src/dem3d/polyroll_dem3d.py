@@ -1,0 +1,503 @@
+#!/usr/bin/env python3
+"""polyroll --model dem3d: the experiment's 3D box simulated grain by grain in Yade.
+
+Run non-interactively, one thread, no GUI:
+    yade -j1 -n -x polyroll_dem3d.py IN.json OUTDIR
+IN.json is written by the C++ program (SI units, ramp frame: x down the slope, y along the ramp's
+normal, z the roll axis; the shell's angle is counter-clockwise about +z, so rolling down lowers it).
+OUTDIR receives states.csv, setup.json and, when frames_hz > 0, grains.csv (each written under a
+temporary name, then renamed). stdout carries only `progress <time_s> <x_m>` lines from this script
+(Yade's launcher prints its own banner first). Errors: one line on stderr, exit 1; bad input: exit 2.
+
+The model: the shell is ONE rigid clump of facets (inside walls and both lids, what the grains touch)
+and small spheres at its outer vertices (what touches the ramp); the ramp is a Yade wall at y = 0.
+All contacts are linear spring-dashpots set by a contact time and a restitution (ViscElMat).
+Yade is imported inside functions only, so this module imports and lints without Yade.
+"""
+import json
+import math
+import os
+import random
+import sys
+import time
+
+EDGE_SPHERES_PER_VERTEX = 3  # along z at each outer vertex; the shell's out-of-plane DOFs are blocked anyway
+# Yade turns en = 0 into a zero stiffness (log 0), and a tiny en makes the dashpot too stiff for the
+# explicit step: restitutions are floored here (an impact at 0.05 keeps 0.25 % of the normal energy).
+MIN_RESTITUTION = 0.05
+RAMP_MASS_KG = 1e12  # the wall's mass for the contact's reduced mass: effectively immovable
+POUR_GAP = 0.1       # pour lattice spacing = (1 + POUR_GAP) * largest grain diameter
+GROW_SHARE = 0.3     # share of settle_time_s spent growing grains that had to start shrunk (dense fills)
+INSIDE_TOL = 0.1     # grains_inside tolerance, in nominal grain radii
+PROGRESS_EVERY_S = 0.25
+MASK_INSIDE, MASK_RAMP = 1, 2  # grains+facets share bit 1; edge spheres+ramp share bit 2
+COLOR = (0.6, 0.6, 0.6)        # given explicitly: Yade's random colour reseeds Python's global random
+
+
+class InputError(Exception):
+    pass
+
+
+class RunError(Exception):
+    pass
+
+
+# ---------------------------------------------------------------- input
+
+def _field(cfg, path, kind=float, lo=None, hi=None, lo_open=False):
+    """Return cfg[path] (dotted path) checked for type and range; InputError names the key."""
+    node = cfg
+    for part in path.split('.'):
+        if not isinstance(node, dict) or part not in node:
+            raise InputError('missing key %s' % path)
+        node = node[part]
+    if kind in (int, float):
+        if isinstance(node, bool) or not isinstance(node, (int, float)) or (kind is int and node != int(node)):
+            raise InputError('%s must be %s' % (path, 'an integer' if kind is int else 'a number'))
+        node = kind(node)
+        if not math.isfinite(node) or (lo is not None and (node <= lo if lo_open else node < lo)) \
+                or (hi is not None and node > hi):
+            raise InputError('%s = %r is out of range' % (path, node))
+    elif not isinstance(node, kind):
+        raise InputError('%s has the wrong type' % path)
+    return node
+
+
+def _points(cfg, path, count):
+    """A list of `count` [x, y] number pairs."""
+    pts = _field(cfg, path, list)
+    ok = len(pts) == count and all(isinstance(p, list) and len(p) == 2 and all(
+        isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in p) for p in pts)
+    if not ok:
+        raise InputError('%s must hold %d [x, y] number pairs' % (path, count))
+    return [(float(p[0]), float(p[1])) for p in pts]
+
+
+# IN.json key -> (name used here, lowest, highest, lowest excluded); every key is required.
+NUMBERS = {
+    'gravity_m_s2': ('gravity_m_s2', 0, None, True), 'angle_deg': ('angle_deg', -89, 89, False),
+    'ramp.friction': ('ramp_friction', 0, None, False), 'ramp.restitution': ('ramp_restitution', 0, 1, False),
+    'ramp.length_m': ('ramp_length_m', 0, None, True),
+    'shell.inner_depth_m': ('inner_depth_m', 0, None, True), 'shell.lid_thickness_m': ('lid_thickness_m', 0, None, False),
+    'shell.mass_kg': ('mass_kg', 0, None, True), 'shell.inertia_roll_kg_m2': ('inertia_roll_kg_m2', 0, None, True),
+    'shell.inertia_cross_kg_m2': ('inertia_cross_kg_m2', 0, None, True),
+    'release.angle_rad': ('angle_rad', None, None, False), 'release.tilt_deg': ('tilt_deg', -90, 90, False),
+    'end_centre_x_m': ('end_centre_x_m', None, None, False),
+    'fill.grain_diameter_m': ('grain_diameter_m', 0, None, True), 'fill.diameter_spread': ('diameter_spread', 0, 0.5, False),
+    'fill.grain_density_kg_m3': ('grain_density_kg_m3', 0, None, True), 'fill.friction': ('grain_friction', 0, None, False),
+    'fill.wall_friction': ('wall_friction', 0, None, False), 'fill.restitution': ('grain_restitution', 0, 1, False),
+    'dem3d.contact_time_s': ('contact_time_s', 0, None, True), 'dem3d.time_step_share': ('time_step_share', 0, 1, True),
+    'dem3d.edge_radius_m': ('edge_radius_m', 0, None, True), 'step_hz': ('step_hz', 0, None, True),
+    'time_limit_s': ('time_limit_s', 0, None, True), 'settle_time_s': ('settle_time_s', 0, None, False),
+    'rest_speed_m_s': ('rest_speed_m_s', 0, None, True), 'rest_time_s': ('rest_time_s', 0, None, False),
+    'frames_hz': ('frames_hz', 0, None, False)}
+
+
+def load_config(path):
+    """Read and validate IN.json into a flat dict of the values the model uses."""
+    try:
+        with open(path) as f:
+            cfg = json.load(f)
+    except (OSError, ValueError) as e:
+        raise InputError('cannot read %s: %s' % (path, e))
+    if not isinstance(cfg, dict):
+        raise InputError('%s does not hold a JSON object' % path)
+    c = {name: _field(cfg, key, float, lo, hi, lo_open) for key, (name, lo, hi, lo_open) in NUMBERS.items()}
+    c['seed'] = _field(cfg, 'seed', int)
+    n = c['sides'] = _field(cfg, 'shell.sides', int, 3, 1000)
+    c['grain_count'] = _field(cfg, 'fill.grain_count', int, 0, 10 ** 6)
+    c['pivot_vertex'] = _field(cfg, 'pivot_vertex', int, 0, n - 1)
+    c['outer'] = _points(cfg, 'shell.outer_vertices_m', n)
+    c['inner'] = _points(cfg, 'shell.inner_vertices_m', n)
+    c['centre'] = _points({'c': [_field(cfg, 'release.centre_m', list)]}, 'c', 1)[0]
+    c['pose'] = _field(cfg, 'release.pose', str)
+    if c['pose'] not in ('vertex', 'face'):
+        raise InputError('release.pose must be "vertex" or "face"')
+    return c
+
+
+# ---------------------------------------------------------------- plane geometry (shell frame)
+
+def rot(p, a):
+    ca, sa = math.cos(a), math.sin(a)
+    return (ca * p[0] - sa * p[1], sa * p[0] + ca * p[1])
+
+
+def edge_planes(poly):
+    """Inward unit normals and offsets of a convex polygon's edges: inside iff n.p + off >= 0."""
+    area2 = sum(poly[i - 1][0] * poly[i][1] - poly[i][0] * poly[i - 1][1] for i in range(len(poly)))
+    sign = 1.0 if area2 > 0 else -1.0
+    planes = []
+    for i in range(len(poly)):
+        (x0, y0), (x1, y1) = poly[i], poly[(i + 1) % len(poly)]
+        ln = math.hypot(x1 - x0, y1 - y0)
+        nx, ny = -sign * (y1 - y0) / ln, sign * (x1 - x0) / ln
+        planes.append((nx, ny, -(nx * x0 + ny * y0)))
+    return planes
+
+
+def depth_inside(planes, p):
+    """Distance from p to the nearest edge (negative outside)."""
+    return min(nx * p[0] + ny * p[1] + off for nx, ny, off in planes)
+
+
+def pour_sites(c, radii, down, rng):
+    """Grain centres for the pour, in the shell frame: the lowest len(radii) sites of a randomly offset,
+    jittered cubic lattice in the inner prism, no two grains overlapping. Returns (sites, shrink): when the
+    loose lattice (spacing (1 + POUR_GAP) * largest diameter) holds too few sites the spacing shrinks and
+    the grains start at shrink * radius, to grow while they settle."""
+    n = len(radii)
+    if n == 0:
+        return [], 1.0
+    planes, half = edge_planes(c['inner']), c['inner_depth_m'] / 2
+    xs, ys = [p[0] for p in c['inner']], [p[1] for p in c['inner']]
+    d_max = 2 * max(radii)
+    loose = (1 + POUR_GAP) * d_max
+    offset = (rng.random(), rng.random(), rng.random())
+    s = loose
+    while True:
+        sites = []
+        for i in range(int((max(xs) - min(xs)) / s) + 2):
+            x = min(xs) + (i + offset[0]) * s
+            for j in range(int((max(ys) - min(ys)) / s) + 2):
+                y = min(ys) + (j + offset[1]) * s
+                if depth_inside(planes, (x, y)) < s / 2:
+                    continue
+                for k in range(int(2 * half / s) + 2):
+                    z = -half + (k + offset[2]) * s
+                    if abs(z) <= half - s / 2:
+                        sites.append((-(x * down[0] + y * down[1]), len(sites), (x, y, z)))
+        if len(sites) >= n:
+            break
+        s *= 0.97
+        if s < 0.5 * d_max:
+            raise RunError('fill.grain_count = %d grains do not fit in the shell' % n)
+    sites.sort()
+    jitter = 0.999 * s * POUR_GAP / (2 * (1 + POUR_GAP))  # keeps neighbours apart at full (shrunk) size
+    return [tuple(v + rng.uniform(-jitter, jitter) for v in p) for _, _, p in sites[:n]], s / loose
+
+
+# ---------------------------------------------------------------- the Yade scene
+
+def build_scene(c, rng):
+    """Materials, engines, ramp, shell clump and grains at the release pose; returns the scene's handles."""
+    import yade
+    from yade import O, utils
+    g, th = c['gravity_m_s2'], math.radians(c['angle_deg'])
+    tc = c['contact_time_s']
+
+    def mat(en, mu, density):
+        en = max(en, MIN_RESTITUTION)  # et = en: tangential contacts are damped like normal ones
+        return O.materials.append(yade.ViscElMat(tc=tc, en=en, et=en, frictionAngle=math.atan(mu), density=density))
+    r_edge, k = c['edge_radius_m'], EDGE_SPHERES_PER_VERTEX
+    m_grain = mat(c['grain_restitution'], c['grain_friction'], c['grain_density_kg_m3'])
+    m_wall = mat(c['grain_restitution'], c['wall_friction'], 0.0)
+    # One vertex's edge spheres together weigh the shell: the ramp contact's stiffness refers to its mass.
+    m_edge = mat(c['ramp_restitution'], c['ramp_friction'], c['mass_kg'] / k / (4 / 3 * math.pi * r_edge ** 3))
+    m_ramp = mat(c['ramp_restitution'], c['ramp_friction'], 0.0)
+    # ViscElMat combines friction angles by min, which would give grain-wall pairs the grain's friction:
+    # every pair is set explicitly instead (pairs the masks keep apart get the min).
+    mu = {(m_grain, m_grain): c['grain_friction'], (m_grain, m_wall): c['wall_friction'],
+          (m_edge, m_ramp): c['ramp_friction']}
+    ids = [m_grain, m_wall, m_edge, m_ramp]
+    matches = [(a, b, math.atan(mu.get((a, b), min(math.tan(O.materials[a].frictionAngle),
+                                                     math.tan(O.materials[b].frictionAngle)))))
+               for i, a in enumerate(ids) for b in ids[i:]]
+    ip2 = yade.Ip2_ViscElMat_ViscElMat_ViscElPhys(frictAngle=yade.MatchMaker(matches=matches, algo='min'))
+    collider = yade.InsertionSortCollider([yade.Bo1_Sphere_Aabb(), yade.Bo1_Facet_Aabb(), yade.Bo1_Wall_Aabb()])
+    O.engines = [
+        yade.ForceResetter(), collider,
+        yade.InteractionLoop([yade.Ig2_Sphere_Sphere_ScGeom(), yade.Ig2_Facet_Sphere_ScGeom(),
+                              yade.Ig2_Wall_Sphere_ScGeom()], [ip2], [yade.Law2_ScGeom_ViscElPhys_Basic()]),
+        yade.NewtonIntegrator(gravity=(g * math.sin(th), -g * math.cos(th), 0.0), damping=0.0)]
+    # Output rows fall on whole steps: dt is the largest step <= share * tc that divides 1/step_hz.
+    steps_per_row = max(1, math.ceil(1.0 / (c['step_hz'] * c['time_step_share'] * tc)))
+    O.dt = 1.0 / (c['step_hz'] * steps_per_row)
+
+    ramp = O.bodies.append(utils.wall(0.0, axis=1, sense=1, material=m_ramp, mask=MASK_RAMP, color=COLOR))
+    O.bodies[ramp].state.mass = RAMP_MASS_KG
+
+    # The shell, built in the global frame at the release pose.
+    a0, c0 = c['angle_rad'], c['centre']
+
+    def world(p, z):
+        q = rot(p, a0)
+        return (c0[0] + q[0], c0[1] + q[1], z)
+    n, half, inner = c['sides'], c['inner_depth_m'] / 2, c['inner']
+    tris = []
+    for j in range(n):
+        p, q = inner[j], inner[(j + 1) % n]
+        tris += [(world(p, -half), world(q, -half), world(q, half)), (world(p, -half), world(q, half), world(p, half))]
+    for z in (-half, half):
+        tris += [(world(inner[0], z), world(inner[j], z), world(inner[j + 1], z)) for j in range(1, n - 1)]
+    members = [utils.facet(t, fixed=False, material=m_wall, mask=MASK_INSIDE, color=COLOR) for t in tris]
+    n_facets = len(members)
+    inset = r_edge / math.cos(math.pi / n)  # the sphere touches both faces meeting at the vertex
+    z_edge = c['inner_depth_m'] / 2 + c['lid_thickness_m'] - r_edge
+    for v in c['outer']:
+        ln = math.hypot(*v)
+        p = (v[0] * (1 - inset / ln), v[1] * (1 - inset / ln))
+        for i in range(k):
+            z = 0.0 if k == 1 else -z_edge + 2 * z_edge * i / (k - 1)
+            members.append(utils.sphere(world(p, z), r_edge, material=m_edge, mask=MASK_RAMP, color=COLOR))
+    clump, member_ids = O.bodies.appendClumped(members)
+    for i in member_ids[:n_facets]:
+        O.bodies[i].state.mass = c['mass_kg']  # the grain-wall contact's reduced mass sees the shell
+    st = O.bodies[clump].state
+    st.mass = c['mass_kg']
+    # appendClumped puts the clump's local axes along its principal axes in whatever order: give the
+    # roll inertia to the local axis that lies along global z.
+    rm = st.ori.toRotationMatrix()
+    st.inertia = yade.Vector3(*[c['inertia_roll_kg_m2'] if abs(rm[2, i]) > 0.5 else c['inertia_cross_kg_m2']
+                                for i in range(3)])
+    st.blockedDOFs = 'xyzXYZ'
+
+    # Grains, at their full size (mass, inertia), possibly shrunk for the pour.
+    d, spread = c['grain_diameter_m'], c['diameter_spread']
+    radii = [d / 2 * (1 + spread * rng.uniform(-1, 1)) for _ in range(c['grain_count'])]
+    down = rot((math.sin(th), -math.cos(th)), -a0)
+    sites, shrink = pour_sites(c, radii, down, rng)
+    grains = []
+    for r, p in zip(radii, sites):
+        b = utils.sphere(world(p[:2], p[2]), r, material=m_grain, mask=MASK_INSIDE, color=COLOR)
+        b.shape.radius = r * shrink
+        grains.append(O.bodies.append(b))
+    return {'clump': clump, 'members': member_ids, 'grains': grains, 'radii': radii, 'shrink': shrink,
+            'edges': member_ids[n_facets:], 'collider': collider, 'steps_per_row': steps_per_row}
+
+
+def advance(steps):
+    """Step synchronously: O.run(n, True) waits by polling and loses ~40 ms of wall time per call."""
+    from yade import O
+    for _ in range(steps):
+        O.step()
+
+
+def settle(c, sc):
+    """Pour: the shell held at the release pose, the grains fall and settle (growing first if shrunk).
+    Returns (time used, settled)."""
+    from yade import O
+    grains, radii, shrink = sc['grains'], sc['radii'], sc['shrink']
+    if not grains:
+        return 0.0, True
+    t_grow = GROW_SHARE * c['settle_time_s'] if shrink < 1 else 0.0
+    r_in = max(math.hypot(*p) for p in c['inner'])
+    t_min = t_grow + math.sqrt(4 * r_in / c['gravity_m_s2'])  # a fall across the shell, at least
+    steps, t, mass = sc['steps_per_row'], 0.0, sum(O.bodies[i].state.mass for i in grains)
+    while t < c['settle_time_s']:
+        advance(steps)
+        t += steps * O.dt
+        if t_grow > 0:
+            f = shrink + (1 - shrink) * min(1.0, t / t_grow)
+            for i, r in zip(grains, radii):
+                O.bodies[i].shape.radius = r * f
+            sc['collider']()  # the bounds follow the new radii
+        ke = sum(O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm() for i in grains)
+        if not math.isfinite(ke):
+            raise RunError('the pour blew up (non-finite grain velocity)')
+        if t >= t_min and ke < mass * c['rest_speed_m_s'] ** 2:  # rms grain speed below rest speed
+            return t, True
+    return t, False
+
+
+def balance_turn(c, sc):
+    """The turn (rad, counter-clockwise) about the pivot vertex that puts the combined centre of mass
+    tilt_deg past balance downhill, measured against the true vertical, clamped so that neither
+    neighbouring face reaches the ramp."""
+    from yade import O
+    th = math.radians(c['angle_deg'])
+    piv = rot(c['outer'][c['pivot_vertex']], c['angle_rad'])
+    piv = (piv[0] + c['centre'][0], piv[1] + c['centre'][1])
+    bodies = [(c['mass_kg'], O.bodies[sc['clump']].state.pos)] + \
+        [(O.bodies[i].state.mass, O.bodies[i].state.pos) for i in sc['grains']]
+    m = sum(b[0] for b in bodies)
+    v = [sum(b[0] * b[1][k] for b in bodies) / m - piv[k] for k in range(2)]
+    up, downhill = (-math.sin(th), math.cos(th)), (math.cos(th), math.sin(th))
+    lean = math.atan2(v[0] * downhill[0] + v[1] * downhill[1], v[0] * up[0] + v[1] * up[1])
+    step = 2 * math.pi / c['sides']
+    turned = (-c['angle_rad']) % step  # rotation from face (0, 1) flat
+    delta = lean - math.radians(c['tilt_deg'])  # a counter-clockwise turn lowers the lean
+    return min(max(delta, -0.9 * (step - turned)), 0.9 * turned), piv
+
+
+def move_rigidly(body_ids, pivot, delta, dy):
+    """Rotate bodies by delta about the z-line through pivot, then lift them by dy; zero their motion."""
+    import yade
+    from yade import O
+    qz = yade.Quaternion(yade.Vector3(0, 0, 1), delta)
+    for i in body_ids:
+        st = O.bodies[i].state
+        p = rot((st.pos[0] - pivot[0], st.pos[1] - pivot[1]), delta)
+        st.pos = yade.Vector3(pivot[0] + p[0], pivot[1] + p[1] + dy, st.pos[2])
+        st.ori = qz * st.ori
+        st.vel = st.angVel = st.angMom = yade.Vector3(0, 0, 0)
+
+
+def release(c, sc):
+    """Turn (vertex release), set the shell down on the ramp, zero all motion, free the in-plane DOFs.
+    Returns the balance correction (deg) and the shell's angle at t = 0."""
+    from yade import O
+    everything = [sc['clump']] + list(sc['members']) + list(sc['grains'])
+    delta, pivot = balance_turn(c, sc) if c['pose'] == 'vertex' else (0.0, (0.0, 0.0))
+    move_rigidly(everything, pivot, delta, 0.0)
+    # The edge spheres round the vertices off: close the gap (or overlap) left to the ramp.
+    gap = min(O.bodies[i].state.pos[1] - O.bodies[i].shape.radius for i in sc['edges'])
+    move_rigidly(everything, (0.0, 0.0), 0.0, -gap)
+    sc['collider']()
+    O.bodies[sc['clump']].state.blockedDOFs = 'zXY'
+    return math.degrees(delta), c['angle_rad'] + delta
+
+
+# ---------------------------------------------------------------- the run
+
+class Tracker:
+    """Shell pose (unwrapped angle), energies and grains inside, read from the scene at each row."""
+
+    def __init__(self, c, sc, angle0):
+        from yade import O
+        self.c, self.sc, self.O = c, sc, O
+        th = math.radians(c['angle_deg'])
+        self.g = (c['gravity_m_s2'] * math.sin(th), -c['gravity_m_s2'] * math.cos(th))
+        self.q0 = O.bodies[sc['clump']].state.ori.conjugate()
+        self.angle0, self.turn = angle0, 0.0
+        self.planes = edge_planes(c['inner'])
+        self.tol = INSIDE_TOL * c['grain_diameter_m'] / 2
+        self.pe0 = None
+
+    def row(self):
+        O, c = self.O, self.c
+        st = O.bodies[self.sc['clump']].state
+        q = st.ori * self.q0  # rotation since t = 0, about z only (X, Y blocked)
+        rel = 2 * math.atan2(q[2], q[3])
+        self.turn += (rel - self.turn + math.pi) % (2 * math.pi) - math.pi  # unwrap
+        angle = self.angle0 + self.turn
+        x, y, vx, vy, w = st.pos[0], st.pos[1], st.vel[0], st.vel[1], st.angVel[2]
+        ke = 0.5 * c['mass_kg'] * (vx * vx + vy * vy) + 0.5 * c['inertia_roll_kg_m2'] * w * w
+        pe = -c['mass_kg'] * (self.g[0] * x + self.g[1] * y)
+        inside, half = 0, c['inner_depth_m'] / 2 + self.tol
+        for i in self.sc['grains']:
+            b = O.bodies[i].state
+            p, v = b.pos, b.vel
+            ke += 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia[0] * b.angVel.squaredNorm()
+            pe -= b.mass * (self.g[0] * p[0] + self.g[1] * p[1])
+            if abs(p[2]) <= half and depth_inside(self.planes, rot((p[0] - x, p[1] - y), -angle)) >= -self.tol:
+                inside += 1
+        if self.pe0 is None:
+            self.pe0 = pe
+        vals = (x, y, angle, vx, vy, w, ke, pe - self.pe0)
+        if not all(math.isfinite(v) for v in vals):
+            raise RunError('the simulation blew up (non-finite shell state)')
+        return vals + (inside,)
+
+    def grain_rows(self, t):
+        for k, i in enumerate(self.sc['grains']):
+            b = self.O.bodies[i]
+            yield (t, k) + tuple(b.state.pos) + (b.shape.radius,)
+
+
+def fmt(v):
+    return repr(float(v)) if isinstance(v, float) else str(v)
+
+
+def simulate(c, sc, angle0, states, frames):
+    """Step from the release to the end, writing one row per 1/step_hz; returns how the run ended."""
+    from yade import O
+    tr, steps = Tracker(c, sc, angle0), sc['steps_per_row']
+    r_out = max(math.hypot(*p) for p in c['outer'])
+    k, rest_since, next_frame, next_progress, x0 = 0, None, 0.0, 0.0, None
+    while True:
+        t = k / c['step_hz']
+        row = tr.row()
+        states.write(','.join(fmt(v) for v in (t,) + row) + '\n')
+        if x0 is None:
+            x0 = row[0]
+        if frames and t >= next_frame - 1e-9:
+            frames.writelines(','.join(fmt(v) for v in r) + '\n' for r in tr.grain_rows(t))
+            next_frame += 1.0 / c['frames_hz']
+        if t >= next_progress - 1e-9:
+            print('progress %r %r' % (t, row[0] - x0), flush=True)
+            next_progress += PROGRESS_EVERY_S
+        speed = math.hypot(row[3], row[4])
+        if speed < c['rest_speed_m_s'] and abs(row[5]) * r_out < c['rest_speed_m_s']:
+            rest_since = t if rest_since is None else rest_since
+        else:
+            rest_since = None
+        if row[0] > c['end_centre_x_m']:
+            return 'rolled_to_end'
+        if rest_since is not None and t - rest_since >= c['rest_time_s'] - 1e-9:
+            return 'rest'
+        if t >= c['time_limit_s'] - 1e-9:
+            return 'time_limit'
+        advance(steps)
+        k += 1
+
+
+class AtomicFile:
+    """A file written under a temporary name in its folder and renamed into place by commit()."""
+
+    def __init__(self, path):
+        self.path, self.tmp = path, path + '.tmp-%d' % os.getpid()
+        self.f = open(self.tmp, 'w')
+
+    def commit(self):
+        self.f.close()
+        os.replace(self.tmp, self.path)
+
+    def discard(self):
+        self.f.close()
+        if os.path.exists(self.tmp):
+            os.remove(self.tmp)
+
+
+def run(in_path, out_dir):
+    c = load_config(in_path)
+    os.makedirs(out_dir, exist_ok=True)
+    import yade.config
+    from yade import O
+    rng = random.Random(c['seed'])  # private: Yade reseeds Python's global generator
+    sc = build_scene(c, rng)
+    settle_time, settled = settle(c, sc)
+    correction_deg, angle0 = release(c, sc)
+    states = AtomicFile(os.path.join(out_dir, 'states.csv'))
+    frames = AtomicFile(os.path.join(out_dir, 'grains.csv')) if c['frames_hz'] > 0 else None
+    try:
+        states.f.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
+        if frames:
+            frames.f.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
+        end = simulate(c, sc, angle0, states.f, frames.f if frames else None)
+    except BaseException:
+        for f in (states, frames):
+            if f:
+                f.discard()
+        raise
+    states.commit()
+    if frames:
+        frames.commit()
+    setup = {'grains': len(sc['grains']),
+             'fill_mass_kg': sum(O.bodies[i].state.mass for i in sc['grains']),
+             'settle_time_s': settle_time, 'settled': settled, 'balance_correction_deg': correction_deg,
+             'time_step_s': O.dt, 'yade_version': str(yade.config.version),
+             'cpu_time_s': time.process_time(), 'end': end}
+    out = AtomicFile(os.path.join(out_dir, 'setup.json'))
+    json.dump(setup, out.f, indent=2)
+    out.f.write('\n')
+    out.commit()
+
+
+def main(argv):
+    if len(argv) != 3:
+        sys.stderr.write('usage: yade -j1 -n -x %s IN.json OUTDIR\n' % os.path.basename(argv[0]))
+        return 2
+    try:
+        run(argv[1], argv[2])
+    except InputError as e:
+        sys.stderr.write('dem3d input: %s\n' % e)
+        return 2
+    except Exception as e:  # one line for the caller, whatever went wrong
+        sys.stderr.write('dem3d: %s\n' % (' '.join(str(e).split()) or type(e).__name__))
+        return 1
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))

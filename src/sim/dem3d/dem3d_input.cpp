@@ -1,0 +1,81 @@
+// The 3D reference's input: see dem3d_input.h.
+#include "sim/dem3d/dem3d_input.h"
+
+#include <cmath>
+
+#include "sim/fill_plan.h"
+#include "sim/geometry.h"
+#include "sim/shell_pose.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll::dem3d {
+
+using json = nlohmann::ordered_json;
+
+int grain_count(const Scene& s) {
+    if (s.fill.ratio <= 0.0) return 0;
+    const MaterialParams& m = s.fill.material;
+    // Diameters uniform in d (1 +- spread): the mean of d^3 is d^3 (1 + spread^2).
+    const double mean_volume_m3 = geom::kPi / 6.0 * std::pow(m.diameter_m, 3) * (1.0 + m.diameter_spread * m.diameter_spread);
+    const double grains_volume_m3 = s.fill.ratio * shell_properties(s.shell).inside_volume_m3 * m.packing_fraction;
+    return std::max(1, static_cast<int>(std::lround(grains_volume_m3 / mean_volume_m3)));
+}
+
+namespace {
+
+json points(const std::vector<geom::Vec2>& poly) {
+    json a = json::array();
+    for (const geom::Vec2& p : poly) a.push_back({p.x, p.y});
+    return a;
+}
+
+}  // namespace
+
+json script_input(const Scene& s, double frames_hz) {
+    const ShellProperties p = shell_properties(s.shell);
+    const ShellPose release = release_pose(s, p);
+    // The shell's moment about an axis across the roll axis: walls and lids as a thin prism of the
+    // outer radius and the box's length. Only for completeness: the script blocks those rotations.
+    const double length_m = s.shell.depth_m + 2.0 * s.shell.lid_thickness_m;
+    const double cross_inertia = p.mass_kg * (p.outer_circumradius_m * p.outer_circumradius_m / 4.0 + length_m * length_m / 12.0);
+
+    json j;
+    j["seed"] = s.run.seed;
+    j["gravity_m_s2"] = s.run.gravity_m_s2;
+    j["angle_deg"] = s.ramp.angle_deg;
+    j["ramp"] = {{"length_m", s.ramp.length_m}, {"friction", s.ramp.friction}, {"restitution", s.ramp.restitution}};
+    j["shell"] = {{"sides", s.shell.sides},
+                  {"outer_vertices_m", points(shell_outer_polygon_m(s.shell))},
+                  {"inner_vertices_m", points(shell_inner_polygon_m(s.shell))},
+                  {"inner_depth_m", s.shell.depth_m},
+                  {"lid_thickness_m", s.shell.lid_thickness_m},
+                  {"mass_kg", p.mass_kg},
+                  {"inertia_roll_kg_m2", p.inertia_kg_m2},
+                  {"inertia_cross_kg_m2", cross_inertia}};
+    j["release"] = {{"centre_m", {release.centre_m.x, release.centre_m.y}},
+                    {"angle_rad", release.angle_rad},
+                    {"tilt_deg", s.release.tilt_deg},
+                    {"pose", s.release.pose == ReleasePose::vertex ? "vertex" : "face"}};
+    j["pivot_vertex"] = 1;  // release_pose stands the shell on vertex 1, the downhill end of face (0, 1)
+    j["end_centre_x_m"] = s.ramp.length_m - p.outer_circumradius_m;  // as build_world
+    const MaterialParams& m = s.fill.material;
+    j["fill"] = {{"grain_count", grain_count(s)},
+                 {"grain_diameter_m", m.diameter_m},
+                 {"diameter_spread", m.diameter_spread},
+                 {"grain_density_kg_m3", m.bulk_density_kg_m3 / m.packing_fraction},
+                 {"friction", m.friction},
+                 {"wall_friction", m.wall_friction},
+                 {"restitution", m.restitution}};
+    j["dem3d"] = {{"contact_time_s", s.dem3d.contact_time_s},
+                  {"time_step_share", s.dem3d.time_step_share},
+                  {"edge_radius_m", s.dem3d.edge_radius_m}};
+    j["step_hz"] = s.fidelity.step_hz;
+    j["time_limit_s"] = s.run.time_limit_s;
+    j["settle_time_s"] = s.run.settle_time_s;
+    j["rest_speed_m_s"] = s.run.rest_speed_m_s;
+    j["rest_time_s"] = s.run.rest_time_s;
+    j["frames_hz"] = frames_hz;
+    return j;
+}
+
+}  // namespace polyroll::dem3d

@@ -1,0 +1,199 @@
+// The 3D reference's run: see dem3d_run.h.
+#include "sim/dem3d/dem3d_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "sim/dem3d/dem3d_input.h"
+#include "sim/dem3d/yade_process.h"
+#include "sim/fill_plan.h"
+#include "sim/models/reveal.h"
+#include "sim/shell_properties.h"
+
+namespace polyroll::dem3d {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) throw std::runtime_error(fmt::format("the 3D reference wrote no {}", p.filename().string()));
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The folder the script works in: $POLYROLL_DEM3D_WORKDIR (kept, for looking into a run), else a new
+// temporary folder removed when the run has been read.
+class WorkDir {
+public:
+    WorkDir() {
+        if (const char* env = std::getenv("POLYROLL_DEM3D_WORKDIR"); env && *env) {
+            path_ = env;
+            fs::create_directories(path_);
+            return;
+        }
+        std::string pattern = (fs::temp_directory_path() / "polyroll-dem3d-XXXXXX").string();
+        if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder for Yade");
+        path_ = pattern;
+        remove_ = true;
+    }
+    ~WorkDir() {
+        std::error_code ec;
+        if (remove_) fs::remove_all(path_, ec);
+    }
+    WorkDir(const WorkDir&) = delete;
+    WorkDir& operator=(const WorkDir&) = delete;
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+    bool remove_ = false;
+};
+
+// A 3D shell touches the ramp with the spheres along its edges, centred on the outer edges: a vertex
+// on the ramp stands about their radius above it, a little less while the contact is compressed.
+// The quarter millimetre more is the tracker's margin for a contact just made.
+constexpr double kContactMargin_m = 0.00025;
+
+}  // namespace
+
+std::vector<GrainFrame> parse_grains_csv(const std::string& text, double depth_m) {
+    std::istringstream in(text);
+    std::string line;
+    if (!std::getline(in, line) || line != "time_s,grain,x_m,y_m,z_m,radius_m")
+        throw std::runtime_error("grains.csv: the first line is not the header 'time_s,grain,x_m,y_m,z_m,radius_m'");
+    std::vector<GrainFrame> frames;
+    int line_no = 1;
+    while (std::getline(in, line)) {
+        ++line_no;
+        if (line.empty()) continue;
+        double t = 0.0, x = 0.0, y = 0.0, z = 0.0, r = 0.0;
+        int id = 0;
+        if (std::sscanf(line.c_str(), "%lf,%d,%lf,%lf,%lf,%lf", &t, &id, &x, &y, &z, &r) != 6)
+            throw std::runtime_error(fmt::format("grains.csv line {}: not six numbers", line_no));
+        if (frames.empty() || frames.back().time_s != t) frames.push_back({t, {}});
+        GrainState g;
+        g.position_m = {x, y};
+        g.radius_m = r;
+        // z runs from -depth/2 (the near lid) to +depth/2.
+        g.depth = depth_m > 0.0 ? std::clamp(z / depth_m + 0.5, 0.0, 1.0) : 0.5;
+        frames.back().grains.push_back(g);
+    }
+    return frames;
+}
+
+Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
+    const WorkDir dir;
+    run_script(script_input(scene, scene.run.sample_hz), dir.path());
+    rows_ = parse_states_csv(read_text(dir.path() / "states.csv"));
+    if (rows_.empty()) throw std::runtime_error("the 3D reference wrote no state (states.csv has no rows)");
+    const auto setup = nlohmann::json::parse(read_text(dir.path() / "setup.json"));
+    if (fs::exists(dir.path() / "grains.csv"))
+        frames_ = parse_grains_csv(read_text(dir.path() / "grains.csv"), scene.shell.depth_m);
+
+    full_.scene = scene;
+    full_.shell = shell_properties(scene.shell);
+    full_.grains = setup.value("grains", 0);
+    full_.fill_mass_kg = setup.value("fill_mass_kg", 0.0);
+    full_.settle_time_s = setup.value("settle_time_s", 0.0);
+    full_.settled = setup.value("settled", true);
+    full_.balance_correction_deg = setup.value("balance_correction_deg", 0.0);
+    RunResult::Dem3dEngine engine;
+    engine.yade_version = setup.value("yade_version", "");
+    engine.time_step_s = setup.value("time_step_s", 0.0);
+    engine.cpu_time_s = setup.value("cpu_time_s", 0.0);
+    full_.dem3d = engine;
+
+    TrackRules rules;
+    rules.grains = full_.grains;
+    rules.energy_scale_J = (full_.shell.mass_kg + full_.fill_mass_kg) * scene.run.gravity_m_s2 * full_.shell.pivot_radius_m;
+    rules.contact_tolerance_m = scene.dem3d.edge_radius_m + kContactMargin_m;
+    full_.measured = measure_states(scene, rows_, rules);
+    if (engine.time_step_s > 0.0) full_.steps = std::lround(full_.measured.end_time_s / engine.time_step_s);
+
+    outer_ = shell_outer_polygon_m(scene.shell);
+    inner_ = shell_inner_polygon_m(scene.shell);
+    shown_.behaviour = Behaviour::running;
+    reveal();
+}
+
+bool Dem3dRun::finished() const { return time_s() >= full_.measured.end_time_s - 1e-12; }
+
+bool Dem3dRun::step() {
+    if (finished()) return false;
+    ++steps_;
+    reveal();
+    return !finished();
+}
+
+void Dem3dRun::run_to_end() {
+    steps_ = models::first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
+    reveal();
+}
+
+std::unique_ptr<ModelRun> Dem3dRun::replay() const {
+    std::unique_ptr<Dem3dRun> again(new Dem3dRun(*this));
+    again->steps_ = 0;
+    again->shown_ = Measurements{};
+    again->shown_.behaviour = Behaviour::running;
+    again->reveal();
+    return again;
+}
+
+void Dem3dRun::reveal() { models::reveal_up_to(shown_, full_.measured, time_s(), finished()); }
+
+StateRow Dem3dRun::state_now() const {
+    // The rows are one a tracker step, so the step count indexes them.
+    const size_t i = std::min(static_cast<size_t>(std::max(0L, steps_)), rows_.size() - 1);
+    return rows_[i];
+}
+
+RunSnapshot Dem3dRun::snapshot() const {
+    RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
+    s.time_s = std::min(time_s(), full_.measured.end_time_s);
+    const StateRow r = state_now();
+    s.shell_centre_m = r.shell.pose.centre_m;
+    s.shell_angle_rad = r.shell.pose.angle_rad;
+    if (!frames_.empty()) {
+        // The latest frame at or before now.
+        auto it = std::upper_bound(frames_.begin(), frames_.end(), s.time_s + 1e-9,
+                                   [](double t, const GrainFrame& f) { return t < f.time_s; });
+        s.grains = (it == frames_.begin() ? frames_.front() : *(it - 1)).grains;
+    }
+    TrajectorySample now;
+    now.time_s = s.time_s;
+    now.position_m = r.shell.pose.centre_m.x - rows_.front().shell.pose.centre_m.x;
+    now.speed_m_s = r.shell.velocity_m_s.x;
+    now.angle_deg = -(r.shell.pose.angle_rad - rows_.front().shell.pose.angle_rad) * 180.0 / geom::kPi;
+    now.kinetic_J = r.kinetic_J;
+    now.potential_J = r.potential_J;
+    now.dissipated_J = -(r.kinetic_J + r.potential_J);
+    set_measured(s, now, shown_);
+    return s;
+}
+
+HandOver Dem3dRun::hand_over() const {
+    const StateRow r = state_now();
+    HandOver h;
+    h.steps = steps_;
+    h.shell = r.shell;
+    h.release = rows_.front().shell.pose;
+    h.measured = shown_;
+    h.measured.behaviour = Behaviour::running;
+    h.landed_vertex = 1 + static_cast<long>(shown_.impacts.size());
+    h.potential_J = r.potential_J;
+    return h;
+}
+
+}  // namespace polyroll::dem3d

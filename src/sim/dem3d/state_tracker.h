@@ -1,0 +1,42 @@
+// Measurements from a recorded stream of the shell's states: what the tracker (sim/tracker.h) measures
+// from the Box2D world, measured by the same rules from the rows the 3D reference writes (states.csv),
+// one per tracker step. Box2D-free, so a saved output can be measured again in the tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/measurements.h"
+#include "sim/scene.h"
+#include "sim/shell_pose.h"
+
+namespace polyroll::dem3d {
+
+// One tracker step of a recorded run, in the ramp frame.
+struct StateRow {
+    double time_s = 0.0;  // since release
+    ShellState shell;
+    double kinetic_J = 0.0;    // shell and grains
+    double potential_J = 0.0;  // shell and grains, relative to release
+    int grains_inside = 0;
+};
+
+// Reads states.csv (header time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,
+// grains_inside). Throws std::runtime_error naming the line of a malformed row.
+std::vector<StateRow> parse_states_csv(const std::string& text);
+
+struct TrackRules {
+    int grains = 0;              // in the box at release
+    double energy_scale_J = 0.0; // total mass x g x pivot radius: the scale of the run's energies
+    // A landing vertex nearer the ramp than this touches it (the 3D shell meets the ramp with the
+    // spheres along its edges, so its vertices stay about their radius above the surface).
+    double contact_tolerance_m = 0.0;
+};
+
+// Measures the rows as the tracker measures a Box2D run: face impacts (with the energy before, at the
+// landing, and kKineticDelay_s after), trajectory rows at run.sample_hz, rest, the end of the ramp,
+// the time limit, the terminal velocity and the energy books; non-finite numbers, grains leaving the
+// box or energy created end it as diverged, saying when and why.
+Measurements measure_states(const Scene& scene, const std::vector<StateRow>& rows, const TrackRules& rules);
+
+}  // namespace polyroll::dem3d

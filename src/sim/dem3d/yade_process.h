@@ -1,0 +1,35 @@
+// Running the 3D reference's script (polyroll_dem3d.py) in Yade, as a subprocess: found on the PATH
+// (or $POLYROLL_YADE), one thread so a seed gives the same run twice, its progress read as it comes,
+// stopped by a timeout, and never outliving polyroll (Ctrl-C or a crash of polyroll ends it too).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace polyroll::dem3d {
+
+// Yade's command, or throws InputError saying how to install it (the CLI exits with 2).
+std::string yade_command();
+
+// The script's path: $POLYROLL_DEM3D_DIR, then <exe>/../share/polyroll/dem3d, then the source tree.
+std::string script_path();
+
+// The longest a run may take in wall-clock seconds before it is stopped: $POLYROLL_DEM3D_TIMEOUT_S,
+// else 2 hours (a whole-ramp run of the octagon takes about two minutes).
+double timeout_s();
+
+// Called with the simulated time and the distance rolled, about every quarter simulated second.
+using Progress = std::function<void(double time_s, double distance_m)>;
+
+// Where progress goes for runs started on this thread (none by default: sweeps run many at once).
+// Returns the previous one.
+Progress set_progress(Progress p);
+
+// Writes `input` as IN.json into `dir` (an existing folder) and runs the script on it there.
+// Throws std::runtime_error with Yade's last words if it fails or times out.
+void run_script(const nlohmann::ordered_json& input, const std::filesystem::path& dir);
+
+}  // namespace polyroll::dem3d
