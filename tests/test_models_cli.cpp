@@ -63,7 +63,7 @@ TEST_CASE("polyroll run --model auto says what it chose, why, and when it handed
     const Output bad = run_polyroll("run --model autoo");
     CHECK(bad.exit_code == 2);
     CHECK(std::count(bad.out.begin(), bad.out.end(), '\n') == 1);
-    CHECK(bad.out.find("allowed: grains, segments, rigid, auto") != std::string::npos);
+    CHECK(bad.out.find("allowed: grains, segments, rigid, dem3d, auto") != std::string::npos);
 }
 
 TEST_CASE("polyroll compare runs all three models and writes their runs and a speed CSV", "[models][cli]") {
@@ -89,5 +89,53 @@ TEST_CASE("polyroll compare runs all three models and writes their runs and a sp
     CHECK(first == "0.000000,0.000000,0.000000,0.000000");
     CHECK(std::count(second.begin(), second.end(), ',') == 3);
     CHECK(second.find(",,") == std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("polyroll run --model dem3d: a missing Yade or a bad 3D field is one line and exit 2", "[models][cli][dem3d]") {
+    const Output missing = polyroll::test::run_command("env POLYROLL_YADE=/nonexistent/yade " + std::string(POLYROLL_EXE) +
+                                                       " run --model dem3d --angle 14");
+    INFO(missing.out);
+    CHECK(missing.exit_code == 2);
+    CHECK(missing.out.find("POLYROLL_YADE=/nonexistent/yade: not an executable file") != std::string::npos);
+    CHECK(std::count(missing.out.begin(), missing.out.end(), '\n') == 1);
+    // No yade on the PATH: says how to install it.
+    const Output none = polyroll::test::run_command("env PATH=/nonexistent " + std::string(POLYROLL_EXE) +
+                                                    " run --model dem3d --angle 14");
+    INFO(none.out);
+    CHECK(none.exit_code == 2);
+    CHECK(none.out.find("needs Yade, which is not installed: run third_party/setup.sh") != std::string::npos);
+    CHECK(std::count(none.out.begin(), none.out.end(), '\n') == 1);
+    for (const char* bad : {"--contact-time 5", "--time-step-share 0.9", "--edge-radius 0"}) {
+        const Output o = run_polyroll(std::string("run --model dem3d ") + bad);
+        INFO(bad << ": " << o.out);
+        CHECK(o.exit_code == 2);
+        CHECK(o.out.find("dem3d.") != std::string::npos);
+        CHECK(o.out.find("allowed") != std::string::npos);
+    }
+}
+
+TEST_CASE("polyroll run --model dem3d writes the usual files, the 3D engine and each impact's delayed energy",
+          "[models][cli][dem3d]") {
+    // The small hexagon a quarter full at 14 deg stops at its first impact: about 4 CPU-seconds in Yade.
+    const auto dir = fresh_dir("dem3d");
+    const Output o = run_polyroll("run --model dem3d --angle 14 --out " + dir.string());
+    INFO(o.out);
+    REQUIRE(o.exit_code == 0);
+    CHECK(o.out.find("behaviour          stopped_at_first_impact") != std::string::npos);
+    CHECK(o.out.find("grains             241") != std::string::npos);
+    const auto summary = nlohmann::json::parse(polyroll::test::read_file(dir / "summary.json"));
+    CHECK(summary["results"]["model"] == "dem3d");
+    CHECK(summary["results"]["behaviour"] == "stopped_at_first_impact");
+    CHECK(summary["results"]["grains"] == 241);
+    // The step is shortened to fit a whole number in a tracker step: at most the share asked for.
+    CHECK(summary["dem3d_engine"]["time_step_s"].get<double>() <= 0.001 * 0.0667);
+    CHECK(summary["dem3d_engine"]["time_step_s"].get<double>() > 0.9 * 0.001 * 0.0667);
+    CHECK(summary["dem3d_engine"]["yade_version"].get<std::string>().size() > 0);
+    CHECK(!summary.contains("engine"));
+    CHECK(summary["scene"]["dem3d"]["contact_time_s"] == 0.001);
+    const std::string impacts = polyroll::test::read_file(dir / "impacts.csv");
+    CHECK(impacts.rfind("impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms\n1,", 0) == 0);
+    CHECK(impacts.find(",,\n") == std::string::npos);  // the delayed reading is there
     std::filesystem::remove_all(dir);
 }

@@ -103,7 +103,7 @@ Action add_tradeoff_command(CLI::App& app) {
         "Runs a fixed set of scenes with every model and preset (resumable: the same command continues),\n"
         "compares each with the converged reference and writes tradeoff.md, points.csv and tradeoff.png.\n"
         "With --dem3d, the 2D cross-section against the 3D reference instead (168 runs, half of them in Yade:\n"
-        "about 40 minutes on 2 cores): cross-section.md, cross-section.csv and cross-section.png.\n"
+        "about half an hour on 2 cores): cross-section.md, cross-section.csv and cross-section.png.\n"
         "Examples:\n"
         "  polyroll tradeoff\n"
         "  polyroll tradeoff --dem3d --out docs/tradeoff");

@@ -61,9 +61,10 @@ private:
     bool remove_ = false;
 };
 
-// A 3D shell touches the ramp with the spheres along its edges, centred on the outer edges: a vertex
-// on the ramp stands about their radius above it, a little less while the contact is compressed.
-// The quarter millimetre more is the tracker's margin for a contact just made.
+// A 3D shell touches the ramp with the spheres along its edges, set in from each outer vertex until
+// they touch both faces (a rounded corner): a vertex touching the ramp is a fraction of their radius
+// below its surface (0.16 mm for the hexagon's 1 mm spheres). A vertex within this margin above the
+// surface counts as touching, as the tracker's tolerance does for Box2D's skin.
 constexpr double kContactMargin_m = 0.00025;
 
 }  // namespace
@@ -118,7 +119,7 @@ Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
     TrackRules rules;
     rules.grains = full_.grains;
     rules.energy_scale_J = (full_.shell.mass_kg + full_.fill_mass_kg) * scene.run.gravity_m_s2 * full_.shell.pivot_radius_m;
-    rules.contact_tolerance_m = scene.dem3d.edge_radius_m + kContactMargin_m;
+    rules.contact_tolerance_m = kContactMargin_m;
     full_.measured = measure_states(scene, rows_, rules);
     if (engine.time_step_s > 0.0) full_.steps = std::lround(full_.measured.end_time_s / engine.time_step_s);
 

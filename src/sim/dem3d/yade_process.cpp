@@ -1,6 +1,7 @@
 // Running Yade: see yade_process.h.
 #include "sim/dem3d/yade_process.h"
 
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -90,18 +91,53 @@ Progress set_progress(Progress p) {
     return p;
 }
 
+namespace {
+
+// How to run the script: with the launcher's own Python importing Yade as a library from the folder
+// the launcher puts on sys.path (Debian's /usr/bin/yade: "#!/usr/bin/python3" and
+// "sys.path.insert(1,'/usr/lib/x86_64-linux-gnu/yade-double/py')"), so that none of the launcher's
+// servers start: its XMLRPC info server listens on every network interface while a run lasts. A
+// launcher this cannot read runs the script itself ("yade -j1 -n -x").
+struct Launch {
+    std::vector<std::string> argv;
+    std::string yade_py;  // for POLYROLL_YADE_PY; empty through the launcher
+};
+
+Launch launch_for(const std::string& yade, const std::string& script, const fs::path& dir) {
+    std::ifstream in(yade);
+    std::string line, python, py_dir;
+    if (std::getline(in, line) && line.rfind("#!", 0) == 0) {
+        python = line.substr(2);
+        while (!python.empty() && std::isspace(static_cast<unsigned char>(python.back()))) python.pop_back();
+    }
+    for (int n = 0; n < 200 && std::getline(in, line); ++n) {
+        const size_t at = line.find("sys.path.insert(");
+        if (at == std::string::npos) continue;
+        const size_t open = line.find('\'', at), close = open == std::string::npos ? open : line.find('\'', open + 1);
+        if (close != std::string::npos) py_dir = line.substr(open + 1, close - open - 1);
+        break;
+    }
+    const std::string in_json = (dir / "IN.json").string();
+    if (!python.empty() && python.find(' ') == std::string::npos && executable(python) && !py_dir.empty() &&
+        fs::is_directory(fs::path(py_dir) / "yade"))
+        return {{python, script, in_json, dir.string()}, py_dir};
+    return {{yade, "-j1", "-n", "-x", script, in_json, dir.string()}, ""};
+}
+
+}  // namespace
+
 void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
     const std::string yade = yade_command();
     const std::string script = script_path();
     const double limit_s = timeout_s();
     write_file_atomic(dir / "IN.json", input.dump(2) + "\n");
+    const Launch launch = launch_for(yade, script, dir);
 
     int out_pipe[2], err_pipe[2];
     if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0)
         throw std::runtime_error("cannot start Yade (no pipe)");
-    const std::vector<std::string> argv = {yade, "-j1", "-n", "-x", script, (dir / "IN.json").string(), dir.string()};
     std::vector<char*> cargs;
-    for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
+    for (const auto& a : launch.argv) cargs.push_back(const_cast<char*>(a.c_str()));
     cargs.push_back(nullptr);
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
@@ -117,7 +153,8 @@ void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
         ::dup2(err_pipe[1], 2);
         const int null = ::open("/dev/null", O_RDONLY);
         if (null >= 0) ::dup2(null, 0);
-        ::setenv("OMP_NUM_THREADS", "1", 1);
+        ::setenv("OMP_NUM_THREADS", "1", 1);  // one thread: a seed gives the same run twice
+        if (!launch.yade_py.empty()) ::setenv("POLYROLL_YADE_PY", launch.yade_py.c_str(), 1);
         ::execv(cargs[0], cargs.data());
         ::_exit(127);
     }

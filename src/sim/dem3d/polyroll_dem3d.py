@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
 """polyroll --model dem3d: the experiment's 3D box simulated grain by grain in Yade.
 
-Run non-interactively, one thread, no GUI:
-    yade -j1 -n -x polyroll_dem3d.py IN.json OUTDIR
+polyroll runs it with the Python of Yade's launcher, importing Yade as a library from the folder the
+launcher names (POLYROLL_YADE_PY), one thread (OMP_NUM_THREADS=1):
+    POLYROLL_YADE_PY=/usr/lib/x86_64-linux-gnu/yade-double/py /usr/bin/python3 polyroll_dem3d.py IN.json OUTDIR
+so none of the launcher's servers start (its XMLRPC info server listens on every network interface).
+Through the launcher it runs as well: yade -j1 -n -x polyroll_dem3d.py IN.json OUTDIR.
 IN.json is written by the C++ program (SI units, ramp frame: x down the slope, y along the ramp's
 normal, z the roll axis; the shell's angle is counter-clockwise about +z, so rolling down lowers it).
 OUTDIR receives states.csv, setup.json and, when frames_hz > 0, grains.csv (each written under a
 temporary name, then renamed). stdout carries only `progress <time_s> <x_m>` lines from this script
-(Yade's launcher prints its own banner first). Errors: one line on stderr, exit 1; bad input: exit 2.
+(Yade may print its own lines first: a reader skips them). Errors: one line on stderr, exit 1; bad input: exit 2.
 
 The model: the shell is ONE rigid clump of facets (inside walls and both lids, what the grains touch)
 and small spheres at its outer vertices (what touches the ramp); the ramp is a Yade wall at y = 0.
@@ -20,6 +23,7 @@ import os
 import random
 import sys
 import time
+from contextlib import nullcontext
 
 EDGE_SPHERES_PER_VERTEX = 3  # along z at each outer vertex; the shell's out-of-plane DOFs are blocked anyway
 # Yade turns en = 0 into a zero stiffness (log 0), and a tiny en makes the dashpot too stiff for the
@@ -27,6 +31,7 @@ EDGE_SPHERES_PER_VERTEX = 3  # along z at each outer vertex; the shell's out-of-
 MIN_RESTITUTION = 0.05
 RAMP_MASS_KG = 1e12  # the wall's mass for the contact's reduced mass: effectively immovable
 POUR_GAP = 0.1       # pour lattice spacing = (1 + POUR_GAP) * largest grain diameter
+MAX_SOLID_SHARE = 0.64  # random close packing: more solid than this in the inner prism cannot be poured
 GROW_SHARE = 0.3     # share of settle_time_s spent growing grains that had to start shrunk (dense fills)
 INSIDE_TOL = 0.1     # grains_inside tolerance, in nominal grain radii
 PROGRESS_EVERY_S = 0.25
@@ -35,10 +40,6 @@ COLOR = (0.6, 0.6, 0.6)        # given explicitly: Yade's random colour reseeds 
 
 
 class InputError(Exception):
-    pass
-
-
-class RunError(Exception):
     pass
 
 
@@ -63,33 +64,44 @@ def _field(cfg, path, kind=float, lo=None, hi=None, lo_open=False):
     return node
 
 
-def _points(cfg, path, count):
-    """A list of `count` [x, y] number pairs."""
+def _points(cfg, path, count=None):
+    """`count` [x, y] number pairs, or one pair when count is None."""
     pts = _field(cfg, path, list)
-    ok = len(pts) == count and all(isinstance(p, list) and len(p) == 2 and all(
-        isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in p) for p in pts)
-    if not ok:
-        raise InputError('%s must hold %d [x, y] number pairs' % (path, count))
+    pts = [pts] if count is None else pts
+    if len(pts) != (count or 1) or not all(isinstance(p, list) and len(p) == 2 and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in p) for p in pts):
+        raise InputError('%s must hold %s' % (path, '[x, y]' if count is None else '%d [x, y] pairs' % count))
     return [(float(p[0]), float(p[1])) for p in pts]
 
 
 # IN.json key -> (name used here, lowest, highest, lowest excluded); every key is required.
 NUMBERS = {
-    'gravity_m_s2': ('gravity_m_s2', 0, None, True), 'angle_deg': ('angle_deg', -89, 89, False),
-    'ramp.friction': ('ramp_friction', 0, None, False), 'ramp.restitution': ('ramp_restitution', 0, 1, False),
-    'ramp.length_m': ('ramp_length_m', 0, None, True),
-    'shell.inner_depth_m': ('inner_depth_m', 0, None, True), 'shell.lid_thickness_m': ('lid_thickness_m', 0, None, False),
-    'shell.mass_kg': ('mass_kg', 0, None, True), 'shell.inertia_roll_kg_m2': ('inertia_roll_kg_m2', 0, None, True),
+    'gravity_m_s2': ('gravity_m_s2', 0, None, True),
+    'angle_deg': ('angle_deg', -89, 89, False),
+    'ramp.friction': ('ramp_friction', 0, None, False),
+    'ramp.restitution': ('ramp_restitution', 0, 1, False),
+    'shell.inner_depth_m': ('inner_depth_m', 0, None, True),
+    'shell.lid_thickness_m': ('lid_thickness_m', 0, None, False),
+    'shell.mass_kg': ('mass_kg', 0, None, True),
+    'shell.inertia_roll_kg_m2': ('inertia_roll_kg_m2', 0, None, True),
     'shell.inertia_cross_kg_m2': ('inertia_cross_kg_m2', 0, None, True),
-    'release.angle_rad': ('angle_rad', None, None, False), 'release.tilt_deg': ('tilt_deg', -90, 90, False),
+    'release.angle_rad': ('angle_rad', None, None, False),
+    'release.tilt_deg': ('tilt_deg', -90, 90, False),
     'end_centre_x_m': ('end_centre_x_m', None, None, False),
-    'fill.grain_diameter_m': ('grain_diameter_m', 0, None, True), 'fill.diameter_spread': ('diameter_spread', 0, 0.5, False),
-    'fill.grain_density_kg_m3': ('grain_density_kg_m3', 0, None, True), 'fill.friction': ('grain_friction', 0, None, False),
-    'fill.wall_friction': ('wall_friction', 0, None, False), 'fill.restitution': ('grain_restitution', 0, 1, False),
-    'dem3d.contact_time_s': ('contact_time_s', 0, None, True), 'dem3d.time_step_share': ('time_step_share', 0, 1, True),
-    'dem3d.edge_radius_m': ('edge_radius_m', 0, None, True), 'step_hz': ('step_hz', 0, None, True),
-    'time_limit_s': ('time_limit_s', 0, None, True), 'settle_time_s': ('settle_time_s', 0, None, False),
-    'rest_speed_m_s': ('rest_speed_m_s', 0, None, True), 'rest_time_s': ('rest_time_s', 0, None, False),
+    'fill.grain_diameter_m': ('grain_diameter_m', 0, None, True),
+    'fill.diameter_spread': ('diameter_spread', 0, 0.5, False),
+    'fill.grain_density_kg_m3': ('grain_density_kg_m3', 0, None, True),
+    'fill.friction': ('grain_friction', 0, None, False),
+    'fill.wall_friction': ('wall_friction', 0, None, False),
+    'fill.restitution': ('grain_restitution', 0, 1, False),
+    'dem3d.contact_time_s': ('contact_time_s', 0, None, True),
+    'dem3d.time_step_share': ('time_step_share', 0, 1, True),
+    'dem3d.edge_radius_m': ('edge_radius_m', 0, None, True),
+    'step_hz': ('step_hz', 0, None, True),
+    'time_limit_s': ('time_limit_s', 0, None, True),
+    'settle_time_s': ('settle_time_s', 0, None, False),
+    'rest_speed_m_s': ('rest_speed_m_s', 0, None, True),
+    'rest_time_s': ('rest_time_s', 0, None, False),
     'frames_hz': ('frames_hz', 0, None, False)}
 
 
@@ -109,7 +121,7 @@ def load_config(path):
     c['pivot_vertex'] = _field(cfg, 'pivot_vertex', int, 0, n - 1)
     c['outer'] = _points(cfg, 'shell.outer_vertices_m', n)
     c['inner'] = _points(cfg, 'shell.inner_vertices_m', n)
-    c['centre'] = _points({'c': [_field(cfg, 'release.centre_m', list)]}, 'c', 1)[0]
+    c['centre'] = _points(cfg, 'release.centre_m')[0]
     c['pose'] = _field(cfg, 'release.pose', str)
     if c['pose'] not in ('vertex', 'face'):
         raise InputError('release.pose must be "vertex" or "face"')
@@ -150,6 +162,9 @@ def pour_sites(c, radii, down, rng):
     if n == 0:
         return [], 1.0
     planes, half = edge_planes(c['inner']), c['inner_depth_m'] / 2
+    area = 0.5 * abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(c['inner'], c['inner'][1:] + c['inner'][:1])))
+    if sum(4 / 3 * math.pi * r ** 3 for r in radii) > MAX_SOLID_SHARE * area * 2 * half:
+        raise InputError('fill.grain_count = %d: more solid than random close packing holds in the shell' % n)
     xs, ys = [p[0] for p in c['inner']], [p[1] for p in c['inner']]
     d_max = 2 * max(radii)
     loose = (1 + POUR_GAP) * d_max
@@ -171,7 +186,7 @@ def pour_sites(c, radii, down, rng):
             break
         s *= 0.97
         if s < 0.5 * d_max:
-            raise RunError('fill.grain_count = %d grains do not fit in the shell' % n)
+            raise RuntimeError('fill.grain_count = %d grains do not fit in the shell' % n)
     sites.sort()
     jitter = 0.999 * s * POUR_GAP / (2 * (1 + POUR_GAP))  # keeps neighbours apart at full (shrunk) size
     return [tuple(v + rng.uniform(-jitter, jitter) for v in p) for _, _, p in sites[:n]], s / loose
@@ -188,7 +203,8 @@ def build_scene(c, rng):
 
     def mat(en, mu, density):
         en = max(en, MIN_RESTITUTION)  # et = en: tangential contacts are damped like normal ones
-        return O.materials.append(yade.ViscElMat(tc=tc, en=en, et=en, frictionAngle=math.atan(mu), density=density))
+        return O.materials.append(
+            yade.ViscElMat(tc=tc, en=en, et=en, frictionAngle=math.atan(mu), density=density))
     r_edge, k = c['edge_radius_m'], EDGE_SPHERES_PER_VERTEX
     m_grain = mat(c['grain_restitution'], c['grain_friction'], c['grain_density_kg_m3'])
     m_wall = mat(c['grain_restitution'], c['wall_friction'], 0.0)
@@ -214,6 +230,7 @@ def build_scene(c, rng):
     steps_per_row = max(1, math.ceil(1.0 / (c['step_hz'] * c['time_step_share'] * tc)))
     O.dt = 1.0 / (c['step_hz'] * steps_per_row)
 
+    # The ramp: an infinite plane y = 0 (the run ends at end_centre_x_m, before the ramp's real end).
     ramp = O.bodies.append(utils.wall(0.0, axis=1, sense=1, material=m_ramp, mask=MASK_RAMP, color=COLOR))
     O.bodies[ramp].state.mass = RAMP_MASS_KG
 
@@ -227,7 +244,8 @@ def build_scene(c, rng):
     tris = []
     for j in range(n):
         p, q = inner[j], inner[(j + 1) % n]
-        tris += [(world(p, -half), world(q, -half), world(q, half)), (world(p, -half), world(q, half), world(p, half))]
+        tris += [(world(p, -half), world(q, -half), world(q, half)),
+                 (world(p, -half), world(q, half), world(p, half))]
     for z in (-half, half):
         tris += [(world(inner[0], z), world(inner[j], z), world(inner[j + 1], z)) for j in range(1, n - 1)]
     members = [utils.facet(t, fixed=False, material=m_wall, mask=MASK_INSIDE, color=COLOR) for t in tris]
@@ -277,27 +295,34 @@ def settle(c, sc):
     """Pour: the shell held at the release pose, the grains fall and settle (growing first if shrunk).
     Returns (time used, settled)."""
     from yade import O
-    grains, radii, shrink = sc['grains'], sc['radii'], sc['shrink']
+    grains, shrink = sc['grains'], sc['shrink']
     if not grains:
         return 0.0, True
     t_grow = GROW_SHARE * c['settle_time_s'] if shrink < 1 else 0.0
     r_in = max(math.hypot(*p) for p in c['inner'])
     t_min = t_grow + math.sqrt(4 * r_in / c['gravity_m_s2'])  # a fall across the shell, at least
     steps, t, mass = sc['steps_per_row'], 0.0, sum(O.bodies[i].state.mass for i in grains)
-    while t < c['settle_time_s']:
+    settled = False
+    while t < c['settle_time_s'] and not settled:
         advance(steps)
         t += steps * O.dt
         if t_grow > 0:
-            f = shrink + (1 - shrink) * min(1.0, t / t_grow)
-            for i, r in zip(grains, radii):
-                O.bodies[i].shape.radius = r * f
-            sc['collider']()  # the bounds follow the new radii
+            grow(sc, min(1.0, t / t_grow))
         ke = sum(O.bodies[i].state.mass * O.bodies[i].state.vel.squaredNorm() for i in grains)
         if not math.isfinite(ke):
-            raise RunError('the pour blew up (non-finite grain velocity)')
-        if t >= t_min and ke < mass * c['rest_speed_m_s'] ** 2:  # rms grain speed below rest speed
-            return t, True
-    return t, False
+            raise RuntimeError('the pour blew up (non-finite grain velocity)')
+        settled = t >= t_min and ke < mass * c['rest_speed_m_s'] ** 2  # rms grain speed below rest speed
+    grow(sc, 1.0)  # full size whatever happened (settle_time_s = 0 leaves no time to grow)
+    return t, settled
+
+
+def grow(sc, share):
+    """Grains from their pour size (share 0) to their full size (share 1)."""
+    from yade import O
+    f = sc['shrink'] + (1 - sc['shrink']) * share
+    for i, r in zip(sc['grains'], sc['radii']):
+        O.bodies[i].shape.radius = r * f
+    sc['collider']()  # the bounds follow the new radii
 
 
 def balance_turn(c, sc):
@@ -355,7 +380,7 @@ class Tracker:
 
     def __init__(self, c, sc, angle0):
         from yade import O
-        self.c, self.sc, self.O = c, sc, O
+        self.c = c
         th = math.radians(c['angle_deg'])
         self.g = (c['gravity_m_s2'] * math.sin(th), -c['gravity_m_s2'] * math.cos(th))
         self.q0 = O.bodies[sc['clump']].state.ori.conjugate()
@@ -363,10 +388,11 @@ class Tracker:
         self.planes = edge_planes(c['inner'])
         self.tol = INSIDE_TOL * c['grain_diameter_m'] / 2
         self.pe0 = None
+        self.shell = O.bodies[sc['clump']].state
+        self.grains = [O.bodies[i].state for i in sc['grains']]  # cached: a lookup per grain per row is slow
 
     def row(self):
-        O, c = self.O, self.c
-        st = O.bodies[self.sc['clump']].state
+        c, st = self.c, self.shell
         q = st.ori * self.q0  # rotation since t = 0, about z only (X, Y blocked)
         rel = 2 * math.atan2(q[2], q[3])
         self.turn += (rel - self.turn + math.pi) % (2 * math.pi) - math.pi  # unwrap
@@ -375,8 +401,7 @@ class Tracker:
         ke = 0.5 * c['mass_kg'] * (vx * vx + vy * vy) + 0.5 * c['inertia_roll_kg_m2'] * w * w
         pe = -c['mass_kg'] * (self.g[0] * x + self.g[1] * y)
         inside, half = 0, c['inner_depth_m'] / 2 + self.tol
-        for i in self.sc['grains']:
-            b = O.bodies[i].state
+        for b in self.grains:
             p, v = b.pos, b.vel
             ke += 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia[0] * b.angVel.squaredNorm()
             pe -= b.mass * (self.g[0] * p[0] + self.g[1] * p[1])
@@ -386,17 +411,8 @@ class Tracker:
             self.pe0 = pe
         vals = (x, y, angle, vx, vy, w, ke, pe - self.pe0)
         if not all(math.isfinite(v) for v in vals):
-            raise RunError('the simulation blew up (non-finite shell state)')
+            raise RuntimeError('the simulation blew up (non-finite shell state)')
         return vals + (inside,)
-
-    def grain_rows(self, t):
-        for k, i in enumerate(self.sc['grains']):
-            b = self.O.bodies[i]
-            yield (t, k) + tuple(b.state.pos) + (b.shape.radius,)
-
-
-def fmt(v):
-    return repr(float(v)) if isinstance(v, float) else str(v)
 
 
 def simulate(c, sc, angle0, states, frames):
@@ -408,11 +424,12 @@ def simulate(c, sc, angle0, states, frames):
     while True:
         t = k / c['step_hz']
         row = tr.row()
-        states.write(','.join(fmt(v) for v in (t,) + row) + '\n')
+        states.write(','.join(map(repr, (t,) + row)) + '\n')
         if x0 is None:
             x0 = row[0]
         if frames and t >= next_frame - 1e-9:
-            frames.writelines(','.join(fmt(v) for v in r) + '\n' for r in tr.grain_rows(t))
+            frames.writelines('%r,%d,%r,%r,%r,%r\n' % ((t, j) + tuple(b.state.pos) + (b.shape.radius,))
+                              for j, b in enumerate(O.bodies[i] for i in sc['grains']))
             next_frame += 1.0 / c['frames_hz']
         if t >= next_progress - 1e-9:
             print('progress %r %r' % (t, row[0] - x0), flush=True)
@@ -433,19 +450,21 @@ def simulate(c, sc, angle0, states, frames):
 
 
 class AtomicFile:
-    """A file written under a temporary name in its folder and renamed into place by commit()."""
+    """A file written under a temporary name in its folder: renamed into place if the block succeeds,
+    removed if it raises."""
 
     def __init__(self, path):
-        self.path, self.tmp = path, path + '.tmp-%d' % os.getpid()
+        self.path, self.tmp = path, '%s.tmp-%d' % (path, os.getpid())
+
+    def __enter__(self):
         self.f = open(self.tmp, 'w')
+        return self.f
 
-    def commit(self):
+    def __exit__(self, kind, *_):
         self.f.close()
-        os.replace(self.tmp, self.path)
-
-    def discard(self):
-        self.f.close()
-        if os.path.exists(self.tmp):
+        if kind is None:
+            os.replace(self.tmp, self.path)
+        else:
             os.remove(self.tmp)
 
 
@@ -454,40 +473,29 @@ def run(in_path, out_dir):
     os.makedirs(out_dir, exist_ok=True)
     import yade.config
     from yade import O
-    rng = random.Random(c['seed'])  # private: Yade reseeds Python's global generator
-    sc = build_scene(c, rng)
+    sc = build_scene(c, random.Random(c['seed']))  # private generator: Yade reseeds the global one
     settle_time, settled = settle(c, sc)
     correction_deg, angle0 = release(c, sc)
-    states = AtomicFile(os.path.join(out_dir, 'states.csv'))
-    frames = AtomicFile(os.path.join(out_dir, 'grains.csv')) if c['frames_hz'] > 0 else None
-    try:
-        states.f.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
+    with AtomicFile(os.path.join(out_dir, 'states.csv')) as states, \
+            (AtomicFile(os.path.join(out_dir, 'grains.csv')) if c['frames_hz'] > 0 else nullcontext()) as frames:
+        states.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
         if frames:
-            frames.f.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
-        end = simulate(c, sc, angle0, states.f, frames.f if frames else None)
-    except BaseException:
-        for f in (states, frames):
-            if f:
-                f.discard()
-        raise
-    states.commit()
-    if frames:
-        frames.commit()
-    setup = {'grains': len(sc['grains']),
-             'fill_mass_kg': sum(O.bodies[i].state.mass for i in sc['grains']),
+            frames.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
+        end = simulate(c, sc, angle0, states, frames)
+    setup = {'grains': len(sc['grains']), 'fill_mass_kg': sum(O.bodies[i].state.mass for i in sc['grains']),
              'settle_time_s': settle_time, 'settled': settled, 'balance_correction_deg': correction_deg,
              'time_step_s': O.dt, 'yade_version': str(yade.config.version),
              'cpu_time_s': time.process_time(), 'end': end}
-    out = AtomicFile(os.path.join(out_dir, 'setup.json'))
-    json.dump(setup, out.f, indent=2)
-    out.f.write('\n')
-    out.commit()
+    with AtomicFile(os.path.join(out_dir, 'setup.json')) as f:
+        f.write(json.dumps(setup, indent=2) + '\n')
 
 
 def main(argv):
     if len(argv) != 3:
-        sys.stderr.write('usage: yade -j1 -n -x %s IN.json OUTDIR\n' % os.path.basename(argv[0]))
+        sys.stderr.write('usage: POLYROLL_YADE_PY=DIR python3 %s IN.json OUTDIR\n' % os.path.basename(argv[0]))
         return 2
+    if os.environ.get('POLYROLL_YADE_PY'):
+        sys.path.insert(0, os.environ['POLYROLL_YADE_PY'])
     try:
         run(argv[1], argv[2])
     except InputError as e:
