@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """The figures of polyroll figures, drawn from a small checked-in sweep (tests/sweep_figures/: a
 results table edited by hand to hold every case, the context the C++ side passes, and one short run
-folder): no text leaves the canvas, and each figure's CSV holds the numbers it plots.
+folder): no text leaves the canvas or overlaps other text, and each figure's CSV holds the numbers it
+plots.
 
 The fixture's results.csv is a real draft sweep of octagon-small (r = 0.125 and 0.375, 10 to 16 deg,
-3 seeds) with two edits: two seeds at r = 0.125, 12 deg stop after rolling (1.9 and 2.1 m), so the
-third behaviour spans two angles and has a fit; one seed at r = 0.125, 16 deg runs away (1.2 m/s).
+3 seeds) with three edits: two seeds at r = 0.125, 12 deg and one at 14 deg stop after rolling (1.9,
+2.1 and 2.3 m), so the third behaviour spans three angles and has a fit (two angles would not: a line
+through two always fits); one seed at r = 0.125, 16 deg runs away (1.2 m/s).
 
 Run by ctest ("sweep figures: ..."); exit 77 (skipped) when this Python has no matplotlib.
   check_sweep_figures.py SOURCE_DIR
@@ -70,8 +72,12 @@ def check_d(module, fig, rows, table, csv_rows, check):
     import numpy as np
     slope, intercept = np.polyfit([a for a, _ in stopped], [d for _, d in stopped], 1)
     fit = points(low["simulation_fit"]) if "simulation_fit" in low else []
-    check(same_points(fit, [(10, slope * 10 + intercept), (12, slope * 12 + intercept)]),
-          f"D: the fit at r = 0.125 {fit} is not the least squares over its 5 stops after rolling")
+    check(same_points(fit, [(10, slope * 10 + intercept), (14, slope * 14 + intercept)]),
+          f"D: the fit at r = 0.125 {fit} is not the least squares over its 6 stops after rolling")
+    # Stops at two angles only (the runs at 14 deg left out) draw no fit: R^2 1.00 through two points.
+    runs = module.sweep_runs([t for t in rows if t["fill_ratio"] == "0.125" and t["angle_deg"] != "14"],
+                             {t["run_id"]: 2.539 for t in rows})
+    check(module.third_behaviour_fit(runs) is None, "D: a fit is drawn from stops at only two angles")
     check("paper_fit" not in low and "paper_fit" in by_panel.get("r = 0.375", {}),
           "D: the experiment's line is not drawn in exactly the panel matching fig2a (r = 0.375)")
     if "paper_fit" in by_panel.get("r = 0.375", {}):
@@ -80,6 +86,24 @@ def check_d(module, fig, rows, table, csv_rows, check):
     paper_rows = [(r["angle_deg"], r["distance_m"]) for r in csv_rows if r["element"] == "paper_fit"]
     check(same_points(paper_rows, [(11.0, 0.6 * 11 - 6.61), (15.2, 0.6 * 15.2 - 6.61)]), "D: the CSV's paper_fit rows")
     check(close(axes[0].get_ylim()[1], 1.06 * 2.539), "D: the y axis does not reach the ramp's end (2.539 m)")
+
+
+def overlapping_texts(fig):
+    """Pairs of drawn texts whose boxes overlap (a panel's title running into the next one's), by text.
+    Tick labels are left out: matplotlib places those, and a legend's texts are its own layout."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    undrawn = canvas_check.undrawn_tick_labels(fig)
+    # Only axes that draw their axis: asking a hidden one (the legend row's) for its tick labels makes them.
+    ticks = {id(t) for ax in fig.axes if ax.axison for t in ax.get_xticklabels() + ax.get_yticklabels()}
+    in_legends = {id(t) for leg in fig.findobj(lambda a: isinstance(a, matplotlib.legend.Legend))
+                  for t in leg.get_texts() + [leg.get_title()]}
+    texts = [t for t in fig.findobj(matplotlib.text.Text)
+             if t.get_visible() and t.get_text().strip() and id(t) not in undrawn | ticks | in_legends]
+    boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in texts]
+    return [(a, b) for i, (a, box_a) in enumerate(boxes) for b, box_b in boxes[i + 1:]
+            if box_a.x0 < box_b.x1 - 0.5 and box_b.x0 < box_a.x1 - 0.5 and box_a.y0 < box_b.y1 - 0.5
+            and box_b.y0 < box_a.y1 - 0.5]
 
 
 def check_vt(fig, csv_rows, check):
@@ -125,6 +149,11 @@ def main():
     module = load(script, "polyroll_figures")
     # The canvas check is polyroll validate's own (one check for every figure the script draws).
     canvas = load(os.path.join(source_dir, "tests", "check_validate_figures.py"), "check_validate_figures")
+    global canvas_check, matplotlib
+    canvas_check = canvas
+    import matplotlib
+    import matplotlib.legend
+    import matplotlib.text
     fixture = os.path.join(source_dir, "tests", "sweep_figures")
     results, context_path, run_dir = (os.path.join(fixture, n) for n in ("results.csv", "context.json", "run"))
     rows = module.read_rows(results)
@@ -148,6 +177,32 @@ def main():
         outside, tight_inside = canvas.texts_outside(fig)
         check(not outside, f"{name}: text outside the canvas: {outside}")
         check(tight_inside, f"{name}: the tight bounding box leaves the canvas")
+        overlaps = overlapping_texts(fig)
+        check(not overlaps, f"{name}: texts overlap: {overlaps}")
+    # The overlap check must catch two panels' long titles running into each other, or it proves nothing.
+    fig, (left, right) = plt.subplots(1, 2, figsize=(4, 2))
+    left.set_title("a title long enough to run into the next panel's", loc="left")
+    right.set_title("the next panel's title", loc="left")
+    check(overlapping_texts(fig), "overlapping titles are not caught by the check")
+    plt.close(fig)
+    # A small sweep (2 seeds, 12 and 14 deg) whose three panels differ in every facet, as a user drew
+    # one: long panel titles side by side, none running into the next.
+    base = [t for t in rows if t["fill_ratio"] == "0.125" and t["angle_deg"] in ("12", "14") and t["seed"] in ("1", "2")]
+    small = []
+    for k, (model, fidelity, polygon, sides, release, material) in enumerate(
+            (("grains", "standard", "octagon-small", "8", "vertex", "bb"),
+             ("segments", "draft", "hexagon-small", "6", "face", "rice"),
+             ("rigid", "fine", "hexagon-large", "6", "vertex", "peas"))):
+        small += [dict(t, run_id=f"{t['run_id']}{k}", model=model, fidelity=fidelity, polygon=polygon, sides=sides,
+                       release=release, material=material) for t in base]
+    lengths = {t["run_id"]: 2.539 for t in small}
+    for name, fig in (("D", module.d_vs_angle_sweep([dict(t) for t in small], lengths, [])[0]),
+                      ("Vt", module.terminal_velocity_sweep([dict(t) for t in small])[0]),
+                      ("map", module.behaviour_map_sweep([dict(t) for t in small])[0])):
+        check(not overlapping_texts(fig), f"small sweep {name}: texts overlap: {overlapping_texts(fig)}")
+        outside, _ = canvas.texts_outside(fig)
+        check(not outside, f"small sweep {name}: text outside the canvas: {outside}")
+        plt.close(fig)
     with tempfile.TemporaryDirectory() as out:
         done = subprocess.run([sys.executable, script, "sweep", results, out, "--context", context_path,
                                "--trajectory", run_dir, "--format", "png,svg"], capture_output=True, text=True)

@@ -155,6 +155,32 @@ def check_map_csv(rows, failures):
           f"map csv: the experiment's band: {band}", failures)
 
 
+def check_measured_only(module, script, scorecard, results_path, failures):
+    """An observation holding only a lab's measured numbers (terminal_velocity_m_s; no behaviour, as
+    assets/experiment.json's format allows) is drawn in the behaviour map with what was measured: the
+    script raised KeyError: 'behaviour' and drew nothing."""
+    measured = dict(scorecard["observations"][1], id="my-lab-vt", source="my lab: Vt only",
+                    experiment={"behaviour_share": 1.0},
+                    checks=[{"check": "terminal velocity", "experiment": "0.3 m/s (+/- 0.05)", "simulation": "",
+                             "agree": True, "difference": 0.01, "unit": "m/s", "by": "+0.01 m/s"}])
+    doc = dict(scorecard, observations=[measured])
+    with tempfile.TemporaryDirectory() as out:
+        path = os.path.join(out, "scorecard.json")
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        done = subprocess.run([sys.executable, script, "validate", path, results_path, out], capture_output=True,
+                              text=True)
+        check(done.returncode == 0, f"measured only: the script failed: {done.stderr}", failures)
+        check(os.path.exists(os.path.join(out, "behaviour_map.png")), "measured only: no behaviour map drawn", failures)
+        if os.path.exists(os.path.join(out, "behaviour_map.csv")):
+            rows = read_csv(os.path.join(out, "behaviour_map.csv"))
+            experiment = [r for r in rows if r["row"] == "experiment"]
+            check(experiment and all(r["shown"] == "measured only" for r in experiment),
+                  f"measured only: the experiment row {experiment}", failures)
+            check(all(r["agreeing"] == "" for r in rows if r["row"] != "experiment"),
+                  "measured only: cells count seeds agreeing with a behaviour nobody observed", failures)
+
+
 def main():
     source_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..")
     if not all(importlib.util.find_spec(m) for m in ("matplotlib", "numpy")):
@@ -185,6 +211,7 @@ def main():
         if names == want:
             check_d_csv(read_csv(os.path.join(out, "d_vs_angle-band.csv")), lines, fixture_rows, failures)
             check_map_csv(read_csv(os.path.join(out, "behaviour_map.csv")), failures)
+    check_measured_only(module, script, scorecard, results_path, failures)
     for f in failures:
         print("FAILED:", f)
     print("ok" if not failures else f"{len(failures)} check(s) failed")

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
 #include <sys/wait.h>
 
 #include <box2d/box2d.h>
@@ -73,6 +75,70 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
     }
 }
 
+TEST_CASE("one vocabulary: --jobs 1 to 1024 everywhere, no --param alias, no --model for compare", "[cli][bad-input]") {
+    // Each refused with one line and exit 2 before any run.
+    const fs::path out = scratch("vocabulary");
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"sweep --jobs 0 --out " + out.string(), {"--jobs 0 is out of range (allowed: 1 to 1024)"}},
+        {"tradeoff --jobs 0 --out " + out.string(), {"--jobs 0 is out of range (allowed: 1 to 1024)"}},
+        {"validate --jobs 0 --out " + out.string(), {"--jobs 0 is out of range (allowed: 1 to 1024)"}},
+        {"calibrate --params ramp.friction --jobs 0 --out " + out.string(),
+         {"--jobs 0 is out of range (allowed: 1 to 1024)"}},
+        // calibrate's --param was --set's alias beside --params, and its errors named --set.
+        {"calibrate --param ramp.friction --out " + out.string(), {"unknown flag '--param'; did you mean '--params'?"}},
+        {"validate --param ramp.friction=0.5 --out " + out.string(), {"unknown flag '--param'"}},
+        // compare runs every model: a --model flag would be listed and ignored.
+        {"compare --model rigid --out " + out.string(), {"unknown flag '--model'", "see polyroll compare --help"}},
+    };
+    for (const Case& c : cases) {
+        const Result r = run_polyroll(c.args);
+        INFO("polyroll " << c.args << " -> " << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(line_count(r.out) == 1);
+        for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
+        CHECK(!fs::exists(out));
+    }
+    const Result compare_help = run_polyroll("compare --help");
+    CHECK(compare_help.out.find("--model") == std::string::npos);
+    CHECK(compare_help.out.find("--sides") != std::string::npos);
+    // sweep's --seed takes a list and --seeds a count: each one's help says which.
+    const Result sweep_help = run_polyroll("sweep --help");
+    CHECK(sweep_help.out.find("a LIST of seeds") != std::string::npos);
+    CHECK(sweep_help.out.find("a COUNT: N seeds per point") != std::string::npos);
+}
+
+TEST_CASE("run prints lines a terminal shows whole and says what its terminal velocity averages", "[cli]") {
+    // The auto model's "why" was one line of 250-600 characters: now a line or two, wrapped.
+    for (const std::string args : {"--fill 0 --angle 30 --time-limit 3", "--time-limit 0.5"}) {
+        const Result r = run_polyroll("run " + args);
+        INFO("polyroll run " << args << " -> " << r.out);
+        REQUIRE(r.exit_code == 0);
+        std::istringstream lines(r.out);
+        std::size_t why_lines = 0;
+        bool in_why = false;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("  why ", 0) == 0) in_why = true;
+            else if (line.rfind("    ", 0) != 0) in_why = false;
+            if (in_why) CHECK(line.size() <= 100);
+            why_lines += in_why;
+        }
+        CHECK(why_lines >= 1);
+        CHECK(why_lines <= 2);
+    }
+    // A shell that slides to the end has no face rhythm: its terminal velocity comes from the last
+    // tenth of the run, said so, not "(mean over the last 0 faces)".
+    const Result slide = run_polyroll("run --sides 3 --fill 1 --angle 85");
+    INFO(slide.out);
+    REQUIRE(slide.exit_code == 0);
+    CHECK(slide.out.find("last 0 faces") == std::string::npos);
+    CHECK(slide.out.find("m/s (mean speed over the last tenth of the run: fewer than two face impacts)") !=
+          std::string::npos);
+}
+
 TEST_CASE("bench --auto refuses a --tilt one of its 16 shells cannot take before it runs any", "[cli][bad-input]") {
     // 25 deg fits the hexagon (its bench rows used to print) but not the octagon on the 5 degree
     // ramp: the table used to stop half-way there.
@@ -95,7 +161,6 @@ TEST_CASE("a mistyped or missing command is named with the closest one, and poly
         {"rnu", "unknown command 'rnu'; did you mean 'run'?"},
         {"swep --fill 0.5", "unknown command 'swep'; did you mean 'sweep'?"},
         {"frobnicate", "unknown command 'frobnicate' (allowed: run, presets,"},
-        {"", "a command is required (allowed: run,"},
         {"--sides 6", "a command is required before '--sides'"},
         {"help rnu", "unknown command 'rnu'; did you mean 'run'?"},
     };
@@ -116,6 +181,11 @@ TEST_CASE("a mistyped or missing command is named with the closest one, and poly
     CHECK(help.out.find("0 to 89 degrees (default: 20)") != std::string::npos);
     CHECK(help.out.find("from 0 to 1 (default: 0.25)") != std::string::npos);
     CHECK(run_polyroll("help").out == run_polyroll("--help").out);
+    // Bare polyroll asks what the tool does: the help, exit 0, not a refusal.
+    const Result bare = run_polyroll("");
+    CHECK(bare.exit_code == 0);
+    CHECK(bare.out == run_polyroll("--help").out);
+    CHECK(bare.out.find("Subcommands:") != std::string::npos);
 }
 
 TEST_CASE("the real-time factor keeps significant digits for slow runs", "[cli]") {

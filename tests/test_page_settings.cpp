@@ -79,7 +79,10 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(refusal("angle=95").rfind("angle=95: out of range (allowed: ", 0) == 0);
     CHECK(refusal("angle=").rfind("angle=: not a number", 0) == 0);
     CHECK(refusal("frames=0") == "frames=0: out of range (allowed: 1 to 10000000)");
-    CHECK(refusal("frames=1.5") == "frames=1.5: out of range (allowed: 1 to 10000000)");
+    // Not a whole number is said as such, not as "out of range".
+    CHECK(refusal("frames=1.5") == "frames=1.5: not a whole number (allowed: 1 to 10000000)");
+    CHECK(refusal("frames=abc") == "frames=abc: not a whole number (allowed: 1 to 10000000)");
+    CHECK(refusal("frames=99999999") == "frames=99999999: out of range (allowed: 1 to 10000000)");
     CHECK(refusal("paused=yes") == "paused=yes: unknown (allowed: 1, 0, or no value)");
     const std::string preset = refusal("preset=nonagon");
     CHECK(preset.rfind("preset=nonagon: unknown (allowed: default, ", 0) == 0);
@@ -89,6 +92,10 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(material.find("rice") != std::string::npos);
     CHECK(refusal("colour=red") ==
           "colour: unknown setting in the address (allowed: preset, sides, fill, material, angle, frames, paused, bench)");
+    // A key given twice is refused naming it, whichever value came second (the page would show one of them).
+    CHECK(refusal("fill=0.5&fill=0.3") == "fill=0.3: fill is given twice in the address (allowed: each setting once)");
+    CHECK(refusal("paused&sides=6&paused=0") ==
+          "paused=0: paused is given twice in the address (allowed: each setting once)");
     // Every refusal names its value; a good query is not refused.
     CHECK(refusal("preset=race&sides=8").empty());
 }

@@ -183,6 +183,9 @@ TEST_CASE("polyroll render refuses bad flags with one line, exit 2 and nothing w
         {"--slow 0", {"--slow 0", "1 to 100"}},
         {"--color-by mood", {"--color-by mood", "material, speed"}},
         {"--video /nonexistent-folder/x.mp4", {"/nonexistent-folder", "does not exist"}},
+        // Checked before any frame is drawn, not found by ffmpeg after them all.
+        {"--video x.txt", {"--video x.txt", "not a video format .txt", ".mp4, .mkv or .mov"}},
+        {"--video x", {"--video x", "no extension", ".mp4, .mkv or .mov"}},
         {"--fill 2", {"fill.ratio = 2", "0 to 1"}},
     };
     for (const Case& c : cases) {
@@ -250,6 +253,27 @@ TEST_CASE("render with --video but no ffmpeg says how to get it and still writes
     CHECK(fs::exists(base / "f" / frame_file_name(1)));
     CHECK(fs::exists(base / "f" / "summary.json"));
     CHECK(!fs::exists(base / "v.mp4"));
+}
+
+TEST_CASE("render --video may go into the --out folder the render creates", "[render][cli]") {
+    // frames/x.mp4 with --out frames was refused because frames/ did not exist yet. Without
+    // ffmpeg on PATH the render runs and says so (exit 1), which shows the video's folder was accepted.
+    const fs::path base = scratch("video-in-out");
+    const Cli r = run_cli("render --time-limit 0.1 --size 64x36 --hold 0 --out " + (base / "f").string() +
+                              " --video " + (base / "f" / "v.mp4").string(),
+                          "env PATH=/nonexistent");
+    INFO(r.out);
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("does not exist") == std::string::npos);
+    CHECK(r.out.find("ffmpeg is not installed") != std::string::npos);
+    CHECK(fs::exists(base / "f" / frame_file_name(1)));
+    // A folder that is neither --out nor existing is still refused, before anything is written.
+    const Cli other = run_cli("render --time-limit 0.1 --out " + (base / "g").string() + " --video " +
+                              (base / "h" / "v.mp4").string());
+    CHECK(other.exit_code == 2);
+    CHECK(other.out.find("does not exist (allowed: an existing folder or the --out folder)") != std::string::npos);
+    CHECK(!fs::exists(base / "g"));
+    fs::remove_all(base);
 }
 
 TEST_CASE("polyroll render plays every model: the reduced models' frames turn the polygon as they compute", "[render][cli][models]") {

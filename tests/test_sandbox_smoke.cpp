@@ -182,4 +182,22 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
         CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
         CHECK_THAT(r.out, Catch::Contains("allowed") || Catch::Contains("needs"));
     }
+    // What CLI11 itself refuses reads in the program's words too, naming the value and what is allowed,
+    // as polyroll's flags do ("Could not convert: --ui-scale = abc" before).
+    struct Case {
+        std::string args, line;
+    };
+    for (const Case& c : {Case{"--ui-scale abc", "polyroll-sandbox: --ui-scale abc: not a number (allowed: 0.75 to 2.5) "
+                                                 "(see polyroll-sandbox --help)\n"},
+                          Case{"--frames many", "polyroll-sandbox: --frames many: not a whole number (allowed: 1 to "
+                                                "10000000) (see polyroll-sandbox --help)\n"},
+                          Case{"--theme", "polyroll-sandbox: --theme needs a value (allowed: projector, dark) (see "
+                                          "polyroll-sandbox --help)\n"},
+                          Case{"--ui-scal 2", "polyroll-sandbox: unknown flag '--ui-scal'; did you mean '--ui-scale'? "
+                                              "(see polyroll-sandbox --help)\n"}}) {
+        INFO(c.args);
+        const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + c.args);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out == c.line);
+    }
 }

@@ -184,15 +184,23 @@ TEST_CASE("the table writer only ever replaces the table whole, and no row waits
         CHECK_FALSE(t.had_partial_line);
         // A second writer is refused while this one holds the table.
         CHECK_THROWS_AS(TableWriter(path, header, false), InputError);
+        CHECK(fs::exists(path.string() + ".lock"));  // the refused writer leaves the holder's lock alone
         w.append("2,c,failed,0.1\n");
         w.close_sorted();
         CHECK(read_table(path).rows.size() == 3);
+        // Closed, the lock file goes: an empty results.csv.lock left behind read as a sweep still running.
+        CHECK_FALSE(fs::exists(path.string() + ".lock"));
     }
     // Reopened with drop_failed, the failed row goes (to be run again).
     TableWriter again(path, header, true);
     CHECK(again.existing_rows().size() == 2);
     again.close_sorted();
     CHECK(read_table(path).rows.size() == 2);
+    {
+        // Left without close_sorted (an exception on the way out), the lock file goes too.
+        TableWriter dropped(path, header, false);
+    }
+    CHECK_FALSE(fs::exists(path.string() + ".lock"));
     // No temporaries are left beside the table.
     for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp-") == std::string::npos);
     fs::remove_all(dir);

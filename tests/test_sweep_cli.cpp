@@ -102,6 +102,11 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         {"--jobs two --out " + out.string(), {"--jobs two: not a whole number", "see polyroll sweep --help"}},
         {"--seeds 0 --out " + out.string(), {"--seeds 0 is out of range (allowed: 1 to 100000)"}},
         {"--force --out " + out.string(), {"unknown flag '--force'"}},
+        // --jobs 0 refused as tradeoff refuses it, not read as "all cores".
+        {"--jobs 0 --out " + out.string(), {"--jobs 0 is out of range (allowed: 1 to 1024)", "see polyroll sweep --help"}},
+        {"--jobs 1025 --out " + out.string(), {"--jobs 1025 is out of range (allowed: 1 to 1024)"}},
+        // One name for the field flag: --param was an alias of --set.
+        {"--param shell.depth_m=0.05 --out " + out.string(), {"unknown flag '--param'"}},
     };
     for (const Case& c : cases) {
         const Result r = shell(exe + " sweep " + c.args);
@@ -176,6 +181,8 @@ TEST_CASE("sweep: the grid and its time echoed first, lists out of order run asc
     const std::string table = read_file(out / "results.csv");
     REQUIRE(table.find(",12,") != std::string::npos);
     CHECK(table.find(",5,") < table.find(",12,"));
+    // Nothing but the sweep's files is left: an empty results.csv.lock read as a sweep still running.
+    CHECK_FALSE(fs::exists(out / "results.csv.lock"));
     fs::remove_all(out);
 
     // A plan whose points cannot run (written by another version, or edited): run from the folder, every run

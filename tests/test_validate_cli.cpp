@@ -167,3 +167,33 @@ TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing wri
     }
     fs::remove_all(scratch);
 }
+
+TEST_CASE("validate: an observation holding only a lab's terminal velocity is scored and drawn", "[validate][cli]") {
+    // assets/experiment.json's format allows a measured number alone, with no behaviour; the figure
+    // script raised KeyError: 'behaviour' after a right scorecard and drew nothing, exit 1.
+    if (!have_matplotlib()) {
+        WARN("no matplotlib for /usr/bin/python3: the figures are not drawn");
+        return;
+    }
+    const fs::path scratch = polyroll::test::scratch_dir("validate-measured", true);
+    const fs::path obs = write_observations(scratch, R"({
+  "observations": [
+    { "id": "my-lab-vt", "source": "my lab",
+      "scene": { "shell": "hexagon-small", "fill": { "ratio": 0.25, "material": "bb" }, "ramp": { "preset": "air-track", "angle_deg": 20 } },
+      "observed": { "terminal_velocity_m_s": 0.3 },
+      "tolerance": { "terminal_velocity_m_s": 0.1 } }
+  ]})"), out = scratch / "out";
+    const auto r = run_command(exe + " validate --observations " + obs.string() +
+                               " --seeds 2 --fidelity draft --time-limit 1.5 --jobs 2 -q --out " + out.string());
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("terminal velocity") && !Catch::Contains("Traceback"));
+    for (const char* ext : {".png", ".svg", ".csv"}) {
+        const fs::path f = out / "figures" / (std::string("behaviour_map") + ext);
+        CHECK(fs::exists(f));
+        CHECK_THAT(r.out, Catch::Contains("figure     " + f.string()));
+    }
+    // The experiment's row says it saw numbers, not a behaviour.
+    CHECK_THAT(read_file(out / "figures" / "behaviour_map.csv"), Catch::Contains("measured only"));
+    fs::remove_all(scratch);
+}

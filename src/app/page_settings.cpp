@@ -82,6 +82,7 @@ std::string page_query_keys() { return "preset, sides, fill, material, angle, fr
 PageSettings parse_page_query(std::string_view query) {
     if (!query.empty() && query.front() == '?') query.remove_prefix(1);
     PageSettings p;
+    std::vector<std::string> seen;  // the keys read so far
     while (!query.empty()) {
         const size_t amp = query.find('&');
         const std::string_view pair = query.substr(0, amp);
@@ -90,6 +91,11 @@ PageSettings parse_page_query(std::string_view query) {
         const size_t eq = pair.find('=');
         const std::string key = url_decode(pair.substr(0, eq));
         const std::string value = eq == std::string_view::npos ? std::string{} : url_decode(pair.substr(eq + 1));
+        // ?fill=0.5&fill=0.3 would keep one value silently: which one the page shows is a guess, so say so.
+        if (std::find(seen.begin(), seen.end(), key) != seen.end())
+            throw InputError(fmt::format("{}={}: {} is given twice in the address (allowed: each setting once)", key,
+                                         value, key));
+        seen.push_back(key);
         if (key == "preset") {
             const std::vector<std::string> names = sandbox_preset_names();
             if (std::find(names.begin(), names.end(), value) == names.end())
@@ -108,7 +114,10 @@ PageSettings parse_page_query(std::string_view query) {
             p.material = value;
         } else if (key == "frames") {
             const std::optional<double> v = number_from(value);
-            if (!v || *v != std::floor(*v) || *v < 1 || *v > static_cast<double>(kMaxPageFrames))
+            if (!v || *v != std::floor(*v))
+                throw InputError(
+                    fmt::format("frames={}: not a whole number (allowed: 1 to {})", value, kMaxPageFrames));
+            if (*v < 1 || *v > static_cast<double>(kMaxPageFrames))
                 throw InputError(fmt::format("frames={}: out of range (allowed: 1 to {})", value, kMaxPageFrames));
             p.frames = static_cast<long>(*v);
         } else if (key == "paused") {

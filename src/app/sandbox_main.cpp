@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <regex>
 #include <utility>
@@ -15,6 +16,7 @@
 #include <imgui.h>
 
 #include "app/divergence.h"
+#include "cli/parse_errors.h"
 #include "app/export_files.h"
 #include "app/headless_fallback.h"
 #include "app/lane_set.h"
@@ -517,7 +519,18 @@ int sandbox_main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
+        // In the program's words, as polyroll's flags answer ("--ui-scale abc: not a number (allowed: 0.75 to
+        // 2.5)"), not CLI11's "Could not convert: --ui-scale = abc".
+        const std::map<std::string, std::string> allowed = {
+            {"--ui-scale", fmt::format("{:g} to {:g}", kUiScaleMin, kUiScaleMax)},
+            {"--frames", fmt::format("1 to {}", kMaxFrames)},
+            {"--size", "WIDTHxHEIGHT, 640..7680 by 480..4320, e.g. 1280x800"},
+            {"--preset", presets_list},
+            {"--theme", "projector, dark"},
+            {"--color-by", "material, speed"},
+            {"--colour-by", "material, speed"}};
+        fmt::print(stderr, "polyroll-sandbox: {}\n",
+                   printable_line(cli::flag_error_text(e, cli, "polyroll-sandbox", allowed)));
         return kExitBadInput;
     }
     SandboxState state;

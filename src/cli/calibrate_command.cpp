@@ -143,7 +143,6 @@ json evaluation_json(const sweep::CalibrationSetup& s, const sweep::Evaluation& 
 }
 
 int run(const CalibrateArgs& a) {
-    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
     if (a.max_evals < 0 || a.max_evals > kMaxEvaluations)
         throw InputError(fmt::format("--max-evals {} is out of range (allowed: 0 to {})", a.max_evals, kMaxEvaluations));
     const auto& algorithms = sweep::calibration_algorithms();
@@ -310,7 +309,10 @@ Action add_calibrate_command(CLI::App& app) {
     sub->add_option("--start", a->starts, "start FIELD=VALUE instead of the scene's own value (repeatable)");
     sub->add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "
                                      "(default runs/calibrate); the same command there resumes");
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    // 0 is refused as sweep's and tradeoff's --jobs 0 are (leaving the flag out means all cores).
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        ->check(CLI::Range(1, 1024))
+        ->group("Running");
     sub->add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
                                          "(the same command, other K, sharing --out) run the rest")
         ->group("Running");

@@ -155,9 +155,10 @@ Action add_compare_command(CLI::App& app) {
         "  polyroll compare\n"
         "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
         "  polyroll compare --json > compare.json\n"
-        "Any --model flag is ignored: every model runs.\n"
+        "Every model runs (grains, segments, rigid); a --scene file's run.model is not used.\n"
         "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.");
-    opts->scene.add_to(*sub);
+    // No --model: compare runs every model, so the flag would be listed and ignored.
+    opts->scene.add_to(*sub, {"run.model"});
     sub->add_option("--out", opts->out,
                     "folder for grains/, segments/ and rigid/ (each summary.json, trajectory.csv, impacts.csv) "
                     "and speed_vs_time.csv")

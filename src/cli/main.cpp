@@ -21,7 +21,11 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", polyroll::version_text("polyroll"), "print the version, Box2D's and the build type");
     auto commands = add_all_commands(app);
     // `polyroll help run` is `polyroll run --help`.
-    const std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc), app);
+    std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc), app);
+    // Bare `polyroll` asks what the tool does; nothing was mistyped, so it gets `polyroll --help` and exit
+    // 0, as cargo, docker, kubectl and pip answer their bare names. A flag with no command is still
+    // refused (exit 2): that is a mistake to name.
+    if (args.size() == 1) args.push_back("--help");
     std::vector<const char*> arg_pointers;
     arg_pointers.reserve(args.size());
     for (const std::string& a : args) arg_pointers.push_back(a.c_str());

@@ -15,8 +15,10 @@ namespace polyroll::cli {
 using json = nlohmann::ordered_json;
 
 void add_observation_scene_flags(CLI::App* sub, const std::shared_ptr<ObservationSceneFlags>& flags) {
-    sub->add_option("--set,--param", flags->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
-                                                  "--set fill.material.wall_friction=0.05 (repeatable)")
+    // No --param alias: beside calibrate's --params it read as the same flag, and its errors named
+    // --set; one name, the one every error uses.
+    sub->add_option("--set", flags->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
+                                          "--set fill.material.wall_friction=0.05 (repeatable)")
         ->group("Scene");
     // Every scene flag but the seed (--seeds gives those), from the field table.
     for (const SceneField& f : scene_fields()) {

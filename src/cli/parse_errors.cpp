@@ -2,6 +2,7 @@
 #include "cli/parse_errors.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <regex>
 
 #include <fmt/format.h>
@@ -46,8 +47,12 @@ std::vector<std::string> flag_names(const CLI::App& app) {
     return names;
 }
 
-// What a flag of this CLI11 type name accepts, or what its scene field allows.
-std::string allowed_for(const std::string& flag, const std::string& type) {
+using AllowedText = std::map<std::string, std::string>;
+
+// What a flag of this CLI11 type name accepts, or what its scene field allows; `given` first (the
+// program's own words for its flags).
+std::string allowed_for(const std::string& flag, const std::string& type, const AllowedText& given = {}) {
+    if (const auto it = given.find(flag); it != given.end()) return it->second;
     for (const SceneField& f : scene_fields())
         if (f.flag == flag) return field_allowed(f);
     if (type.find("UINT") != std::string::npos) return "a whole number from 0 to 2^64-1";
@@ -73,6 +78,13 @@ std::string unknown_command(const CLI::App& app, const std::vector<std::string>&
     return fmt::format("unknown command '{}' (allowed: {})", *first, joined(names));
 }
 
+std::string unknown_flag(const CLI::App& sub, const std::string& given) {
+    const std::string name = given.substr(0, given.find('='));
+    const std::string guess = closest_name(name, flag_names(sub));
+    return guess.empty() ? fmt::format("unknown flag '{}'", name)
+                         : fmt::format("unknown flag '{}'; did you mean '{}'?", name, guess);
+}
+
 // CLI11 lists the arguments it did not expect last first ("red --colour" for --colour red).
 std::string unexpected(const CLI::App& sub, const std::string& list) {
     std::vector<std::string> items;
@@ -83,17 +95,18 @@ std::string unexpected(const CLI::App& sub, const std::string& list) {
     }
     std::reverse(items.begin(), items.end());
     const auto flag = std::find_if(items.begin(), items.end(), [](const std::string& a) { return a.rfind("--", 0) == 0; });
-    if (flag != items.end()) {
-        const std::string name = flag->substr(0, flag->find('='));
-        const std::string guess = closest_name(name, flag_names(sub));
-        return guess.empty() ? fmt::format("unknown flag '{}'", name)
-                             : fmt::format("unknown flag '{}'; did you mean '{}'?", name, guess);
-    }
+    if (flag != items.end()) return unknown_flag(sub, *flag);
     if (items.empty()) return "unexpected arguments";
-    return fmt::format("unexpected value '{}' (each flag takes one value; lists are for polyroll sweep)", items.front());
+    // Lists are a polyroll command's matter (sweep takes them); a program without commands just takes one value.
+    return fmt::format("unexpected value '{}' (each flag takes one value{})", items.front(),
+                       sub.get_parent() ? "; lists are for polyroll sweep" : "");
 }
 
-std::string reworded(const std::string& what, const CLI::App& sub) {
+std::string reworded(const std::string& what, const CLI::App& sub, const AllowedText& given = {}) {
+    // CLI11 reports a missing required flag before a flag it does not know; the unknown one is the slip
+    // to name (calibrate --param X said "--params is required").
+    for (const std::string& a : sub.remaining())
+        if (a.rfind("--", 0) == 0) return unknown_flag(sub, a);
     std::smatch m;
     static const std::regex convert(R"(^Could not convert: (\S+) = (.*)$)");
     static const std::regex at_most(R"(^(\S+): At Most (\d+) required but received (\d+)$)");
@@ -105,7 +118,7 @@ std::string reworded(const std::string& what, const CLI::App& sub) {
         const CLI::Option* o = sub.get_option_no_throw(name);
         const std::string type = o ? o->get_type_name() : "";
         const bool digits = !value.empty() && value.find_first_not_of("-+0123456789") == std::string::npos;
-        const std::string allowed = allowed_for(name, type);
+        const std::string allowed = allowed_for(name, type, given);
         return fmt::format("{} {}: {}{}", name, value, digits ? "out of range" : "not " + what_type(type),
                            allowed.empty() ? "" : " (allowed: " + allowed + ")");
     }
@@ -114,12 +127,24 @@ std::string reworded(const std::string& what, const CLI::App& sub) {
         return fmt::format("{} takes at most {} values, got {}", m[1].str(), m[2].str(), m[3].str());
     }
     if (std::regex_match(what, m, missing)) {
-        const std::string allowed = allowed_for(m[1], m[3]);
+        const std::string allowed = allowed_for(m[1], m[3], given);
         return fmt::format("{} needs a value{}", m[1].str(), allowed.empty() ? "" : " (allowed: " + allowed + ")");
     }
     if (std::regex_match(what, m, extras)) return unexpected(sub, m[1]);
-    if (std::regex_match(what, m, range))
-        return fmt::format("{} {} is out of range (allowed: {} to {})", m[1].str(), m[2].str(), m[3].str(), m[4].str());
+    if (std::regex_match(what, m, range)) {
+        // CLI11 checks a range before converting: "--jobs two" is not a number, not a number out of range.
+        const std::string name = m[1], value = m[2];
+        const CLI::Option* o = sub.get_option_no_throw(name);
+        const std::string type = o ? o->get_type_name() : "";
+        char* end = nullptr;
+        const bool number =
+            !value.empty() && (std::strtod(value.c_str(), &end), end == value.c_str() + value.size());
+        static const std::regex whole(R"([-+]?\d+)");
+        if (!number || (type.find("INT") != std::string::npos && !std::regex_match(value, whole)))
+            return fmt::format("{} {}: not {} (allowed: {} to {})", name, value, what_type(type), m[3].str(),
+                               m[4].str());
+        return fmt::format("{} {} is out of range (allowed: {} to {})", name, value, m[3].str(), m[4].str());
+    }
     return what;
 }
 
@@ -153,6 +178,11 @@ std::string parse_error_text(const CLI::ParseError& e, const CLI::App& app, cons
     // Before a command the only flag is --help: any error there is a missing or mistyped command.
     const std::string text = parsed.empty() ? unknown_command(app, args) : reworded(e.what(), *sub);
     return fmt::format("{} (see {})", text, help);
+}
+
+std::string flag_error_text(const CLI::ParseError& e, const CLI::App& app, const std::string& program,
+                            const std::map<std::string, std::string>& allowed) {
+    return fmt::format("{} (see {} --help)", reworded(e.what(), app, allowed), program);
 }
 
 }  // namespace polyroll::cli

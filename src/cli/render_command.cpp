@@ -1,6 +1,9 @@
 // polyroll render: a scene rendered headless (OSMesa, no display or GPU) to a PNG frame sequence,
 // with the run's summary.json, trajectory.csv and impacts.csv beside the frames, and optionally a
 // video made with ffmpeg when it is installed.
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +11,7 @@
 #include <filesystem>
 #include <regex>
 #include <spawn.h>
+#include <string_view>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -35,6 +39,12 @@ constexpr double kMaxFps = 240.0;
 constexpr int kMaxSlow = 100;
 constexpr int kMinSide = 16, kMaxWidth = 7680, kMaxHeight = 4320;
 constexpr double kMaxHold = 60.0;
+// The containers ffmpeg writes H.264 into, as --video's extension (lower case).
+constexpr std::array<std::string_view, 3> kVideoExtensions = {".mp4", ".mkv", ".mov"};
+
+std::string video_extensions_text() {
+    return fmt::format("{}, {} or {}", kVideoExtensions[0], kVideoExtensions[1], kVideoExtensions[2]);
+}
 
 struct RenderOptions {
     SceneOptions scene;
@@ -181,12 +191,25 @@ int render(const RenderOptions& o) {
         throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
     std::string ffmpeg;
     if (!o.video.empty()) {
-        const fs::path parent = fs::absolute(o.video).parent_path();
+        // Checked before any frame is drawn: a video ffmpeg cannot write was found only after rendering
+        // every frame. The extension names the container; these three hold H.264 (yuv420p).
+        std::string ext = fs::path(o.video).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (std::find(kVideoExtensions.begin(), kVideoExtensions.end(), ext) == kVideoExtensions.end()) {
+            const std::string what = ext.empty() ? "no extension to name the format" : "not a video format " + ext;
+            throw InputError(fmt::format("--video {}: {} (allowed: a file ending in {})", o.video, what,
+                                         video_extensions_text()));
+        }
+        // The video may go into the --out folder this render is about to create, or any existing folder.
         std::error_code ec;
-        if (!fs::is_directory(parent, ec))
-            throw InputError(fmt::format("--video {}: the folder {} does not exist", o.video, parent.string()));
-        if (fs::path(o.video).extension().empty())
-            throw InputError(fmt::format("--video {}: needs an extension that names the format (e.g. .mp4)", o.video));
+        const fs::path parent = fs::weakly_canonical(fs::absolute(o.video), ec).parent_path();
+        fs::path out_dir = fs::weakly_canonical(fs::absolute(o.out), ec);
+        if (!out_dir.has_filename()) out_dir = out_dir.parent_path();  // --out frames/
+        if (!fs::is_directory(parent, ec) && parent != out_dir)
+            throw InputError(fmt::format("--video {}: the folder {} does not exist (allowed: an existing folder or "
+                                         "the --out folder)",
+                                         o.video, parent.string()));
         ffmpeg = find_on_path("ffmpeg");
     }
     const Scene scene = o.scene.resolve();
@@ -296,7 +319,8 @@ Action add_render_command(CLI::App& app) {
         ->group("Output");
     sub->add_option("--color-by,--colour-by", opts->colour_by, "grain colours: material (default) or speed")
         ->group("Output");
-    sub->add_option("--video", opts->video, "also encode the frames to this video file with ffmpeg (e.g. run.mp4)")
+    sub->add_option("--video", opts->video,
+                    "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4)")
         ->group("Output");
     sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder (old frames are removed)")
         ->group("Output");

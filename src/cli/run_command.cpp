@@ -1,5 +1,6 @@
 // polyroll run: one scene, a human summary (or JSON) on stdout, the files with --out.
 #include <filesystem>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -22,6 +23,28 @@ struct RunOptions {
     bool json = false;
     bool force = false;
 };
+
+// The summary's values start in this column; the auto model's reason (once 600 characters on one
+// line) is wrapped to lines of at most kLineWidth under it.
+constexpr std::size_t kWhyIndent = 21, kLineWidth = 100;
+
+std::string wrapped(const std::string& text, std::size_t indent) {
+    std::string out, line;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find(' ', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(start, end - start);
+        start = end + 1;
+        if (word.empty()) continue;
+        if (!line.empty() && indent + line.size() + 1 + word.size() > kLineWidth) {
+            out += line + "\n" + std::string(indent, ' ');
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+    }
+    return out + line;
+}
 
 std::string describe_scene(const RunResult& r) {
     const Scene& s = r.scene;
@@ -55,7 +78,7 @@ void print_summary(const RunResult& r, const std::string& out) {
                        to_string(*c.then));
         else
             fmt::print("  model              {}\n", to_string(c.model));
-        fmt::print("  why                {}\n", c.reason);
+        fmt::print("  why                {}\n", wrapped(c.reason, kWhyIndent));
     }
     fmt::print("  behaviour          {}\n", to_string(m.behaviour));
     if (m.behaviour == Behaviour::diverged) fmt::print("  divergence         {}\n", m.divergence);
@@ -64,9 +87,13 @@ void print_summary(const RunResult& r, const std::string& out) {
                    "polygon would hop); its numbers after that mean little\n",
                    r.model_invalid_time_s.value_or(0.0), to_string(model_that_ran(r)));
     fmt::print("  distance           {:.3f} m\n", m.distance_m);
-    if (m.terminal_velocity_m_s)
+    if (m.terminal_velocity_m_s && m.terminal_velocity_faces > 0)
         fmt::print("  terminal velocity  {:.3f} m/s (mean over the last {} faces)\n", *m.terminal_velocity_m_s,
                    m.terminal_velocity_faces);
+    else if (m.terminal_velocity_m_s)  // no face rhythm to time (a sliding or hopping shell): the trajectory's
+        fmt::print("  terminal velocity  {:.3f} m/s (mean speed over the last tenth of the run: fewer than two "
+                   "face impacts)\n",
+                   *m.terminal_velocity_m_s);
     else
         fmt::print("  terminal velocity  - (only when it rolls to the end)\n");
     if (m.impacts.empty())

@@ -59,13 +59,14 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
 
-void SceneOptions::add_to(CLI::App& app) {
+void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without) {
     scene_option_ = app.add_option("--scene", scene_file_, "scene file (JSON); flags given too override it")
                         ->group("Scene");
     // One flag per field that has one (sim/scene_fields.cpp), in scene-file order.
     std::vector<const SceneField*> fields;
     for (const SceneField& f : scene_fields())
-        if (!f.flag.empty()) fields.push_back(&f);
+        if (!f.flag.empty() && std::find(without.begin(), without.end(), f.path) == without.end())
+            fields.push_back(&f);
     for (const SceneField* f : fields) {
         const std::string name(f->flag), field(f->path), help = field_help(*f) + default_note(*f);
         switch (f->type) {

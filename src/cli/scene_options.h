@@ -22,7 +22,9 @@ std::string default_note(const SceneField& f);
 
 class SceneOptions {
 public:
-    void add_to(CLI::App& app);
+    // Registers one flag per field that has one, but the fields in `without` (paths, e.g. "run.model":
+    // a command that sets that field itself does not list a flag it would ignore).
+    void add_to(CLI::App& app, const std::vector<std::string>& without = {});
     // Resolves and validates the scene; throws InputError.
     Scene resolve() const;
 

@@ -200,7 +200,6 @@ int run(const SweepArgs& a) {
     if (!a.shard.empty() && a.from.empty())
         throw InputError("--shard needs --from DIR (write the plan first with --out DIR --plan-only)");
     if (a.plan_only && a.out.empty()) throw InputError("--plan-only needs --out DIR");
-    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);  // flags before folders
     if (!a.merge.empty()) return run_merge(a);
@@ -299,14 +298,17 @@ Action add_sweep_command(CLI::App& app) {
                              ->group("Grid");
         a->scene_options.push_back(o);
     }
-    a->scene_options.push_back(sub->add_option("--set,--param", a->sets,
+    // One name (no --param alias: errors name --set, and calibrate's --params is another flag).
+    a->scene_options.push_back(sub->add_option("--set", a->sets,
                                                "any scene field: FIELD=VALUES, e.g. --set shell.depth_m=0.05:0.07:0.01 "
                                                "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m; null unsets an "
                                                "optional field)")
                                    ->group("Grid"));
     a->scene_options.push_back(
-        sub->add_option("--seed", a->seed_list, "seeds for the grain packing, e.g. 1,2,3")->group("Grid"));
-    a->scene_options.push_back(sub->add_option("--seeds", a->seeds, "N seeds per point: 1, 2, ..., N")
+        sub->add_option("--seed", a->seed_list, "a LIST of seeds for the grain packing, e.g. 1,5,9 "
+                                                "(--seeds N is the count form: 1, 2, ..., N)")->group("Grid"));
+    a->scene_options.push_back(sub->add_option("--seeds", a->seeds, "a COUNT: N seeds per point, 1, 2, ..., N "
+                                                                    "(--seed LIST names them instead)")
                                    ->check(CLI::Range(1, 100000))
                                    ->group("Grid"));
     sub->add_option("--out", a->out, "sweep folder: plan.json, results.csv, runs/<id>/; an existing sweep folder "
@@ -317,7 +319,10 @@ Action add_sweep_command(CLI::App& app) {
     sub->add_option("--shard", a->shard, "with --from: run slice K of N (runs whose index is K-1 modulo N)")
         ->group("Folders");
     sub->add_option("--merge", a->merge, "combine the folder's tables into its results.csv")->group("Folders");
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    // 0 is refused like tradeoff's --jobs 0 (not read as "all cores": leaving the flag out says that).
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        ->check(CLI::Range(1, 1024))
+        ->group("Running");
     sub->add_flag("--trajectories", a->trajectories, "also write each run's trajectory.csv")->group("Running");
     sub->add_flag("--retry-failed", a->retry_failed, "run again the runs recorded as failed")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");

@@ -69,7 +69,6 @@ int draw_figures(const fs::path& dir) {
 }
 
 int run(const ValidateArgs& a) {
-    if (a.jobs < 0 || a.jobs > 1024) throw InputError(fmt::format("--jobs {} is out of range (allowed: 1 to 1024)", a.jobs));
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
     const sweep::ObservationFile file = sweep::read_observations(a.observations);
@@ -153,7 +152,10 @@ Action add_validate_command(CLI::App& app) {
     sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
     sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
                                      "figures/ (default runs/validate); the same command there resumes");
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->group("Running");
+    // 0 is refused as sweep's and tradeoff's --jobs 0 are (leaving the flag out means all cores).
+    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        ->check(CLI::Range(1, 1024))
+        ->group("Running");
     sub->add_option("--shard", a->shard, "run slice K of N only (runs whose index is K-1 modulo N)")->group("Running");
     sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
                                        "replaced)")->group("Running");

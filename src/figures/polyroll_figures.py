@@ -188,7 +188,7 @@ def cross_section_figure(args):
     handles = [plt.Rectangle((0, 0), 1, 1, color=BEHAVIOUR_COLOURS[b]) for b in present]
     fig.legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="outside lower center", ncol=len(present),
                fontsize=8)
-    fig.suptitle("Behaviour on the 1.21 m wooden ramp, BBs: each cell one angle, its lower half seed 1 and upper "
+    fig.suptitle("Behaviour on the 2.54 m air track, BBs: each cell one angle, its lower half seed 1 and upper "
                  "half seed 2; numbers: distance rolled (m)", fontsize=10)
     fig.savefig(args.out, dpi=110)
     plt.close(fig)
@@ -427,9 +427,18 @@ def row_name(row):
     return ", ".join(parts)
 
 
+def observed_behaviour(experiment):
+    """Whether the experiment names a behaviour (seen, or never seen); a lab's observation may hold only
+    measured numbers (distance_m, terminal_velocity_m_s), scored as checks, with no behaviour to colour."""
+    return "behaviour" in experiment or "not_behaviour" in experiment
+
+
 def agreeing_count(experiment, outcomes):
+    """Seeds agreeing with the experiment's behaviour; None when it names none (measured numbers only)."""
     if "not_behaviour" in experiment:
         return sum(o != experiment["not_behaviour"] for o in outcomes)
+    if "behaviour" not in experiment:
+        return None
     return sum(o == experiment["behaviour"] for o in outcomes)
 
 
@@ -453,14 +462,15 @@ def map_panel(ax, observation, runs, table):
                                                   facecolor=BEHAVIOUR_COLOURS[shown], edgecolor="white", lw=0.5,
                                                   hatch="////" if mixed else None))
         agreeing = agreeing_count(e, outcomes)
-        if label_counts:
+        if label_counts and agreeing is not None:
             # On a white chip: readable on every colour and through the hatching of mixed cells.
             ax.text(angle, y, f"{agreeing}/{len(outcomes)}", ha="center", va="center", fontsize=6.5,
                     bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor="none", alpha=0.85))
         counts = "; ".join(f"{b} {outcomes.count(b)}" for b in BEHAVIOURS if b in outcomes)
         table.append(dict(observation=observation["id"], row=row or "simulation", angle_deg=angle,
                           cell_from_deg=float(edges[j]), cell_to_deg=float(edges[j + 1]), shown=shown,
-                          runs=len(outcomes), counts=counts, mixed="yes" if mixed else "no", agreeing=agreeing))
+                          runs=len(outcomes), counts=counts, mixed="yes" if mixed else "no",
+                          agreeing="" if agreeing is None else agreeing))
     x_from, x_to = float(edges[0]), float(edges[-1])
     if "angle_range_deg" in e:
         x_from, x_to = experiment_band_row(ax, observation, len(rows), x_from, x_to, table)
@@ -478,12 +488,15 @@ def map_panel(ax, observation, runs, table):
     ax.set_xlabel("ramp angle \u03b8 (deg)", fontsize=8)
     short_source = observation["source"].split(":")[0]
     verdict = "agrees" if observation["agree"] else "disagrees"
-    ax.set_title(f"{observation['id']} [{short_source}]: {expected_text(e)}; simulation {verdict}", fontsize=8.5,
-                 loc="left")
+    ax.set_title(f"{observation['id']} [{short_source}]: {expected_text(e, observation.get('checks', []))}; "
+                 f"simulation {verdict}", fontsize=8.5, loc="left")
     return present
 
 
-def expected_text(e):
+def expected_text(e, checks=()):
+    if not observed_behaviour(e):  # a lab's measured numbers only: what was measured, as scored
+        measured = [f"{c['check']} {c['experiment']}" for c in checks if c.get("experiment")]
+        return "measured " + ("; ".join(measured) if measured else "numbers only")
     if "not_behaviour" in e:
         share = e.get("behaviour_share", 1.0)
         return (f"never {BEHAVIOUR_LABELS[e['not_behaviour']]}" if share >= 1.0 else
@@ -515,6 +528,16 @@ def experiment_cells_row(ax, observation, angles, edges, table):
     """What the experiment saw at each simulated angle: the behaviour's colour, or crossed when it says
     a behaviour never shows."""
     e = observation["experiment"]
+    if not observed_behaviour(e):
+        # Nothing to colour: the row says so, and the title says what was measured.
+        ax.add_patch(matplotlib.patches.Rectangle((edges[0], -0.5), edges[-1] - edges[0], 1.0, facecolor="white",
+                                                  edgecolor="grey", lw=0.5))
+        ax.text((edges[0] + edges[-1]) / 2, 0, "no behaviour observed (measured numbers only)", ha="center",
+                va="center", fontsize=6.5, color="#555555")
+        for j, angle in enumerate(angles):
+            table.append(dict(observation=observation["id"], row="experiment", angle_deg=angle,
+                              cell_from_deg=float(edges[j]), cell_to_deg=float(edges[j + 1]), shown="measured only"))
+        return
     never = "not_behaviour" in e
     b = e["not_behaviour"] if never else e["behaviour"]
     for j, angle in enumerate(angles):
@@ -638,10 +661,15 @@ def same_value(cell, value):
         return str(cell) == str(value)
 
 
+# The fewest distinct angles a fit of D against theta is drawn from: a line through two angles always
+# fits them (R^2 1.00 through two points says nothing), a third is the first that can disagree.
+MIN_FIT_ANGLES = 3
+
+
 def third_behaviour_fit(runs):
-    """Least squares over every run that rolled, then stopped, when they span two angles or more."""
+    """Least squares over every run that rolled, then stopped, when they span MIN_FIT_ANGLES angles or more."""
     pts = [(r["angle_deg"], r["distance_m"]) for r in runs if r["outcome"] == "stopped"]
-    if len({a for a, _ in pts}) < 2:
+    if len({a for a, _ in pts}) < MIN_FIT_ANGLES:
         return None
     x, y = np.array([p[0] for p in pts]), np.array([p[1] for p in pts])
     slope, intercept = np.polyfit(x, y, 1)
@@ -690,6 +718,27 @@ def panels_with_legend_row(n, height=2.5, max_cols=3, legend_rows=3):
     return fig, axes, legend_ax
 
 
+def fit_titles(fig, titles):
+    """Wraps each panel's title (a Text that set_title returned, drawn from its panel's left edge) to
+    the panel's width: a long one ran into the next panel's. Measured after a layout pass,
+    so it holds for any font, figure size and number of panels."""
+    for _ in range(3):  # wrapping changes the layout a little: measure again, a few times at most
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        changed = False
+        for t in titles:
+            room, width = t.axes.get_window_extent(renderer).width, t.get_window_extent(renderer).width
+            if width <= room or not t.get_text().strip():
+                continue
+            lines = t.get_text().split("\n")
+            # Characters per pixel of the widest line: how many characters the panel's width holds.
+            chars = max(8, int(0.95 * room * max(len(line) for line in lines) / width))
+            t.set_text("\n".join(w for line in lines for w in (textwrap.wrap(line, chars) or [""])))
+            changed = True
+        if not changed:
+            return
+
+
 def left_panel(ax, axes, cols=3):
     return axes.index(ax) % min(cols, len(axes)) == 0
 
@@ -703,7 +752,7 @@ def d_vs_angle_sweep(rows, lengths, observations):
     keys, groups = facets(runs, exclude={"angle_deg"})
     fig, axes, legend_ax = panels_with_legend_row(len(groups), legend_rows=4)
     length_m = max((r["ramp_length_m"] for r in runs if math.isfinite(r["ramp_length_m"])), default=1.0)
-    table, matched = [], []
+    table, matched, titles = [], [], []
     for ax, (values, grows) in zip(axes, groups):
         name = panel_label(keys, values)
         o = matching_observation(observations, grows)
@@ -714,7 +763,7 @@ def d_vs_angle_sweep(rows, lengths, observations):
             paper_fit = o["linear_fit"]
         part = draw_d_vs_angle(ax, grows, length_m, band, paper_fit, third_behaviour_fit(grows), counted=False)
         table += [dict(t, panel=name) for t in part]
-        ax.set_title(name + (f"\nexp. {o['id']}" if o else ""), fontsize=7.5, loc="left")
+        titles.append(ax.set_title(name + (f"\nexp. {o['id']}" if o else ""), fontsize=7.5, loc="left"))
         ax.tick_params(labelsize=7.5)
         ax.xaxis.label.set_size(8)
         ax.yaxis.label.set_size(8)
@@ -723,7 +772,8 @@ def d_vs_angle_sweep(rows, lengths, observations):
     shared_legend(legend_ax, axes, ncol=2)
     page_title(fig, "Distance before stopping D against ramp angle \u03b8, every run "
                f"({seeds_count(rows)} seed{'s' if seeds_count(rows) != 1 else ''} per point); "
-               "dashed: linear fit over the runs that rolled, then stopped")
+               f"dashed: linear fit over the runs that rolled, then stopped (from {MIN_FIT_ANGLES} angles or more)")
+    fit_titles(fig, titles)
     return fig, table
 
 
@@ -761,7 +811,7 @@ def terminal_velocity_sweep(rows):
     fig, axes, legend_ax = panels_with_legend_row(len(per_panel), legend_rows=2 + len(all_angles) // 6)
     # The y scale is set by the medians and ranges, never by a runaway seed: those sit on the top edge.
     top = 1.15 * max((p["high"] for _, points in per_panel for p in points), default=1.0)
-    table = []
+    table, titles = [], []
     for ax, (values, points) in zip(axes, per_panel):
         name = panel_label(keys, values)
         for angle in sorted({p["angle"] for p in points}):
@@ -781,7 +831,7 @@ def terminal_velocity_sweep(rows):
                             zorder=4, gid="runaway", label="runaway seed (bounding), off scale: value in the CSV")
                     table.append(dict(panel=name, element="runaway", fill_ratio=p["fill"], angle_deg=angle,
                                       terminal_velocity_m_s=v, seed=r["seed"], run_id=r["run_id"]))
-        ax.set_title(name, fontsize=8, loc="left")
+        titles.append(ax.set_title(name, fontsize=8, loc="left"))
         ax.set_xlabel("fill ratio r", fontsize=8)
         ax.set_ylabel("terminal velocity Vt (m/s)", fontsize=8)
         ax.tick_params(labelsize=7.5)
@@ -794,6 +844,7 @@ def terminal_velocity_sweep(rows):
     page_title(fig, "Terminal velocity against fill ratio, runs that rolled to the end: median over seeds, bars the "
                f"least to greatest seed (a seed at {RUNAWAY_FACTOR:g}x its point's median or more is a runaway, "
                "marked on the top edge and left out of the median and range)")
+    fit_titles(fig, titles)
     return fig, table
 
 
@@ -802,7 +853,7 @@ def behaviour_map_sweep(rows):
         r["_b"] = r["behaviour"] if r["status"] == "ok" or r["behaviour"] == "diverged" else "failed"
     keys, groups = facets(rows, exclude={"fill_ratio", "angle_deg"})
     fig, axes, legend_ax = panels_with_legend_row(len(groups), legend_rows=2)
-    present, table = set(), []
+    present, table, titles = set(), [], []
     for ax, (values, grows) in zip(axes, groups):
         name = panel_label(keys, values)
         fills = sorted({float(r["fill_ratio"]) for r in grows})
@@ -830,7 +881,7 @@ def behaviour_map_sweep(rows):
         if len(angles) <= 12:
             ax.set_yticks(angles)
         ax.tick_params(labelsize=7.5)
-        ax.set_title(name, fontsize=8, loc="left")
+        titles.append(ax.set_title(name, fontsize=8, loc="left"))
         ax.set_xlabel("fill ratio r", fontsize=8)
         ax.set_ylabel("ramp angle \u03b8 (deg)" if left_panel(ax, axes) else "", fontsize=8)
     handles = [matplotlib.patches.Patch(color=BEHAVIOUR_COLOURS[b], label=BEHAVIOUR_LABELS[b]) for b in BEHAVIOURS
@@ -840,6 +891,7 @@ def behaviour_map_sweep(rows):
     legend_ax.legend(handles=handles, loc="center", ncol=3, fontsize=7.5, frameon=False)
     page_title(fig, f"Behaviour over fill ratio and ramp angle ({seeds_count(rows)} seeds per cell; cells centred on "
                "the swept values)")
+    fit_titles(fig, titles)
     return fig, table
 
 
@@ -927,7 +979,7 @@ def run_name(summary, d):
 def energy_vs_time_figure(run_dirs):
     """Kinetic, potential and dissipated energy against time, one panel per run, axes shared."""
     fig, axes, legend_ax = panels_with_legend_row(len(run_dirs), height=2.4, legend_rows=1)
-    table = []
+    table, titles = [], []
     for ax, d in zip(axes, run_dirs):
         traj = read_rows(os.path.join(d, "trajectory.csv"))
         with open(os.path.join(d, "summary.json")) as f:
@@ -939,13 +991,15 @@ def energy_vs_time_figure(run_dirs):
         table += [dict(run=name, time_s=float(r["time_s"]), kinetic_J=num(r["kinetic_J"]),
                        potential_J=num(r["potential_J"]), dissipated_J=num(r["dissipated_J"])) for r in traj]
         res = summary["results"]
-        ax.set_title(f"{name}: {BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}", fontsize=8, loc="left")
+        titles.append(ax.set_title(f"{name}: {BEHAVIOUR_LABELS.get(res['behaviour'], res['behaviour'])}", fontsize=8,
+                                   loc="left"))
         ax.set_xlabel("time since release (s)", fontsize=8)
         ax.set_ylabel("energy (J)" if left_panel(ax, axes) else "", fontsize=8)
         ax.tick_params(labelsize=7.5)
         ax.grid(alpha=0.3)
     shared_legend(legend_ax, axes, ncol=3)
     page_title(fig, "Energy against time: kinetic, potential (relative to the release) and dissipated")
+    fit_titles(fig, titles)
     return fig, table
 
 

@@ -54,7 +54,8 @@ std::optional<json> replacement(const std::filesystem::path& dir, std::string_vi
         return json::parse(text.str());
     } catch (const json::exception& e) {
         throw InputError(
-            printable_line(fmt::format("{} {}: not valid JSON: {}", kDirectoryVariable, path.string(), e.what())));
+            printable_line(fmt::format("{} {}: not valid JSON: {}", kDirectoryVariable, path.string(),
+                                       json_error_text(e.what()))));
     }
 }
 

@@ -14,20 +14,16 @@ ModelChoice choose_model(const Scene& scene) {
     if (scene.fill.ratio == 0.0) {
         c.model = Model::rigid;
         c.then = Model::grains;
+        // A line or two as `polyroll run` prints it; docs/physics.md says the rest.
         c.reason =
-            "empty shell: the rigid impact model is the exact limit of an empty shell while it rolls on the ramp "
-            "without slipping (docs/physics.md); where the normal force it needs would turn negative or the "
-            "friction it needs exceed the ramp's, the same rigid body goes on free to leave the ramp and to slide: "
-            "it flies, lands on a vertex without bouncing and rolls or slides on with the ramp's friction; Box2D "
-            "takes the shell over only where that meets a contact it does not model (a face set down on both "
-            "vertices at once, coming to rest)";
+            "empty shell: the rigid impact model is its exact limit (free to fly and slide), Box2D only at "
+            "contacts it does not model (docs/physics.md)";
     } else {
         // docs/tradeoff/tradeoff.md, over its 21 scenes against the reference.
         c.model = Model::grains;
         c.reason =
-            "filled shell: the reduced models do not represent a fill well enough (trade study: terminal velocity "
-            "error 27% for rigid and 34% for segments, wrong behaviour in 14% and 0% of scenes, against 5.6% and "
-            "0% for grains at the standard preset)";
+            "filled shell: the reduced models miss its terminal velocity by 27% (rigid) and 34% (segments), the "
+            "grains by 5.6% (trade study: docs/tradeoff/tradeoff.md)";
     }
     return c;
 }

@@ -59,6 +59,15 @@ std::string open_failure_reason(int error_number) {
     return "cannot be read: " + reason;
 }
 
+std::string json_error_text(std::string_view what) {
+    constexpr std::string_view prefix = "[json.exception.";
+    if (what.substr(0, prefix.size()) == prefix) {
+        const std::size_t end = what.find("] ");
+        if (end != std::string_view::npos) what.remove_prefix(end + 2);
+    }
+    return std::string(what);
+}
+
 std::string real_time_text(double simulated_s, double wall_s) {
     if (wall_s <= 0.0) return "too fast to time";
     const double factor = simulated_s / wall_s;

@@ -15,6 +15,10 @@ std::string printable_line(std::string_view text);
 // "permission denied"; "cannot be read" when the system gave no reason (errno 0).
 std::string open_failure_reason(int error_number);
 
+// nlohmann::json's message without its "[json.exception.parse_error.101] " prefix, which means nothing
+// to a user; the rest ("parse error at line 3, column 12: ...") names the place and stays.
+std::string json_error_text(std::string_view what);
+
 // How fast a run went against the wall clock: "120x real time", "5.3x real time", "0.25x real time".
 // Whole numbers hide nothing above 10x, but a run at 0.4x printed as "0x" (issue 16): below 10x, two
 // significant digits. "too fast to time" when the clock saw no time pass.

@@ -217,6 +217,10 @@ private:
             case FieldType::number: return number(v, field);
             case FieldType::optional_number: return v.is_null() ? std::nullopt : std::optional(number(v, field));
             case FieldType::seed:
+                // 7.0 as 7, as for the other whole-number fields; only below 2^53, where a double is exact.
+                if (v.is_number_float() && v.get<double>() >= 0.0 && v.get<double>() < 9007199254740992.0 &&
+                    v.get<double>() == std::floor(v.get<double>()))
+                    return static_cast<std::uint64_t>(v.get<double>());
                 if (!v.is_number_unsigned())
                     throw InputError(fmt::format("{} = {}{} must be a whole number from 0 to 2^64-1", field, shown(v),
                                                  where(field)));
@@ -244,9 +248,15 @@ private:
         return d;
     }
     int integer(const json& v, const std::string& field) const {
-        if (!v.is_number_integer())
+        // 6.0 is a whole number: JSON has one number type, and tools writing scene files (Python's json,
+        // spreadsheets) write 6.0 for 6. A fractional part is refused.
+        const bool whole_float = v.is_number_float() && std::isfinite(v.get<double>()) &&
+                                 v.get<double>() == std::floor(v.get<double>());
+        if (!v.is_number_integer() && !whole_float)
             throw InputError(fmt::format("{} = {}{} must be a whole number", field, shown(v), where(field)));
-        const auto i = v.get<std::int64_t>();
+        if (whole_float && std::abs(v.get<double>()) > 1e9)
+            throw InputError(fmt::format("{} = {}{} is far out of range", field, shown(v), where(field)));
+        const auto i = whole_float ? static_cast<std::int64_t>(v.get<double>()) : v.get<std::int64_t>();
         if (i < -1000000000 || i > 1000000000)
             throw InputError(fmt::format("{} = {}{} is far out of range", field, shown(v), where(field)));
         return static_cast<int>(i);
@@ -326,7 +336,8 @@ SceneLayer parse_scene_text(std::string_view text, const std::string& origin) {
         // nlohmann's message names the byte offset and the token (which may be any bytes): keep it
         // on one printable line.
         throw InputError(printable_line(fmt::format("scene file {}: not valid JSON{}: {}", origin,
-                                                    field.empty() ? "" : " after key '" + field + "'", e.what())));
+                                                    field.empty() ? "" : " after key '" + field + "'",
+                                                    json_error_text(e.what()))));
     }
     if (!layer.doc.is_object())
         throw InputError(fmt::format("scene file {}: a scene must be a JSON object", origin));

@@ -21,7 +21,7 @@ using json = nlohmann::ordered_json;
 // The air track, as the experiment rolled its small polygons: a whole-ramp 3D run of the hexagon a
 // quarter full costs about 40 CPU-seconds, so the matrix takes about half an hour on two cores.
 const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"fill", {{"material", "bb"}}}, {"ramp", {{"preset", "air-track"}}}};
-// Angles around each shell's thresholds, as issue 26's prototype found them (the hexagon a quarter
+// Angles around each shell's thresholds, as a first 3D prototype found them (the hexagon a quarter
 // full: first impact at 17 deg, rolling from 18; the octagon 0.375 full: a few faces at 12-13,
 // rolling from 14), reaching a few degrees either side for the other fills.
 const std::vector<std::pair<std::string, std::vector<double>>> kShells = {

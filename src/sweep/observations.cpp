@@ -315,7 +315,8 @@ ObservationFile read_observations(const std::string& path) {
     try {
         doc = json::parse(text);
     } catch (const json::parse_error& e) {
-        throw InputError(fmt::format("--observations {}: not valid JSON ({})", path, printable_line(e.what())));
+        throw InputError(fmt::format("--observations {}: not valid JSON ({})", path,
+                                     printable_line(json_error_text(e.what()))));
     }
     return parse_observations(doc, path);
 }

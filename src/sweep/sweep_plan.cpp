@@ -9,6 +9,7 @@
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {
@@ -155,7 +156,7 @@ SweepPlan plan_from_json(const json& doc, const std::string& origin) {
                 throw InputError(fmt::format("{}: run {} does not match its parameters (edited by hand?)", origin, i));
         return plan;
     } catch (const json::exception& e) {
-        throw InputError(fmt::format("{}: not a valid sweep plan ({})", origin, e.what()));
+        throw InputError(fmt::format("{}: not a valid sweep plan ({})", origin, json_error_text(e.what())));
     }
 }
 

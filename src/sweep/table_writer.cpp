@@ -8,6 +8,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -21,15 +22,26 @@ namespace polyroll::sweep {
 TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::string>& header, bool drop_failed,
                          std::chrono::milliseconds max_commit_delay)
     : path_(std::move(path)), header_(header), max_commit_delay_(max_commit_delay) {
-    const std::string lock = path_.string() + ".lock";
-    lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock_fd_ < 0)
-        throw InputError(fmt::format("{}: cannot be created ({})", lock, std::strerror(errno)));
-    if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-        ::close(lock_fd_);
+    const std::string lock = lock_path();
+    // The lock file is removed when the table is closed (an empty results.csv.lock left in every sweep
+    // folder read as a sweep still running). A writer may thus lock a file another has just removed:
+    // the lock counts only when the name still leads to the locked file, else it tries again.
+    for (;;) {
+        lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (lock_fd_ < 0)
+            throw InputError(fmt::format("{}: cannot be created ({})", lock, std::strerror(errno)));
+        if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+            ::close(lock_fd_);
+            lock_fd_ = -1;
+            throw InputError(fmt::format("{}: another polyroll sweep is writing it (allowed: one writer per table; "
+                                         "wait for it or stop it)", path_.string()));
+        }
+        struct stat held {}, named {};
+        if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
+            held.st_ino == named.st_ino)
+            break;
+        ::close(lock_fd_);  // removed or replaced after we opened it: not the table's lock any more
         lock_fd_ = -1;
-        throw InputError(fmt::format("{}: another polyroll sweep is writing it (allowed: one writer per table; "
-                                     "wait for it or stop it)", path_.string()));
     }
     try {
         TableFile t = read_table(path_);
@@ -44,8 +56,7 @@ TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::stri
         commit_locked();  // a table (if only its header) exists from the start, and a bad folder fails now
         open_ = true;
     } catch (...) {
-        ::close(lock_fd_);
-        lock_fd_ = -1;
+        release_lock();
         throw;
     }
     flusher_ = std::thread([this] { flush_loop(); });
@@ -66,7 +77,17 @@ TableWriter::~TableWriter() {
     }
     wake_.notify_all();
     if (flusher_.joinable()) flusher_.join();
-    if (lock_fd_ >= 0) ::close(lock_fd_);
+    release_lock();
+}
+
+std::string TableWriter::lock_path() const { return path_.string() + ".lock"; }
+
+void TableWriter::release_lock() {
+    if (lock_fd_ < 0) return;
+    // Removed while still held, so no other writer can hold it (see the constructor).
+    ::unlink(lock_path().c_str());
+    ::close(lock_fd_);
+    lock_fd_ = -1;
 }
 
 void TableWriter::commit_locked() {
@@ -132,10 +153,7 @@ void TableWriter::close_sorted() {
     std::lock_guard<std::mutex> g(mutex_);
     if (flush_error_) std::rethrow_exception(flush_error_);
     commit_locked();
-    // The lock file stays: removing it would let a second writer lock a fresh file while a third
-    // still holds the old one.
-    ::close(lock_fd_);
-    lock_fd_ = -1;
+    release_lock();
 }
 
 }  // namespace polyroll::sweep

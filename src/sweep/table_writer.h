@@ -23,9 +23,10 @@ inline constexpr std::chrono::milliseconds kTableMaxCommitDelay{1000};
 
 class TableWriter {
 public:
-    // Takes the lock (path + ".lock"; InputError if another process holds it), reads the rows already
-    // there (InputError if the header is not `header`), drops failed rows when `drop_failed`, and
-    // replaces the table with what it kept (a line cut short by an older polyroll is dropped).
+    // Takes the lock (path + ".lock", removed when closed; InputError if another process holds it),
+    // reads the rows already there (InputError if the header is not `header`), drops failed rows when
+    // `drop_failed`, and replaces the table with what it kept (a line cut short by an older polyroll is
+    // dropped).
     TableWriter(std::filesystem::path path, const std::vector<std::string>& header, bool drop_failed,
                 std::chrono::milliseconds max_commit_delay = kTableMaxCommitDelay);
     ~TableWriter();
@@ -46,6 +47,8 @@ public:
 
 private:
     void commit_locked();  // mutex_ held
+    std::string lock_path() const;
+    void release_lock();   // removes the lock file, then lets it go
     void flush_loop();     // the flusher thread: replaces the table when rows have waited long enough
 
 
