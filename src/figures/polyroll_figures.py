@@ -186,8 +186,10 @@ def cross_section_figure(args):
         ax.set_title(title, fontsize=10)
     present = [b for b in BEHAVIOURS if any(r["behaviour"] == b for r in rows)]
     handles = [plt.Rectangle((0, 0), 1, 1, color=BEHAVIOUR_COLOURS[b]) for b in present]
-    fig.legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="outside lower center", ncol=len(present),
-               fontsize=8)
+    # Beside the right panel: constrained layout makes room for an axes' legend outside it (Debian 12's
+    # matplotlib 3.6 has no "outside" figure legends).
+    axes[1].legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                   fontsize=8)
     fig.suptitle("Behaviour on the 2.54 m air track, BBs: each cell one angle, its lower half seed 1 and upper "
                  "half seed 2; numbers: distance rolled (m)", fontsize=10)
     fig.savefig(args.out, dpi=110)

@@ -157,7 +157,8 @@ CrossSectionReport analyse_cross_section(const SweepPlan& plan, const TableFile&
           "too); sustained rolling: the angle from which every seed rolls to the end. Each is given as the two "
           "angles of the matrix it lies between. Energy kept at the first impact: the kinetic energy 3 ms after "
           "the landing over the energy just before it, the same rule in both models (the 3D contacts last about "
-          "a millisecond), mean over the runs that landed a face.\n\n";
+          "a millisecond). The energy kept and the terminal velocity are means over the runs where both models "
+          "give one at the same angle and seed.\n\n";
 
     md += "## Thresholds, energy at the first impact, terminal velocity and cost\n\n";
     md += "| scene | first-impact threshold 2D (deg) | 3D (deg) | 3D - 2D | sustained rolling 2D (deg) | 3D (deg) | "
@@ -185,13 +186,24 @@ CrossSectionReport analyse_cross_section(const SweepPlan& plan, const TableFile&
             for (auto& [angle, list] : by_angle) {
                 lo = std::min(lo, angle);
                 hi = std::max(hi, angle);
-                for (const Run* r : list) {
-                    kept[model].add(r->first_kept);
-                    if (r->behaviour == "rolled_to_end") vt[model].add(r->vt_m_s);
-                    wall[model].add(r->wall_s);
-                }
+                for (const Run* r : list) wall[model].add(r->wall_s);
             }
         }
+        // The energy kept and the terminal velocity compare run for run (same angle and seed) where
+        // both models give one: a mean over each model's own runs would mix different angles.
+        for (auto& [angle, list2d] : models["grains"])
+            for (const Run* a : list2d)
+                for (const Run* b : models["dem3d"][angle]) {
+                    if (a->seed != b->seed) continue;
+                    if (std::isfinite(a->first_kept) && std::isfinite(b->first_kept)) {
+                        kept["grains"].add(a->first_kept);
+                        kept["dem3d"].add(b->first_kept);
+                    }
+                    if (a->behaviour == "rolled_to_end" && b->behaviour == "rolled_to_end") {
+                        vt["grains"].add(a->vt_m_s);
+                        vt["dem3d"].add(b->vt_m_s);
+                    }
+                }
         const double fg = first["dem3d"].mid() - first["grains"].mid();
         const double rg = roll["dem3d"].mid() - roll["grains"].mid();
         first_gap.add(fg);
