@@ -141,6 +141,35 @@ TEST_CASE("dem3d's states.csv: malformed rows are refused naming the line", "[de
     CHECK_THROWS_WITH(parse_grains_csv("time_s,grain,x_m,y_m,z_m,radius_m\n0,0,1\n", 0.062), Catch::Contains("line 2"));
 }
 
+TEST_CASE("dem3d: a saved Yade output is read and measured as the run that wrote it", "[dem3d]") {
+    // tests/data/dem3d: what polyroll_dem3d.py wrote for the small hexagon a quarter full of BBs at 14
+    // deg, seed 1 (states.csv, setup.json, IN.json and the first two frames of grains.csv). That run
+    // stopped at its first impact 0.026 m down the ramp, all 241 grains inside.
+    const std::filesystem::path dir = std::filesystem::path(POLYROLL_SOURCE_DIR) / "tests" / "data" / "dem3d";
+    const Scene s = test::with_model(test::scene_with({{"ramp", {{"angle_deg", 14.0}}}}), Model::dem3d);
+    // The saved input is what this scene gives the script today.
+    CHECK(json::parse(test::read_file(dir / "IN.json")) == script_input(s, s.run.sample_hz));
+    const Dem3dOutput out = read_output(s, dir);
+    const Measurements& m = out.result.measured;
+    CHECK(m.behaviour == Behaviour::stopped_at_first_impact);
+    CHECK(m.distance_m == Approx(0.0261).margin(0.0005));
+    REQUIRE(m.impacts.size() == 1);
+    CHECK(m.impacts[0].ratio() > 0.0);
+    REQUIRE(m.impacts[0].kinetic_delayed_J);
+    CHECK(*m.impacts[0].kinetic_delayed_J < m.impacts[0].kinetic_after_J);
+    CHECK(m.grains_inside == 241);
+    CHECK(out.result.grains == 241);
+    CHECK(out.result.fill_mass_kg == Approx(0.0481).epsilon(0.01));
+    CHECK(out.result.dem3d->yade_version == "2023.02a");
+    CHECK(m.stop_time_s);
+    CHECK(m.trajectory.front().position_m == 0.0);
+    REQUIRE(out.frames.size() == 2);
+    CHECK(out.frames[0].grains.size() == 241);
+    CHECK(out.frames[1].time_s == Approx(1.0 / 30.0).margin(1e-3));
+    // A missing file is named.
+    CHECK_THROWS_WITH(read_output(s, dir / "nowhere"), Catch::Contains("states.csv"));
+}
+
 TEST_CASE("dem3d in Yade: the same seed gives the same run, revealed step by step as run_scene gives it", "[dem3d][yade]") {
     // The small hexagon a quarter full at 14 deg stops at its first impact: about 4 CPU-seconds.
     const Scene s = test::with_model(test::scene_with({{"ramp", {{"angle_deg", 14.0}}}}), Model::dem3d);

@@ -138,4 +138,14 @@ TEST_CASE("polyroll run --model dem3d writes the usual files, the 3D engine and 
     CHECK(impacts.rfind("impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms\n1,", 0) == 0);
     CHECK(impacts.find(",,\n") == std::string::npos);  // the delayed reading is there
     std::filesystem::remove_all(dir);
+
+    // compare leaves it out unless asked, then runs it last, into dem3d/.
+    const auto cmp = fresh_dir("dem3d-compare");
+    const Output c = run_polyroll("compare --angle 14 --dem3d --out " + cmp.string());
+    INFO(c.out);
+    REQUIRE(c.exit_code == 0);
+    CHECK(c.out.find("\ndem3d ") != std::string::npos);
+    CHECK(std::filesystem::exists(cmp / "dem3d" / "summary.json"));
+    CHECK(std::filesystem::exists(cmp / "rigid" / "summary.json"));
+    std::filesystem::remove_all(cmp);
 }

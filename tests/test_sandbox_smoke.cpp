@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sys/wait.h>
 
 #include "app/sandbox_settings.h"
@@ -167,6 +168,34 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
     CHECK_THAT(r.out, Catch::Contains("runs/default"));  // polyroll render's own lines name the folder
     CHECK(fs::exists(dir / "runs" / "default" / "frame_000001.png"));
     CHECK(fs::exists(dir / "runs" / "default" / "summary.json"));
+    fs::remove_all(dir);
+}
+
+// --out names the headless render's folder too; run again, the earlier frames stay and the new run
+// goes to a new numbered folder, said on the first line.
+TEST_CASE("without a display the sandbox renders into --out and never over an earlier run", "[app][sandbox]") {
+    const fs::path dir = scratch("fallback-out");
+    const std::string cmd =
+        "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + POLYROLL_SANDBOX_EXE + " --out mine/";
+    const Run first = run(cmd);
+    INFO(first.out);
+    REQUIRE(first.exit_code == 0);
+    CHECK_THAT(first.out, Catch::Contains("(polyroll render --out mine)"));
+    REQUIRE(fs::exists(dir / "mine" / "frame_000001.png"));
+    CHECK(fs::exists(dir / "mine" / "summary.json"));
+    CHECK_FALSE(fs::exists(dir / "runs"));
+    // Marks the earlier run's files, to see that none is written over.
+    std::ofstream(dir / "mine" / "summary.json") << "kept\n";
+    const auto frames_before = std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator());
+
+    const Run second = run(cmd);
+    INFO(second.out);
+    REQUIRE(second.exit_code == 0);
+    CHECK_THAT(second.out, Catch::Contains("(polyroll render --out mine-2; mine/ is not an empty folder and is left "
+                                           "as it is)"));
+    CHECK(fs::exists(dir / "mine-2" / "frame_000001.png"));
+    CHECK(polyroll::test::read_file(dir / "mine" / "summary.json") == "kept\n");
+    CHECK(std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator()) == frames_before);
     fs::remove_all(dir);
 }
 

@@ -14,6 +14,7 @@
 #include "sim/errors.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
+#include "sweep/progress.h"
 #include "sweep/results_table.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_runner.h"
@@ -314,4 +315,56 @@ TEST_CASE("shards merged give the one-process table, and tables of another plan 
     CHECK_THROWS_AS(merge_tables(other, sharded), InputError);
     fs::remove_all(one);
     fs::remove_all(sharded);
+}
+
+TEST_CASE("the time left weighs the runs left by their estimated cost, not by an average run", "[sweep][progress]") {
+    // Ten cheap runs done, each estimated at 1 s and taking 0.5 s; one run left estimated at 100 s.
+    // An average over the runs done would say 0.5 s left; the estimate scaled by the measured share
+    // says 50 s.
+    CostTally t;
+    t.runs_left = 1;
+    t.estimated_left_s = 100.0;
+    t.estimated_done_s = 10.0;
+    t.measured_done_s = 5.0;
+    t.jobs = 2;  // one run left runs on one job whatever the jobs
+    REQUIRE(time_left_s(t, 5.0, 10).has_value());
+    CHECK(*time_left_s(t, 5.0, 10) == Approx(50.0));
+    // The elapsed time does not enter it: the runs' own measured times do (runs slower than their
+    // estimate on a loaded machine make every run left slower by the same share).
+    CHECK(*time_left_s(t, 500.0, 10) == Approx(50.0));
+    t.measured_done_s = 20.0;
+    CHECK(*time_left_s(t, 5.0, 10) == Approx(200.0));
+    // Several runs left share the jobs.
+    t.runs_left = 4;
+    t.estimated_left_s = 40.0;
+    t.measured_done_s = 10.0;
+    CHECK(*time_left_s(t, 5.0, 10) == Approx(40.0 * 1.0 / 2));
+    // Nothing finished: no figure yet; nothing left: none.
+    CHECK_FALSE(time_left_s(t, 5.0, 0).has_value());
+    t.runs_left = 0;
+    CHECK(*time_left_s(t, 5.0, 10) == 0.0);
+    // Without estimates, this session's pace: 10 runs in 5 s, 4 left.
+    CostTally bare;
+    bare.runs_left = 4;
+    CHECK(*time_left_s(bare, 5.0, 10) == Approx(2.0));
+}
+
+TEST_CASE("the progress line's time left follows the runs' costs", "[sweep][progress]") {
+    // Into a file (not a terminal): a line at every tenth of the runs. Two runs: a cheap one done in
+    // half its estimate, then 100 s of estimate left: "0:50 left", however fast this test runs.
+    std::FILE* out = std::tmpfile();
+    REQUIRE(out != nullptr);
+    {
+        Progress p(2, 0, false, out, 101.0, 1);
+        p.run_done(false, 1.0, 0.5);
+        p.run_done(true, 100.0, 60.0);
+        p.finish();
+    }
+    std::rewind(out);
+    std::string text(4096, '\0');
+    text.resize(std::fread(text.data(), 1, text.size(), out));
+    std::fclose(out);
+    INFO(text);
+    CHECK_THAT(text, Catch::Contains("1/2 runs, 0 failed") && Catch::Contains("0:50 left"));
+    CHECK_THAT(text, Catch::Contains("2/2 runs, 1 failed") && Catch::Contains("0:00 left"));
 }

@@ -139,6 +139,46 @@ TEST_CASE("validate: shards run slices, the command without --shard scores them,
     fs::remove_all(scratch);
 }
 
+TEST_CASE("validate: --only runs the observations named after printing the plan and its estimate",
+          "[validate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("validate-only", true);
+    const fs::path obs = write_observations(scratch, kTinyObservations);
+    const std::string cmd = kNoMatplotlib + exe + " validate --observations " + obs.string() +
+                            " --seeds 2 --fidelity draft --time-limit 1.5 --jobs 2 -q";
+    const auto one = run_command(cmd + " --only hexagon-20 --out " + (scratch / "one").string());
+    INFO(one.out);
+    REQUIRE(one.exit_code == 0);
+    // The plan comes first: the observations, each one's runs, the seeds, and an upper bound on time.
+    const auto plan = one.out.find("polyroll validate: 1 observation of " + obs.string() + ", 2 runs (2 seeds each)");
+    const auto estimate = one.out.find("estimated at most");
+    const auto ran = one.out.find("polyroll validate: 1 observation, 2 runs (2 seeds each): 2 run now");
+    CHECK(plan != std::string::npos);
+    CHECK_THAT(one.out, Catch::Contains("  hexagon-20      2 runs (1 scene x 2 seeds)"));
+    CHECK(estimate != std::string::npos);
+    CHECK(ran != std::string::npos);
+    CHECK((plan < estimate && estimate < ran));
+    const std::string csv = read_file(scratch / "one" / "scorecard.csv");
+    CHECK_THAT(csv, Catch::Contains("hexagon-20") && !Catch::Contains("octagon-band"));
+    // The folder's copy of the observations is what was scored.
+    const auto copy = nlohmann::json::parse(read_file(scratch / "one" / "observations.json"));
+    REQUIRE(copy["observations"].size() == 1);
+    CHECK(copy["observations"][0]["id"] == "hexagon-20");
+
+    // Repeated or listed, in any order: the file's order, and the whole file here.
+    const auto both = run_command(cmd + " --only octagon-band --only hexagon-20 --out " + (scratch / "both").string());
+    INFO(both.out);
+    REQUIRE(both.exit_code == 0);
+    CHECK_THAT(both.out, Catch::Contains("2 observations of") && Catch::Contains("6 runs (2 seeds each)") &&
+                             Catch::Contains("  hexagon-20        2 runs (1 scene x 2 seeds)\n"
+                                             "  octagon-band      4 runs (2 scenes x 2 seeds)\n"));
+    const auto listed = run_command(cmd + " --only octagon-band,hexagon-20 --out " + (scratch / "both").string());
+    INFO(listed.out);
+    CHECK(listed.exit_code == 0);
+    CHECK_THAT(listed.out, Catch::Contains("note: 6 of 6 runs found done before; 0 left") &&
+                               Catch::Contains("6 found done before"));
+    fs::remove_all(scratch);
+}
+
 TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing written", "[validate][cli][bad-input]") {
     const fs::path scratch = polyroll::test::scratch_dir("validate-bad", true);
     std::string text = kTinyObservations;
@@ -156,6 +196,9 @@ TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing wri
         {"--angle 12", {"ramp.angle_deg"}},  // the bundled file sweeps the angle
         {"--set fill.material.stickiness=1", {"stickiness", "not a scene field"}},
         {"--set fill.material.wall_friction=-1", {"wall_friction", "-1"}},
+        // An id the file does not hold, alone or in a list, names the ids it does.
+        {"--only nope", {"--only nope", "experiment.json", "allowed: fig7-hexagon-rolls, fig2a-octagon-third-behaviour"}},
+        {"--only fig7-hexagon-rolls,fig7", {"--only fig7:", "allowed: fig7-hexagon-rolls"}},
     };
     for (const Case& c : cases) {
         const auto r = run_command(exe + " validate " + c.args + " -q --out " + out.string());

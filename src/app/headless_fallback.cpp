@@ -4,28 +4,71 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
 namespace polyroll::app {
 
+namespace fs = std::filesystem;
+
 std::string sibling_polyroll() {
     std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) return "polyroll";
     return (self.parent_path() / "polyroll").string();
 }
 
-int run_headless_instead(const std::string& why) {
+namespace {
+
+bool free_for_a_render(const fs::path& p) {
+    std::error_code ec;
+    if (!fs::exists(p, ec)) return true;
+    return fs::is_directory(p, ec) && fs::is_empty(p, ec);
+}
+
+// The folder `wanted` names, as a path with a last component: "runs/default/" is "runs/default", and
+// "." the current folder by its own name (a sibling needs one).
+fs::path named_folder(const fs::path& wanted) {
+    fs::path base = wanted.lexically_normal();
+    if (!base.has_filename()) base = base.parent_path();
+    if (base.empty() || base.filename() == "." || base.filename() == "..") {
+        base = fs::absolute(base).lexically_normal();
+        if (!base.has_filename()) base = base.parent_path();
+    }
+    return base;
+}
+
+}  // namespace
+
+// A new numbered folder rather than a refusal or overwriting: this fallback is what the README's
+// main command does on a machine without a display, so running it again must work (a refusal
+// would fail the second try with exit 2, and the sandbox has no --force to offer), and it must
+// never replace the frames of an earlier run, which a user may be keeping. The window's own S and
+// E keys likewise number their files instead of replacing them.
+fs::path fresh_render_folder(const fs::path& wanted) {
+    const fs::path base = named_folder(wanted);
+    if (free_for_a_render(base)) return base;
+    for (int k = 2;; ++k) {
+        fs::path p = base;
+        p.replace_filename(fmt::format("{}-{}", base.filename().string(), k));
+        if (free_for_a_render(p)) return p;
+    }
+}
+
+int run_headless_instead(const std::string& why, const std::string& out) {
     const std::string exe = sibling_polyroll();
+    const fs::path folder = fresh_render_folder(out);
+    const std::string kept =
+        folder == named_folder(out) ? "" : fmt::format("; {} is not an empty folder and is left as it is", out);
     fmt::print("polyroll-sandbox: no display ({}): rendering the default scene headless instead "
-               "(polyroll render --out runs/default --force)\n",
-               why);
+               "(polyroll render --out {}{})\n",
+               why, folder.string(), kept);
     std::fflush(stdout);
     std::fflush(stderr);
-    const char* argv[] = {exe.c_str(), "render", "--out", "runs/default", "--force", nullptr};
+    // No --force: the folder is new or empty, and render refuses one that filled meanwhile.
+    const std::string dir = folder.string();
+    const char* argv[] = {exe.c_str(), "render", "--out", dir.c_str(), nullptr};
     ::execv(exe.c_str(), const_cast<char* const*>(argv));
     fmt::print(stderr, "polyroll-sandbox: could not run {}: {}\n", exe, std::strerror(errno));
     return 1;

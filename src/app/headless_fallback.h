@@ -3,15 +3,24 @@
 // frames went.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace polyroll::app {
 
+// Where the headless render goes when neither the user nor the window named a folder.
+inline constexpr const char* kHeadlessOutDir = "runs/default";
+
 // The polyroll executable beside this one (the folder of /proc/self/exe).
 std::string sibling_polyroll();
 
-// Prints the line, then replaces this process with `polyroll render --out runs/default --force`.
-// Returns only if that could not start (the exit code to use).
-int run_headless_instead(const std::string& why);
+// The folder the render writes into: `wanted` if it does not exist or is empty, otherwise the first
+// of wanted-2, wanted-3, ... that does not exist or is empty. Never a folder holding an earlier run.
+std::filesystem::path fresh_render_folder(const std::filesystem::path& wanted);
+
+// Prints the line, then replaces this process with `polyroll render --out DIR`, DIR the
+// fresh_render_folder of `out` (the sandbox's --out, or kHeadlessOutDir). Returns only if that
+// could not start (the exit code to use).
+int run_headless_instead(const std::string& why, const std::string& out);
 
 }  // namespace polyroll::app

@@ -65,6 +65,7 @@ struct Options {
     bool bench = false;
     std::string theme = "projector";
     std::string out = kDefaultOutDir;
+    bool out_given = false;      // without a display, the headless render's folder is --out's, or its own default
     std::string size = fmt::format("{}x{}", kDefaultWidthPx, kDefaultHeightPx);
     float ui_scale = kDefaultUiScale;
     bool follow = false;
@@ -482,7 +483,8 @@ int sandbox_main(int argc, char** argv) {
     cli.footer(
         "Keys: Space play/pause, Right step, R reset, G run to the end, F follow, C grain colours, S screenshot,\n"
         "E export the run's files, [ and ] slow motion, Home reset the view; drag to pan, scroll to zoom.\n"
-        "Without a display it renders the default scene headless instead (polyroll render).\n"
+        "Without a display it renders the default scene headless instead (polyroll render) into --out, or\n"
+        "runs/default; a folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
         "Examples:\n"
         "  polyroll-sandbox\n"
         "  polyroll-sandbox --preset octagon-rice\n"
@@ -499,7 +501,10 @@ int sandbox_main(int argc, char** argv) {
     cli.add_flag("--bench", o.bench,
                  "time the window's frames at real time (default preset hexagon-large-rice, 600 frames) and print "
                  "the frame times");
-    cli.add_option("--out", o.out, fmt::format("folder for screenshots (S) and exported runs (E) (default {})", kDefaultOutDir));
+    cli.add_option("--out", o.out,
+                   fmt::format("folder for screenshots (S) and exported runs (E) (default {}); without a display, "
+                               "for the headless render's frames (default {})",
+                               kDefaultOutDir, kHeadlessOutDir));
     cli.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x800)");
     cli.add_option("--ui-scale", o.ui_scale, "size of text and controls, 0.75 to 2.5 (default 1)");
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
@@ -514,6 +519,7 @@ int sandbox_main(int argc, char** argv) {
     try {
         cli.parse(argc, argv);
         o.frames_given = cli.count("--frames") > 0;
+        o.out_given = cli.count("--out") > 0;
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
@@ -559,7 +565,7 @@ int sandbox_main(int argc, char** argv) {
                        why);
             return kExitFailure;
         }
-        return run_headless_instead(why);
+        return run_headless_instead(why, o.out_given ? o.out : std::string(kHeadlessOutDir));
     }
     // On the heap: a page's frame loop keeps using it after this function's stack frame is gone.
     const auto app = std::make_unique<Sandbox>(*win, std::move(state), o);

@@ -26,6 +26,7 @@ struct CompareOptions {
     std::string out;
     bool force = false;
     bool json = false;
+    bool dem3d = false;  // also the 3D reference, last (a minute of Yade a run)
 };
 
 std::string optional_number(const std::optional<double>& v, const char* format) {
@@ -109,7 +110,9 @@ int compare(const CompareOptions& o) {
     if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
     std::vector<RunResult> runs;
     try {
-        for (Model model : everyday_models()) {  // the reference (grains) first: the others are timed against it
+        std::vector<Model> models = everyday_models();  // the reference (grains) first: the others are timed against it
+        if (o.dem3d) models.push_back(Model::dem3d);
+        for (Model model : models) {
             Scene s = base;
             s.run.model = model;
             runs.push_back(run_scene(s));
@@ -155,6 +158,7 @@ Action add_compare_command(CLI::App& app) {
         "  polyroll compare\n"
         "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
         "  polyroll compare --json > compare.json\n"
+        "  polyroll compare --angle 14 --dem3d      # and the 3D reference\n"
         "Every model runs (grains, segments, rigid); a --scene file's run.model is not used.\n"
         "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.");
     // No --model: compare runs every model, so the flag would be listed and ignored.
@@ -166,6 +170,8 @@ Action add_compare_command(CLI::App& app) {
     sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
     sub->add_flag("--json", opts->json, "print the table as JSON (the scene, then one object per model) instead")
         ->group("Output");
+    sub->add_flag("--dem3d", opts->dem3d,
+                  "also run the 3D reference (Yade; about a minute for a whole-ramp run), into dem3d/");
     return [opts] { return compare(*opts); };
 }
 

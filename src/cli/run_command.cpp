@@ -1,12 +1,17 @@
 // polyroll run: one scene, a human summary (or JSON) on stdout, the files with --out.
 #include <filesystem>
+#include <cstdio>
+#include <optional>
 #include <string>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
+#include "sim/dem3d/yade_process.h"
 #include "sim/message_text.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
@@ -123,7 +128,18 @@ int run(const RunOptions& o) {
     if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
     RunResult r;
     try {
+        // The 3D reference takes a minute or more: say how far it has got, on a terminal only.
+        std::optional<dem3d::Progress> previous;
+        if (scene.run.model == Model::dem3d && ::isatty(2))
+            previous = dem3d::set_progress([](double t, double x) {
+                fmt::print(stderr, "\r  3D reference (Yade): {:.2f} s simulated, {:.3f} m rolled   ", t, x);
+                std::fflush(stderr);
+            });
         r = run_scene(scene);
+        if (previous) {
+            dem3d::set_progress(*previous);
+            fmt::print(stderr, "\r{:60}\r", "");
+        }
         if (!o.out.empty()) write_run_files(o.out, r);
     } catch (...) {
         // Nothing half-written: a folder this run created goes with it.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <numeric>
 #include <thread>
 
 #include <fmt/format.h>
@@ -21,6 +22,7 @@
 #include "sweep/observations.h"
 #include "sweep/progress.h"
 #include "sweep/results_table.h"
+#include "sweep/run_cost.h"
 #include "sweep/scorecard.h"
 #include "sweep/sweep_runner.h"
 #include "sweep/table_scoring.h"
@@ -34,6 +36,7 @@ using json = nlohmann::ordered_json;
 
 struct ValidateArgs {
     std::string observations, out = "runs/validate", shard;
+    std::vector<std::string> only;  // observation ids; empty: every observation of the file
     int seeds = 5, jobs = 0;
     bool force = false, quiet = false;
     ObservationSceneFlags scene;  // on top of every observation
@@ -68,10 +71,44 @@ int draw_figures(const fs::path& dir) {
     return kExitFailure;
 }
 
+// The plan before any run starts, as polyroll sweep prints its grid: each observation's runs, the
+// seeds, and at most how long the runs this session will do take, so that a validation of many
+// minutes says so before it starts rather than in its progress line.
+void print_plan(const sweep::ObservationFile& file, const sweep::ValidationPlan& vp, int seeds,
+                const std::vector<std::size_t>& todo, std::size_t in_session, int jobs) {
+    fmt::print("polyroll validate: {} observation{} of {}, {} run{} ({} seed{} each)\n", file.observations.size(),
+               file.observations.size() == 1 ? "" : "s", file.origin, vp.plan.runs.size(),
+               vp.plan.runs.size() == 1 ? "" : "s", seeds, seeds == 1 ? "" : "s");
+    std::vector<std::size_t> runs(file.observations.size(), 0);
+    for (const sweep::RunPlace& p : vp.places) ++runs[p.observation];
+    std::size_t width = 0;
+    for (const sweep::Observation& ob : file.observations) width = std::max(width, ob.id.size());
+    for (std::size_t i = 0; i < file.observations.size(); ++i)
+        fmt::print("  {:<{}}  {:>5} run{} ({} scene{} x {} seed{})\n", file.observations[i].id, width, runs[i],
+                   runs[i] == 1 ? " " : "s", runs[i] / static_cast<std::size_t>(seeds),
+                   runs[i] / static_cast<std::size_t>(seeds) == 1 ? "" : "s", seeds, seeds == 1 ? "" : "s");
+    if (vp.places.size() > vp.plan.runs.size())
+        fmt::print("  note: {} of these runs {} shared by two observations and run{} once\n",
+                   vp.places.size() - vp.plan.runs.size(), vp.places.size() - vp.plan.runs.size() == 1 ? "is" : "are",
+                   vp.places.size() - vp.plan.runs.size() == 1 ? "s" : "");
+    if (todo.size() < in_session)
+        fmt::print("  note: {} of {} runs found done before; {} left\n", in_session - todo.size(), in_session,
+                   todo.size());
+    double cost_s = 0.0;
+    for (std::size_t i : todo) cost_s += sweep::max_run_seconds(vp.plan, vp.plan.runs[i]);
+    if (!todo.empty())
+        fmt::print("  estimated at most {} with {} job{} (each run to its time limit; runs that stop sooner take "
+                   "less)\n",
+                   sweep::duration_text(cost_s / std::max(1, std::min<int>(jobs, static_cast<int>(todo.size())))),
+                   jobs, jobs == 1 ? "" : "s");
+    std::fflush(stdout);
+}
+
 int run(const ValidateArgs& a) {
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
-    const sweep::ObservationFile file = sweep::read_observations(a.observations);
+    sweep::ObservationFile file = sweep::read_observations(a.observations);
+    if (!a.only.empty()) file = sweep::only_observations(file, a.only, "--only");
     const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, observation_overrides(a.scene));
 
     const fs::path dir = a.out;
@@ -102,10 +139,22 @@ int run(const ValidateArgs& a) {
     o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     o.shard = shard;
     o.quiet = a.quiet;
+    {
+        // The runs this session will do: the shard's, less those a resumed folder holds.
+        std::vector<std::size_t> slice(vp.plan.runs.size());
+        std::iota(slice.begin(), slice.end(), std::size_t{0});
+        if (shard) slice = sweep::shard_indices(vp.plan.runs.size(), shard->first, shard->second);
+        const std::map<std::size_t, sweep::ScoredRun> done =
+            fresh ? std::map<std::size_t, sweep::ScoredRun>() : sweep::finished_outcomes(vp.plan, dir);
+        std::vector<std::size_t> todo;
+        for (std::size_t i : slice)
+            if (!done.count(i)) todo.push_back(i);
+        print_plan(file, vp, a.seeds, todo, slice.size(), o.jobs);
+    }
     const sweep::SweepReport r = run_sweep_interruptibly(vp.plan, o, "polyroll validate");
-    fmt::print("polyroll validate: {} observations, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
+    fmt::print("polyroll validate: {} observation{}, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
                "before, {}\n",
-               file.observations.size(), vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
+               file.observations.size(), file.observations.size() == 1 ? "" : "s", vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
                r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s));
     if (r.interrupted) {
         fmt::print("  interrupted: run the same command again to resume\n");
@@ -143,12 +192,16 @@ Action add_validate_command(CLI::App& app) {
         "Examples:\n"
         "  polyroll validate --seeds 3 --out runs/validate\n"
         "  polyroll validate --observations my-lab.json --fidelity draft --jobs 2\n"
+        "  polyroll validate --only fig7-hexagon-rolls --seeds 2   # one observation of the file\n"
         "  polyroll validate ... --shard 2/4    # one slice; then the same command without --shard scores\n"
         "Figures (D against theta, the behaviour map; PNG, SVG and CSV) go to OUT/figures/ when python3-matplotlib\n"
         "is installed; without it the scorecard is still written.\n"
         "The same command resumes. Exit codes: 0 ran (agreement or not is in the scorecard), 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
     sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub->add_option("--only", a->only, "run only the observation with this id (repeat the flag or give a list a,b; "
+                                       "default: every observation of the file)")
+        ->delimiter(',');
     sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
     sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
                                      "figures/ (default runs/validate); the same command there resumes");

@@ -321,6 +321,26 @@ ObservationFile read_observations(const std::string& path) {
     return parse_observations(doc, path);
 }
 
+ObservationFile only_observations(const ObservationFile& file, const std::vector<std::string>& ids,
+                                  const std::string& flag) {
+    std::vector<std::string> known;
+    for (const Observation& ob : file.observations) known.push_back(ob.id);
+    for (const std::string& id : ids)
+        if (std::find(known.begin(), known.end(), id) == known.end())
+            throw InputError(fmt::format("{} {}: no observation of {} has this id (allowed: {})", flag,
+                                         printable_line(id.empty() ? "''" : id), file.origin, joined(known)));
+    ObservationFile out;
+    out.origin = file.origin;
+    out.doc = file.doc;
+    out.doc["observations"] = json::array();
+    for (std::size_t i = 0; i < file.observations.size(); ++i) {
+        if (std::find(ids.begin(), ids.end(), file.observations[i].id) == ids.end()) continue;
+        out.observations.push_back(file.observations[i]);
+        out.doc["observations"].push_back(file.doc["observations"][i]);
+    }
+    return out;
+}
+
 ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
                                    const std::vector<std::pair<std::string, json>>& overrides) {
     // Every observation's points first, with their place; then one plan over the union of their fields.

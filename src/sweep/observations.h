@@ -58,6 +58,12 @@ ObservationFile parse_observations(const nlohmann::ordered_json& doc, const std:
 // The bundled assets/experiment.json, or a file on disk.
 ObservationFile read_observations(const std::string& path);
 
+// The file with only the observations whose ids are given (in the file's order, each once), its
+// document cut to match (what the folder's copy says was scored). An id not in the file is an
+// InputError naming it, `flag` and the ids allowed.
+ObservationFile only_observations(const ObservationFile& file, const std::vector<std::string>& ids,
+                                  const std::string& flag);
+
 // One planned run's place: which observation, at which angle (angle-range ones) and grid point.
 struct RunPlace {
     std::size_t observation = 0;

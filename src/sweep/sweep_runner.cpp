@@ -16,6 +16,7 @@
 #include "sim/results_io.h"
 #include "sweep/merge.h"
 #include "sweep/progress.h"
+#include "sweep/run_cost.h"
 #include "sweep/table_writer.h"
 
 namespace polyroll::sweep {
@@ -117,7 +118,12 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
         if (!finished.count(i)) todo.push_back(i);
     report.already = slice.size() - todo.size();
 
-    Progress progress(todo.size(), report.already, o.quiet);
+    // Each run's estimated cost, so the time left weighs the runs left by what they cost.
+    std::vector<double> cost(todo.size());
+    for (std::size_t k = 0; k < todo.size(); ++k) cost[k] = max_run_seconds(plan, plan.runs[todo[k]]);
+    const int jobs = std::max(1, std::min<int>(o.jobs, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
+    Progress progress(todo.size(), report.already, o.quiet, stderr, std::accumulate(cost.begin(), cost.end(), 0.0),
+                      jobs);
     std::atomic<std::size_t> next{0};
     std::exception_ptr error;
     std::mutex error_mutex;
@@ -133,7 +139,7 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
             try {
                 const RunRecord rec = execute_run(plan, run, o.dir / "runs" / run.id, o.trajectories);
                 writer.append(table.row_line(run, rec));
-                progress.run_done(!rec.ok);
+                progress.run_done(!rec.ok, cost[k], rec.wall_time_s);
                 if (!rec.ok) {
                     std::lock_guard<std::mutex> g(error_mutex);
                     if (run.index < first_failed_index) {
@@ -150,7 +156,6 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
             }
         }
     };
-    const int jobs = std::max(1, std::min<int>(o.jobs, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
     std::vector<std::thread> pool;
     pool.reserve(static_cast<std::size_t>(jobs));
     for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);

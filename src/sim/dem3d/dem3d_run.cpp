@@ -94,35 +94,43 @@ std::vector<GrainFrame> parse_grains_csv(const std::string& text, double depth_m
     return frames;
 }
 
-Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
-    const WorkDir dir;
-    run_script(script_input(scene, scene.run.sample_hz), dir.path());
-    rows_ = parse_states_csv(read_text(dir.path() / "states.csv"));
-    if (rows_.empty()) throw std::runtime_error("the 3D reference wrote no state (states.csv has no rows)");
-    const auto setup = nlohmann::json::parse(read_text(dir.path() / "setup.json"));
-    if (fs::exists(dir.path() / "grains.csv"))
-        frames_ = parse_grains_csv(read_text(dir.path() / "grains.csv"), scene.shell.depth_m);
+Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
+    Dem3dOutput out;
+    out.rows = parse_states_csv(read_text(dir / "states.csv"));
+    if (out.rows.empty()) throw std::runtime_error("the 3D reference wrote no state (states.csv has no rows)");
+    const auto setup = nlohmann::json::parse(read_text(dir / "setup.json"));
+    if (fs::exists(dir / "grains.csv")) out.frames = parse_grains_csv(read_text(dir / "grains.csv"), scene.shell.depth_m);
 
-    full_.scene = scene;
-    full_.shell = shell_properties(scene.shell);
-    full_.grains = setup.value("grains", 0);
-    full_.fill_mass_kg = setup.value("fill_mass_kg", 0.0);
-    full_.settle_time_s = setup.value("settle_time_s", 0.0);
-    full_.settled = setup.value("settled", true);
-    full_.balance_correction_deg = setup.value("balance_correction_deg", 0.0);
+    RunResult& r = out.result;
+    r.scene = scene;
+    r.shell = shell_properties(scene.shell);
+    r.grains = setup.value("grains", 0);
+    r.fill_mass_kg = setup.value("fill_mass_kg", 0.0);
+    r.settle_time_s = setup.value("settle_time_s", 0.0);
+    r.settled = setup.value("settled", true);
+    r.balance_correction_deg = setup.value("balance_correction_deg", 0.0);
     RunResult::Dem3dEngine engine;
     engine.yade_version = setup.value("yade_version", "");
     engine.time_step_s = setup.value("time_step_s", 0.0);
     engine.cpu_time_s = setup.value("cpu_time_s", 0.0);
-    full_.dem3d = engine;
+    r.dem3d = engine;
 
     TrackRules rules;
-    rules.grains = full_.grains;
-    rules.energy_scale_J = (full_.shell.mass_kg + full_.fill_mass_kg) * scene.run.gravity_m_s2 * full_.shell.pivot_radius_m;
+    rules.grains = r.grains;
+    rules.energy_scale_J = (r.shell.mass_kg + r.fill_mass_kg) * scene.run.gravity_m_s2 * r.shell.pivot_radius_m;
     rules.contact_tolerance_m = kContactMargin_m;
-    full_.measured = measure_states(scene, rows_, rules);
-    if (engine.time_step_s > 0.0) full_.steps = std::lround(full_.measured.end_time_s / engine.time_step_s);
+    r.measured = measure_states(scene, out.rows, rules);
+    if (engine.time_step_s > 0.0) r.steps = std::lround(r.measured.end_time_s / engine.time_step_s);
+    return out;
+}
 
+Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
+    const WorkDir dir;
+    run_script(script_input(scene, scene.run.sample_hz), dir.path());
+    Dem3dOutput out = read_output(scene, dir.path());
+    full_ = std::move(out.result);
+    rows_ = std::move(out.rows);
+    frames_ = std::move(out.frames);
     outer_ = shell_outer_polygon_m(scene.shell);
     inner_ = shell_inner_polygon_m(scene.shell);
     shown_.behaviour = Behaviour::running;

@@ -5,6 +5,7 @@
 // It costs about a minute of CPU for a whole-ramp run: a reference for checks, never for the window.
 #pragma once
 
+#include <filesystem>
 #include <vector>
 
 #include "sim/dem3d/state_tracker.h"
@@ -21,6 +22,16 @@ struct GrainFrame {
 // Reads grains.csv (time_s,grain,x_m,y_m,z_m,radius_m) into frames; `depth_m` is the box's inside
 // length, for each grain's depth share.
 std::vector<GrainFrame> parse_grains_csv(const std::string& text, double depth_m);
+
+// What the script wrote in `dir` (states.csv, setup.json, grains.csv if any), read and measured as
+// a run of `scene`: the result and the states and frames to show it by. Throws std::runtime_error
+// naming the file and line of what cannot be read.
+struct Dem3dOutput {
+    RunResult result;
+    std::vector<StateRow> rows;
+    std::vector<GrainFrame> frames;
+};
+Dem3dOutput read_output(const Scene& scene, const std::filesystem::path& dir);
 
 class Dem3dRun final : public ModelRun {
 public:
