@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "sim/installed_script.h"
+
 namespace polyroll::figures {
 
 namespace fs = std::filesystem;
@@ -42,22 +44,12 @@ int spawn(const std::vector<std::string>& argv, bool silent) {
 }  // namespace
 
 std::string figures_script() {
-    const char* name = "polyroll_figures.py";
-    std::vector<fs::path> tried;
-    if (const char* env = std::getenv("POLYROLL_FIGURES_DIR")) tried.push_back(fs::path(env) / name);
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) tried.push_back(exe.parent_path().parent_path() / "share" / "polyroll" / "figures" / name);
 #ifdef POLYROLL_FIGURES_SOURCE_DIR
-    tried.push_back(fs::path(POLYROLL_FIGURES_SOURCE_DIR) / name);
+    const char* source_dir = POLYROLL_FIGURES_SOURCE_DIR;
+#else
+    const char* source_dir = nullptr;
 #endif
-    std::string list;
-    for (const fs::path& p : tried) {
-        if (fs::is_regular_file(p, ec)) return p.string();
-        list += (list.empty() ? "" : ", ") + p.string();
-    }
-    throw std::runtime_error(fmt::format("the figure script {} is not installed (tried: {}; set POLYROLL_FIGURES_DIR "
-                                         "to the folder holding it)", name, list));
+    return installed_script({"polyroll_figures.py", "the figure script", "POLYROLL_FIGURES_DIR", "figures", source_dir});
 }
 
 std::string figures_python() {

@@ -19,6 +19,7 @@
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/installed_script.h"
 
 namespace polyroll::dem3d {
 
@@ -57,22 +58,13 @@ std::string yade_command() {
 }
 
 std::string script_path() {
-    const char* name = "polyroll_dem3d.py";
-    std::vector<fs::path> tried;
-    if (const char* env = std::getenv("POLYROLL_DEM3D_DIR")) tried.push_back(fs::path(env) / name);
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) tried.push_back(exe.parent_path().parent_path() / "share" / "polyroll" / "dem3d" / name);
 #ifdef POLYROLL_DEM3D_SOURCE_DIR
-    tried.push_back(fs::path(POLYROLL_DEM3D_SOURCE_DIR) / name);
+    const char* source_dir = POLYROLL_DEM3D_SOURCE_DIR;
+#else
+    const char* source_dir = nullptr;
 #endif
-    std::string list;
-    for (const fs::path& p : tried) {
-        if (fs::is_regular_file(p, ec)) return p.string();
-        list += (list.empty() ? "" : ", ") + p.string();
-    }
-    throw std::runtime_error(fmt::format("the 3D reference's script {} is not installed (tried: {}; set "
-                                         "POLYROLL_DEM3D_DIR to the folder holding it)", name, list));
+    return installed_script(
+        {"polyroll_dem3d.py", "the 3D reference's script", "POLYROLL_DEM3D_DIR", "dem3d", source_dir});
 }
 
 double timeout_s() {
