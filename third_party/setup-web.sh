@@ -48,4 +48,6 @@ if [ -n "$need_source" ]; then
         rm -f ./"$p"_*.dsc ./"$p"_*.tar.* ./"$p"_*.debian.tar.* ./"$p"_*.diff.gz
     done
 fi
-echo "polyroll web setup: emscripten $(emcc --version | head -n 1 | sed 's/.* \([0-9][0-9.]*\) .*/\1/'), sources in $src"
+# sed reads emcc's whole output (head would close the pipe early and emcc, a Python program, would
+# print a BrokenPipeError traceback).
+echo "polyroll web setup: emscripten $(emcc --version | sed -n '1s/.* \([0-9][0-9.]*\) .*/\1/p'), sources in $src"
