@@ -193,7 +193,10 @@ TEST_CASE("validate: a malformed observation gives one line, exit 2, nothing wri
         {"--observations " + (scratch / "none.json").string(), {"cannot be read"}},
         {"--seed 3", {"--seed"}},
         {"--fidelity nonsense", {"nonsense", "draft"}},
-        {"--angle 12", {"ramp.angle_deg"}},  // the bundled file sweeps the angle
+        // The bundled file varies the angle itself: the value the user set is refused, not the file.
+        {"--angle 12", {"ramp.angle_deg = 12 set on the command line", "'fig2a-octagon-third-behaviour'",
+                        "its angles_deg", "--only picks"}},
+        {"--angle 12 --only text-above-17-all-roll", {"ramp.angle_deg = 12", "grid [18,20]"}},
         {"--set fill.material.stickiness=1", {"stickiness", "not a scene field"}},
         {"--set fill.material.wall_friction=-1", {"wall_friction", "-1"}},
         // An id the file does not hold, alone or in a list, names the ids it does.

@@ -120,7 +120,7 @@ Action add_bench_command(CLI::App& app) {
         ->excludes(dem3d_flag);
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     sub->add_flag("--no-calibration", opts->no_calibration,
-                  "skip the calibration cost (one evaluation of the bundled observations at standard, ~20 s)");
+                  "skip the calibration cost (one evaluation of the bundled observations at standard: about 3 minutes on one core)");
     return [opts] { return bench(*opts); };
 }
 

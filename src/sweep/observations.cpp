@@ -356,9 +356,18 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
     for (std::size_t oi = 0; oi < file.observations.size(); ++oi) {
         const Observation& ob = file.observations[oi];
         const Where w{file.origin, ob.id};
-        for (const auto& [f, v] : overrides)
-            for (const auto& [g, values] : ob.grid)
-                if (g == f) w.fail("grid." + g, json(values), "no grid over a field the command line sets (" + f + ")");
+        // A field set on the command line that an observation varies itself: the user's value is what
+        // is refused, by the field they set, not the observation file.
+        for (const auto& [f, v] : overrides) {
+            const bool own_angles = f == "ramp.angle_deg" && ob.angle_range_deg;
+            const auto grid = std::find_if(ob.grid.begin(), ob.grid.end(), [&f = f](const auto& g) { return g.first == f; });
+            if (grid == ob.grid.end() && !own_angles) continue;
+            throw InputError(fmt::format(
+                "{} = {} set on the command line: observation '{}' of {} varies it itself ({}) (allowed: a field "
+                "none of the observations run varies; --only picks the observations)",
+                f, printable_line(v.dump()), ob.id, file.origin,
+                own_angles ? "its angles_deg" : "grid " + printable_line(json(grid->second).dump())));
+        }
         // Grid combinations, the first axis varying slowest.
         std::vector<std::size_t> digit(ob.grid.size(), 0);
         std::size_t combos = 1;
