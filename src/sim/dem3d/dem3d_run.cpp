@@ -2,7 +2,9 @@
 #include "sim/dem3d/dem3d_run.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -43,7 +45,8 @@ public:
             fs::create_directories(path_);
             return;
         }
-        std::string pattern = (fs::temp_directory_path() / "polyroll-dem3d-XXXXXX").string();
+        remove_orphans();
+        std::string pattern = (fs::temp_directory_path() / fmt::format("polyroll-dem3d-{}-XXXXXX", ::getpid())).string();
         if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder for Yade");
         path_ = pattern;
         remove_ = true;
@@ -57,6 +60,19 @@ public:
     const fs::path& path() const { return path_; }
 
 private:
+    // A polyroll stopped by a signal (Ctrl-C) leaves its folder behind: Yade dies with it, the
+    // destructor never runs. The folder names its process: one whose process has gone is removed.
+    static void remove_orphans() {
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+            const std::string name = e.path().filename().string();
+            const std::string prefix = "polyroll-dem3d-";
+            if (name.rfind(prefix, 0) != 0) continue;
+            const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+            if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
+        }
+    }
+
     fs::path path_;
     bool remove_ = false;
 };
