@@ -47,7 +47,7 @@ fs::path named_folder(const fs::path& wanted) {
 // never replace the frames of an earlier run, which a user may be keeping. The window's own S and
 // E keys likewise number their files instead of replacing them.
 fs::path fresh_render_folder(const fs::path& wanted) {
-    const fs::path base = named_folder(wanted);
+    fs::path base = named_folder(wanted);  // not const: returned by move
     if (free_for_a_render(base)) return base;
     for (int k = 2;; ++k) {
         fs::path p = base;
