@@ -6,12 +6,19 @@
 #include "sim/model_registry.h"
 #include "sim/models/hopping_run.h"
 #include "sim/models/reduced_run.h"
+#include "sim/ramp_profile.h"
 
 namespace polyroll {
 
 ModelChoice choose_model(const Scene& scene) {
     ModelChoice c;
-    if (scene.fill.ratio == 0.0) {
+    if (ramp_is_curved(scene.ramp)) {
+        // The rigid model's closed forms assume one slope; the engine turns gravity with the shell.
+        c.model = Model::grains;
+        c.reason = scene.fill.ratio == 0.0
+                       ? "curved track: the rigid impact model assumes one slope; Box2D steps the empty shell alone"
+                       : "curved track, filled shell: the Box2D simulation of the shell and its grains";
+    } else if (scene.fill.ratio == 0.0) {
         c.model = Model::rigid;
         c.then = Model::grains;
         // A line or two as `polyroll run` prints it; docs/physics.md says the rest.

@@ -45,10 +45,11 @@ std::unique_ptr<ModelRun> start_dem3d([[maybe_unused]] const Scene& s) {
 
 const std::vector<ModelRow>& rows() {
     static const std::vector<ModelRow> table = {
-        {{Model::grains, true, true, "", true}, start_grains, carry_on_grains},
-        {{Model::segments, false, false, "segments re-levelled at each impact", false}, start_segments, nullptr},
-        {{Model::rigid, false, false, "a frozen rigid body", false}, start_rigid, nullptr},
-        {{Model::dem3d, false, true, "", false, false}, start_dem3d, nullptr},
+        {{Model::grains, true, true, "", true, true, true}, start_grains, carry_on_grains},
+        {{Model::segments, false, false, "segments re-levelled at each impact", false, true, false}, start_segments,
+         nullptr},
+        {{Model::rigid, false, false, "a frozen rigid body", false, true, false}, start_rigid, nullptr},
+        {{Model::dem3d, false, true, "", false, false, true}, start_dem3d, nullptr},
     };
     return table;
 }

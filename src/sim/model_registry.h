@@ -26,6 +26,9 @@ struct ModelTraits {
     // Cheap enough to run beside the others whenever a command runs them all (compare, bench's model
     // rows) and to offer in the window; false for the 3D reference, a minute of CPU a run.
     bool everyday = true;
+    // Runs a curved track (ramp.curvature_deg_per_m, ramp_profile.h): the engines turn gravity with
+    // the shell; the reduced models' closed forms assume one slope and refuse such a scene.
+    bool follows_curved_track = false;
 };
 
 // Every model, in the order `compare` and `bench` list them: the grain simulation first, the

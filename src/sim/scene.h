@@ -54,7 +54,9 @@ struct RampParams {
     double length_m = 0.0;
     double friction = 0.0;      // shell on ramp surface
     double restitution = 0.0;   // shell on ramp surface
-    double angle_deg = 0.0;     // theta, from horizontal
+    double angle_deg = 0.0;     // theta, from horizontal: the chord's angle on a curved track
+    // How fast the local slope falls down the track, about the chord (ramp_profile.h); 0 straight.
+    double curvature_deg_per_m = 0.0;
 };
 
 enum class ReleasePose { vertex, face };

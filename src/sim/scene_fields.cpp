@@ -2,6 +2,7 @@
 // each value (the reasons beside them); the messages that name them are in scene_validate.cpp.
 #include "sim/scene_fields.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -79,6 +80,13 @@ double max_grain_diameter_m(const Scene& s) {
 }
 // The ramp must be at least two outer diameters long.
 double min_ramp_length_m(const Scene& s) { return 4.0 * shell_properties(s.shell).outer_circumradius_m; }
+// A curved track's local slope stays within -89 to 89 degrees at both ends (angle +- curvature x
+// length / 2, the angle at least 0), and a curvature beyond 20 degrees per metre (a 2.9 m radius) is
+// no longer a track that sags.
+double max_ramp_curvature_deg_per_m(const Scene& s) {
+    return std::min(20.0, 2.0 * (89.0 - s.ramp.angle_deg) / s.ramp.length_m);
+}
+double min_ramp_curvature_deg_per_m(const Scene& s) { return -max_ramp_curvature_deg_per_m(s); }
 // A trajectory row is written at a tracker step: no more rows than steps.
 double max_sample_hz(const Scene& s) { return s.fidelity.step_hz; }
 
@@ -163,7 +171,16 @@ std::vector<SceneField> make_table() {
             .help("restitution of the shell's impacts on the ramp (0 no bounce, 1 elastic), no unit"),
         Row("ramp.angle_deg", T::number, member<&Scene::ramp, &RampParams::angle_deg>())
             .range(0.0, 89.0).unit("degrees").flag("--angle", 8).label("\u03B8 (angle)")
-            .help("\u03B8: the ramp's angle from horizontal"),
+            .help("\u03B8: the ramp's angle from horizontal (on a curved track, its chord's)"),
+        Row("ramp.curvature_deg_per_m", T::number, member<&Scene::ramp, &RampParams::curvature_deg_per_m>())
+            .range(-20.0, 20.0)
+            .min_of(min_ramp_curvature_deg_per_m, {"ramp.length_m", "ramp.angle_deg"})
+            .max_of(max_ramp_curvature_deg_per_m, {"ramp.length_m", "ramp.angle_deg"})
+            .unit("degrees per metre", "(less where the slope at either end of the track would pass -89 or 89 degrees)")
+            .flag("--curvature", 12)
+            .help("how fast the track's slope falls down it, about its chord at ramp.angle_deg: a track that "
+                  "sags between its supports is steeper at the top and shallower at the bottom (the local "
+                  "slope is angle + curvature x (length/2 - x)); 0 is a straight track, negative a hump"),
 
         // --- release
         Row("release.pose", T::choice, member<&Scene::release, &ReleaseParams::pose>())
@@ -279,6 +296,7 @@ std::string field_allowed(const SceneField& f) {
     const std::string unit = f.unit.empty() ? std::string() : " " + std::string(f.unit);
     const std::string note = f.limit_note.empty() ? std::string() : " " + std::string(f.limit_note);
     const std::string from = fmt::format("{} {:g}", f.min_open ? "above" : "from", f.min);
+    if (f.min_of && f.max_of) return fmt::format("{:g} to {:g}{}{}", f.min, f.max, unit, note);
     if (f.max_of) return from + unit + note;
     if (f.min_of) return fmt::format("up to {:g}{}{}", f.max, unit, note);
     return fmt::format("{} to {:g}{}{}{}", from, f.max, unit, f.max_open ? ", exclusive" : "", note);

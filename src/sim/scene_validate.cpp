@@ -1,5 +1,6 @@
-// Range checks for scenes: see scene_validate.h. The limits are the rows of scene_fields.cpp; the two
-// checks that span several fields (the grain count, the release tilt) are here, after their section.
+// Range checks for scenes: see scene_validate.h. The limits are the rows of scene_fields.cpp; the
+// checks that span several fields (the grain count, the release tilt, the model on a curved track)
+// are here, after their section.
 #include "sim/scene_validate.h"
 
 #include <algorithm>
@@ -13,6 +14,9 @@
 #include "sim/disc_size.h"
 #include "sim/errors.h"
 #include "sim/geometry.h"
+#include "sim/model_registry.h"
+#include "sim/ramp_profile.h"
+#include "sim/scene_names.h"
 #include "sim/scene_fields.h"
 #include "sim/shell_properties.h"
 
@@ -88,12 +92,27 @@ void check_release_tilt(const Scene& s, const Where& where) {
             s.release.tilt_deg, from(where, "release.tilt_deg"), s.shell.sides, s.ramp.angle_deg, max_tilt_deg));
 }
 
+// The reduced models' closed forms assume one slope: a curved track needs a model that turns gravity
+// with the shell (auto picks one).
+void check_model_on_track(const Scene& s, const Where& where) {
+    if (!ramp_is_curved(s.ramp) || s.run.model == Model::automatic) return;
+    if (model_traits(s.run.model).follows_curved_track) return;
+    std::string can;
+    for (Model m : all_models())
+        if (model_traits(m).follows_curved_track) can += to_string(m) + ", ";
+    throw InputError(fmt::format("run.model = {}{} cannot run a curved track (ramp.curvature_deg_per_m = {:g}{}; "
+                                 "its closed forms assume one slope): use {}auto, or a straight track (0)",
+                                 to_string(s.run.model), from(where, "run.model"), s.ramp.curvature_deg_per_m,
+                                 from(where, "ramp.curvature_deg_per_m"), can));
+}
+
 // Checks across fields, each run once every field of its section has passed its own range.
 struct CrossCheck {
     std::string_view after_section;
     void (*check)(const Scene&, const Where&);
 };
-constexpr CrossCheck kCrossChecks[] = {{"fill", check_grain_count}, {"release", check_release_tilt}};
+constexpr CrossCheck kCrossChecks[] = {
+    {"fill", check_grain_count}, {"release", check_release_tilt}, {"run", check_model_on_track}};
 
 std::string_view top_section(std::string_view path) { return path.substr(0, path.find('.')); }
 

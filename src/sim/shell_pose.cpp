@@ -5,16 +5,21 @@
 #include <cmath>
 
 #include "sim/fill_plan.h"
+#include "sim/ramp_profile.h"
 
 namespace polyroll {
 
 using geom::Vec2;
 
+double release_slope_deg(const Scene& scene, const ShellProperties& shell) {
+    return local_slope_deg(scene.ramp, release_pivot_x_m(shell));
+}
+
 ShellPose release_pose(const Scene& scene, const ShellProperties& p) {
-    const double theta = scene.ramp.angle_deg * geom::kPi / 180.0;
+    const double theta = release_slope_deg(scene, p) * geom::kPi / 180.0;
     const double n = p.sides;
     // Resting on face (0, 1): the face spans x = 0 .. side, vertex 1 (downhill) at x = side.
-    const Vec2 pivot = {p.outer_side_m, 0.0};
+    const Vec2 pivot = {release_pivot_x_m(p), 0.0};
     const Vec2 centre_from_pivot = {-p.outer_side_m / 2.0, p.outer_apothem_m};
     double rotation = 0.0;  // clockwise, about the pivot
     if (scene.release.pose == ReleasePose::vertex) {

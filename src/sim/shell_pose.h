@@ -24,6 +24,12 @@ struct ShellState {
     double angular_velocity_rad_s = 0.0;  // counter-clockwise (negative rolling down)
 };
 
+// Where the shell is let go: its downhill vertex (of face (0, 1), which spans x = 0 .. side).
+inline double release_pivot_x_m(const ShellProperties& shell) { return shell.outer_side_m; }
+// The track's local slope there (degrees; the ramp's angle on a straight track): balance is judged
+// against it.
+double release_slope_deg(const Scene& scene, const ShellProperties& shell);
+
 // The release pose: resting on face (0, 1), or on its downhill vertex turned past balance.
 ShellPose release_pose(const Scene& scene, const ShellProperties& shell);
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "sim/ramp_profile.h"
+
 namespace polyroll {
 
 void set_terminal_velocity(Measurements& m, int sides) {
@@ -104,12 +106,20 @@ TrajectorySample Tracker::sample(double time_s) const {
     s.angle_deg = -(shell->GetAngle() - start_angle_rad_) * 180.0 / geom::kPi;
     double kinetic_u = 0.0, potential_u = 0.0;
     const b2Vec2 g = w_.world->GetGravity();
+    const RampParams& ramp = w_.scene.ramp;
+    const bool curved = ramp_is_curved(ramp);
+    // On a curved track gravity turns with the shell, so the potential is the track's (ramp_profile.h),
+    // in engine units like the straight track's -m g.p.
+    const double g_units = w_.scene.run.gravity_m_s2 * upm_;
     auto add = [&](const b2Body* b) {
         const b2Vec2 v = b->GetLinearVelocity();
         const double omega = b->GetAngularVelocity();
         kinetic_u += 0.5 * b->GetMass() * (double(v.x) * v.x + double(v.y) * v.y) + 0.5 * b->GetInertia() * omega * omega;
         const b2Vec2 p = b->GetWorldCenter();
-        potential_u -= b->GetMass() * (double(g.x) * p.x + double(g.y) * p.y);
+        if (curved)
+            potential_u += b->GetMass() * g_units * upm_ * height_m(ramp, p.x / upm_, p.y / upm_);
+        else
+            potential_u -= b->GetMass() * (double(g.x) * p.x + double(g.y) * p.y);
     };
     add(shell);
     for (const b2Body* b : w_.grains) add(b);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/lid_friction.h"
+#include "sim/ramp_profile.h"
 #include "sim/world_parts.h"
 
 namespace polyroll {
@@ -34,6 +35,18 @@ void SimWorld::step() {
     }
 }
 
+namespace {
+// A curved track (ramp_profile.h): gravity turned to the local slope under the shell before each
+// engine step, the grains seeing the shell's (they lie within a few centimetres of its centre, a
+// few hundredths of a degree on these tracks). First among the hooks, so the others see it.
+void turn_gravity_to_track(SimWorld& w, double /*engine_step_s*/) {
+    const double x_m = w.units.to_m(w.shell->GetPosition().x);
+    w.gravity_m_s2 = gravity_at_m_s2(w.scene.ramp, w.scene.run.gravity_m_s2, x_m);
+    w.world->SetGravity(b2Vec2(static_cast<float>(w.units.to_units(w.gravity_m_s2.x)),
+                               static_cast<float>(w.units.to_units(w.gravity_m_s2.y))));
+}
+}  // namespace
+
 namespace world_parts {
 
 std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook> hooks) {
@@ -45,11 +58,11 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
     w->inner_local_m = shell_inner_polygon_m(scene.shell);
     w->force_hooks = std::move(hooks);
     // The scene's own terms the contacts in the plane do not give, each left out when switched off.
+    if (ramp_is_curved(scene.ramp)) w->force_hooks.insert(w->force_hooks.begin(), turn_gravity_to_track);
     if (scene.fill.material.lid_friction > 0.0 && scene.fill.ratio > 0.0) w->force_hooks.emplace_back(apply_lid_friction);
 
-    const double theta = scene.ramp.angle_deg * geom::kPi / 180.0;
-    const double g = scene.run.gravity_m_s2;
-    w->gravity_m_s2 = {g * std::sin(theta), -g * std::cos(theta)};
+    // Until the first step turns it (a curved track), gravity as at the release.
+    w->gravity_m_s2 = gravity_at_m_s2(scene.ramp, scene.run.gravity_m_s2, release_pivot_x_m(w->shell_props));
     // The run ends when the front of the polygon reaches the ramp's end.
     w->end_centre_x_m = scene.ramp.length_m - w->shell_props.outer_circumradius_m;
 

@@ -14,7 +14,8 @@ b2Vec2 to_b2(Vec2 v_m, const EngineUnits& u) {
     return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
 }
 
-double ramp_angle_rad(const Scene& scene) { return scene.ramp.angle_deg * geom::kPi / 180.0; }
+// The slope the pile settles on: the track's at the release (the ramp's angle on a straight track).
+double ramp_angle_rad(const SimWorld& w) { return release_slope_deg(w.scene, w.shell_props) * geom::kPi / 180.0; }
 
 // A settled pile is never quite symmetric, and a full polygon's fill outweighs its shell several
 // times: a millimetre's lean of the pile moves the whole body's centre of mass further than the
@@ -60,7 +61,7 @@ double balance_on_pivot(SimWorld& w, double theta) {
 void pour_grains(SimWorld& w, const ShellPose& pose) {
     const Scene& scene = w.scene;
     const EngineUnits& u = w.units;
-    const double theta = ramp_angle_rad(scene);
+    const double theta = ramp_angle_rad(w);
     const Vec2 up_world = {-std::sin(theta), std::cos(theta)};
     w.fill = plan_fill(scene, w.shell_props, geom::rotate(up_world, -pose.angle_rad));
     for (const PlannedGrain& pg : w.fill.grains) {
@@ -109,7 +110,7 @@ void settle_grains(SimWorld& w) {
         b->SetLinearVelocity(b2Vec2_zero);
         b->SetAngularVelocity(0.0f);
     }
-    const double theta = ramp_angle_rad(scene);
+    const double theta = ramp_angle_rad(w);
     if (scene.release.pose == ReleasePose::vertex && theta < geom::kPi / w.shell_props.sides)
         w.balance_correction_deg = balance_on_pivot(w, theta);
 }

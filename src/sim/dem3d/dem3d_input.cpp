@@ -43,7 +43,10 @@ json script_input(const Scene& s, double frames_hz) {
     j["seed"] = s.run.seed;
     j["gravity_m_s2"] = s.run.gravity_m_s2;
     j["angle_deg"] = s.ramp.angle_deg;
-    j["ramp"] = {{"length_m", s.ramp.length_m}, {"friction", s.ramp.friction}, {"restitution", s.ramp.restitution}};
+    j["ramp"] = {{"length_m", s.ramp.length_m},
+                 {"curvature_deg_per_m", s.ramp.curvature_deg_per_m},
+                 {"friction", s.ramp.friction},
+                 {"restitution", s.ramp.restitution}};
     j["shell"] = {{"sides", s.shell.sides},
                   {"outer_vertices_m", points(shell_outer_polygon_m(s.shell))},
                   {"inner_vertices_m", points(shell_inner_polygon_m(s.shell))},

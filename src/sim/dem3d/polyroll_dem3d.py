@@ -78,6 +78,8 @@ def _points(cfg, path, count=None):
 NUMBERS = {
     'gravity_m_s2': ('gravity_m_s2', 0, None, True),
     'angle_deg': ('angle_deg', -89, 89, False),
+    'ramp.length_m': ('ramp_length_m', 0, None, True),
+    'ramp.curvature_deg_per_m': ('curvature_deg_per_m', -90, 90, False),
     'ramp.friction': ('ramp_friction', 0, None, False),
     'ramp.restitution': ('ramp_restitution', 0, 1, False),
     'shell.inner_depth_m': ('inner_depth_m', 0, None, True),
@@ -126,6 +128,39 @@ def load_config(path):
     if c['pose'] not in ('vertex', 'face'):
         raise InputError('release.pose must be "vertex" or "face"')
     return c
+
+
+# ---------------------------------------------------------------- the track's profile
+
+def slope_deg(c, x):
+    """The track's local slope x metres down it: it falls by curvature_deg_per_m per metre about the
+    chord's angle at the middle (polyroll's ramp_profile.h); the angle itself on a straight track."""
+    if c['curvature_deg_per_m'] == 0:
+        return c['angle_deg']
+    return c['angle_deg'] + c['curvature_deg_per_m'] * (c['ramp_length_m'] / 2 - x)
+
+
+def gravity_at(c, x):
+    """Gravity in the frame of the straight ramp the engine keeps, at the local slope x metres down:
+    the track unrolled, as polyroll's 2D engine does."""
+    th = math.radians(slope_deg(c, x))
+    return (c['gravity_m_s2'] * math.sin(th), -c['gravity_m_s2'] * math.cos(th))
+
+
+def height(c, x, y):
+    """Height of the point x down the track and y above it, relative to the top: gravity's potential
+    per unit mass and g."""
+    th = math.radians(slope_deg(c, x))
+    if c['curvature_deg_per_m'] == 0:
+        return -x * math.sin(th) + y * math.cos(th)
+    k, top = math.radians(c['curvature_deg_per_m']), math.radians(slope_deg(c, 0.0))
+    return -(math.cos(th) - math.cos(top)) / k + y * math.cos(th)
+
+
+def release_slope_deg(c):
+    """The slope under the pivot vertex at release: the pile settles and balances against it."""
+    piv = rot(c['outer'][c['pivot_vertex']], c['angle_rad'])
+    return slope_deg(c, c['centre'][0] + piv[0])
 
 
 # ---------------------------------------------------------------- plane geometry (shell frame)
@@ -198,7 +233,7 @@ def build_scene(c, rng):
     """Materials, engines, ramp, shell clump and grains at the release pose; returns the scene's handles."""
     import yade
     from yade import O, utils
-    g, th = c['gravity_m_s2'], math.radians(c['angle_deg'])
+    g, th = c['gravity_m_s2'], math.radians(release_slope_deg(c))
     tc = c['contact_time_s']
 
     def mat(en, mu, density):
@@ -330,7 +365,7 @@ def balance_turn(c, sc):
     tilt_deg past balance downhill, measured against the true vertical, clamped so that neither
     neighbouring face reaches the ramp."""
     from yade import O
-    th = math.radians(c['angle_deg'])
+    th = math.radians(release_slope_deg(c))
     piv = rot(c['outer'][c['pivot_vertex']], c['angle_rad'])
     piv = (piv[0] + c['centre'][0], piv[1] + c['centre'][1])
     bodies = [(c['mass_kg'], O.bodies[sc['clump']].state.pos)] + \
@@ -381,8 +416,9 @@ class Tracker:
     def __init__(self, c, sc, angle0):
         from yade import O
         self.c = c
-        th = math.radians(c['angle_deg'])
-        self.g = (c['gravity_m_s2'] * math.sin(th), -c['gravity_m_s2'] * math.cos(th))
+        g = c['gravity_m_s2']
+        # Potential energy of a body of mass m at (x, y): m g height (the track's profile).
+        self.pe = lambda m, p: m * g * height(c, p[0], p[1])
         self.q0 = O.bodies[sc['clump']].state.ori.conjugate()
         self.angle0, self.turn = angle0, 0.0
         self.planes = edge_planes(c['inner'])
@@ -399,12 +435,12 @@ class Tracker:
         angle = self.angle0 + self.turn
         x, y, vx, vy, w = st.pos[0], st.pos[1], st.vel[0], st.vel[1], st.angVel[2]
         ke = 0.5 * c['mass_kg'] * (vx * vx + vy * vy) + 0.5 * c['inertia_roll_kg_m2'] * w * w
-        pe = -c['mass_kg'] * (self.g[0] * x + self.g[1] * y)
+        pe = self.pe(c['mass_kg'], (x, y))
         inside, half = 0, c['inner_depth_m'] / 2 + self.tol
         for b in self.grains:
             p, v = b.pos, b.vel
             ke += 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia[0] * b.angVel.squaredNorm()
-            pe -= b.mass * (self.g[0] * p[0] + self.g[1] * p[1])
+            pe += self.pe(b.mass, p)
             if abs(p[2]) <= half and depth_inside(self.planes, rot((p[0] - x, p[1] - y), -angle)) >= -self.tol:
                 inside += 1
         if self.pe0 is None:
@@ -417,8 +453,10 @@ class Tracker:
 
 def simulate(c, sc, angle0, states, frames):
     """Step from the release to the end, writing one row per 1/step_hz; returns how the run ended."""
+    import yade
     from yade import O
     tr, steps = Tracker(c, sc, angle0), sc['steps_per_row']
+    curved, newton = c['curvature_deg_per_m'] != 0, O.engines[-1]
     r_out = max(math.hypot(*p) for p in c['outer'])
     k, rest_since, next_frame, next_progress, x0 = 0, None, 0.0, 0.0, None
     while True:
@@ -445,6 +483,10 @@ def simulate(c, sc, angle0, states, frames):
             return 'rest'
         if t >= c['time_limit_s'] - 1e-9:
             return 'time_limit'
+        if curved:
+            # A curved track: gravity turned to the slope under the shell, once a row (1/step_hz), a
+            # few hundredths of a degree between turns.
+            newton.gravity = yade.Vector3(*gravity_at(c, row[0]), 0.0)
         advance(steps)
         k += 1
 
