@@ -47,6 +47,44 @@ TEST_CASE("auto picks the rigid model for an empty shell and grains for a filled
     for (Model m : all_models()) CHECK(m != Model::automatic);
 }
 
+TEST_CASE("auto runs a full shell as one rigid polygon and says why", "[models][auto]") {
+    const ModelChoice full = choose_model(test::scene_with({{"fill", {{"ratio", 1.0}}}}));
+    CHECK(full.model == Model::rigid);
+    REQUIRE(full.then);
+    CHECK(*full.then == Model::grains);
+    CHECK(full.reason.find("full shell") != std::string::npos);
+    // Nearly full is not full: the grains have room to move.
+    CHECK(choose_model(test::scene_with({{"fill", {{"ratio", 0.99}}}})).model == Model::grains);
+}
+
+TEST_CASE("full shells show only the first two behaviours like solid polygons", "[runs][models][auto]") {
+    // The empty-and-full observation's grid (assets/experiment.json) and 4 degrees, full only.
+    for (const char* shell : {"hexagon-small", "octagon-small", "decagon-small", "octadecagon-small"}) {
+        for (double angle : {4.0, 8.0, 12.0, 16.0, 20.0, 24.0}) {
+            const RunResult r =
+                run_scene(test::scene_with({{"shell", shell}, {"fill", {{"ratio", 1.0}}}, {"ramp", {{"angle_deg", angle}}}}));
+            INFO(shell << " at " << angle << " deg: " << to_string(r.measured.behaviour) << " " << r.measured.divergence);
+            CHECK((r.measured.behaviour == Behaviour::stopped_at_first_impact ||
+                   r.measured.behaviour == Behaviour::rolled_to_end));
+            CHECK(r.measured.max_energy_gain_J < 1e-6);
+        }
+    }
+}
+
+TEST_CASE("the free rigid body of a full shell carries its fill", "[runs][models][auto]") {
+    // 24 degrees: the full octagon leaves the ramp and flies as the free body; its mass and the fill
+    // reported are the rigid model's, shell and fill together.
+    const Scene s = test::scene_with({{"shell", "octagon-small"}, {"fill", {{"ratio", 1.0}}}, {"ramp", {{"angle_deg", 24.0}}}});
+    const RunResult r = run_scene(s);
+    REQUIRE(r.model_choice);
+    REQUIRE(r.model_choice->lift_off_time_s);
+    const RunResult frozen = run_scene(test::with_model(s, Model::rigid));
+    CHECK(frozen.fill_mass_kg > 0.1);
+    CHECK(r.fill_mass_kg == Approx(frozen.fill_mass_kg).epsilon(1e-9));
+    // Energy kept across the hand-over to the free body: the potential counts the fill's weight.
+    CHECK(r.measured.max_energy_gain_J < 1e-6);
+}
+
 TEST_CASE("auto on a filled shell computes exactly what the grain model computes", "[runs][models][auto]") {
     const Scene grains = test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.5}}}});
     const RunResult g = run_scene(grains);

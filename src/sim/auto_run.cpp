@@ -10,6 +10,8 @@
 
 namespace polyroll {
 
+bool fill_is_solid(const Scene& scene) { return scene.fill.ratio >= 1.0; }
+
 ModelChoice choose_model(const Scene& scene) {
     ModelChoice c;
     if (ramp_is_curved(scene.ramp)) {
@@ -25,6 +27,13 @@ ModelChoice choose_model(const Scene& scene) {
         c.reason =
             "empty shell: the rigid impact model is its exact limit (free to fly and slide), Box2D only at "
             "contacts it does not model (docs/physics.md)";
+    } else if (fill_is_solid(scene)) {
+        c.model = Model::rigid;
+        c.then = Model::grains;
+        c.reason =
+            "full shell: its grains have no room to move, so shell and fill are one rigid polygon and the rigid "
+            "impact model is its exact limit (free to fly and slide), Box2D only at contacts it does not model "
+            "(docs/physics.md)";
     } else {
         // docs/tradeoff/tradeoff.md, over its 21 scenes against the reference.
         c.model = Model::grains;

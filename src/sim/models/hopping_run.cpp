@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "sim/fill_plan.h"
+#include "sim/model_choice.h"
+#include "sim/models/reduced_models.h"
 #include "sim/models/reveal.h"
 #include "sim/run_snapshot.h"
 #include "sim/shell_properties.h"
@@ -29,6 +31,16 @@ HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene)
     body_.outer_m = shell_outer_polygon_m(scene.shell);
     body_.mass_kg = sp.mass_kg;
     body_.inertia_kg_m2 = sp.inertia_kg_m2;
+    // A full shell's fill turns with it (model_choice.h, fill_is_solid): a uniform polygon about the
+    // same centre. A free body of a shell partly full would have its centre of mass off the centre,
+    // which this body does not model; auto hands such shells to no free body.
+    if (fill_is_solid(scene)) {
+        const RollingBody b = rolling_body(scene);
+        const geom::AreaProperties inside = geom::polygon_properties(b.inner_m);
+        fill_mass_kg_ = b.fill_areal_density_kg_m2 * inside.area;
+        body_.mass_kg += fill_mass_kg_;
+        body_.inertia_kg_m2 += b.fill_areal_density_kg_m2 * inside.polar_moment_cm;
+    }
     rules_.angle_deg = scene.ramp.angle_deg;
     rules_.gravity_m_s2 = scene.run.gravity_m_s2;
     // Box2D mixes two fixtures' coefficients as sqrt(a b); the shell's fixtures carry the ramp's own.
@@ -118,6 +130,7 @@ RunResult HoppingRun::result() const {
     r.shell = shell_properties(scene_.shell);
     r.measured = finished() ? full_.measured : shown_;
     r.grains = 0;
+    r.fill_mass_kg = fill_mass_kg_;
     r.settled = true;
     r.steps = full_.steps;
     return r;

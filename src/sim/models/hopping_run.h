@@ -45,6 +45,7 @@ private:
     Scene scene_;
     HandOver from_;
     HopBody body_;
+    double fill_mass_kg_ = 0.0;  // a full shell's fill, turning with it (0 for an empty shell)
     HopRules rules_;
     HopRun full_;
     std::optional<long> hand_over_step_;
