@@ -62,7 +62,7 @@ TEST_CASE("the default scene is the issue's: small hexagon, BBs, r = 0.25, air t
     CHECK(s.ramp.angle_deg == 20.0);
     CHECK(s.release.pose == ReleasePose::vertex);
     CHECK(s.fidelity.preset == "standard");
-    // Model only what the scene requires (issue 13): auto, which for this filled shell is the grain simulation.
+    // Model only what the scene requires: auto, which for this filled shell is the grain simulation.
     CHECK(s.run.model == Model::automatic);
     CHECK(choose_model(s).model == Model::grains);
     CHECK(!choose_model(s).then);

@@ -1,4 +1,4 @@
-// `--model auto` (issue 13, items 1 and 2): the registry's rule, a filled shell computed exactly as
+// `--model auto`: the registry's rule, a filled shell computed exactly as
 // the grain model computes it, and an empty shell run by the rigid model, then from lift-off by the
 // free rigid body, then (only where that meets a contact it does not model) by Box2D, the records
 // carrying on across each hand-over; measured against the grain model on the issue's empty scenes.
@@ -221,7 +221,7 @@ TEST_CASE("auto on an empty shell that never lifts off is the rigid model throug
     CHECK(!summary_json(a).contains("engine"));
 }
 
-// Issue 13's measure for auto on the empty shells: the same behaviour as the grain model everywhere.
+// The measure auto was adopted on, for the empty shells: the same behaviour as the grain model everywhere.
 TEST_CASE("auto on the issue's empty shells behaves as the grain model does", "[models][auto]") {
     for (int sides : {6, 8, 10, 18}) {
         for (double angle : {5.0, 10.0, 20.0, 30.0}) {

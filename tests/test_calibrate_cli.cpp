@@ -1,5 +1,5 @@
 // polyroll calibrate as users run it: it finds again a value polyroll itself was run with (the
-// recovery test of issue 11, item 3), resumes from its folder, and refuses bad input with one line
+// recovery test), resumes from its folder, and refuses bad input with one line
 // and exit 2, writing nothing.
 #include <catch2/catch.hpp>
 

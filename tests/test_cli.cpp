@@ -68,7 +68,7 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
         CHECK(r.exit_code == 2);
         CHECK(line_count(r.out) == 1);
         for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
-        // CLI11's own wording is replaced by the program's (issue 16).
+        // CLI11's own wording is replaced by the program's.
         for (const char* cli11 : {"Could not convert", "At Most", "required but received", "not expected"})
             CHECK(r.out.find(cli11) == std::string::npos);
         CHECK(!fs::exists(out));
@@ -189,7 +189,7 @@ TEST_CASE("a mistyped or missing command is named with the closest one, and poly
 }
 
 TEST_CASE("the real-time factor keeps significant digits for slow runs", "[cli]") {
-    // A run at 0.4x real time printed "0x" (issue 16).
+    // A run at 0.4x real time printed "0x".
     CHECK(polyroll::real_time_text(1.0, 4.0) == "0.25x real time");
     CHECK(polyroll::real_time_text(1.0, 2.5) == "0.4x real time");
     CHECK(polyroll::real_time_text(1.0, 1000.0) == "0.001x real time");
@@ -238,7 +238,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
 
 TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") {
     const fs::path out = scratch("good-run");
-    // A trailing slash, as shells complete folder names: the files line joins it as a path (issue 16).
+    // A trailing slash, as shells complete folder names: the files line joins it as a path.
     const Result r = run_polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string() + "/");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -285,7 +285,7 @@ TEST_CASE("presets lists every bundled preset", "[cli]") {
         CHECK(r.out.find(name) != std::string::npos);
     CHECK(r.out.find("fidelity levels (assets/fidelity.json):") != std::string::npos);
     CHECK(r.out.find("fidelitys") == std::string::npos);
-    // Notes quote the experiment, not a "brief" the user never saw (issue 16).
+    // Notes quote the experiment, not a "brief" the user never saw.
     CHECK(run_polyroll("presets --json").out.find("brief") == std::string::npos);
 }
 
@@ -321,7 +321,7 @@ TEST_CASE("polyroll --version and polyroll-sandbox --version name the version, t
 }
 
 TEST_CASE("the shell is named for what it is: --sides 8 on the small hexagon is an octagon", "[cli]") {
-    // The header and summary.json said "hexagon-small (n = 8)" (issue 16).
+    // The header and summary.json said "hexagon-small (n = 8)".
     const fs::path out = scratch("octagon");
     const Result r = run_polyroll("run --sides 8 --fill 0 --time-limit 0.01 --out " + out.string());
     INFO(r.out);

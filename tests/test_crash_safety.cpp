@@ -1,4 +1,4 @@
-// Crash-safe output (issue 7): runs, renders and sweeps are killed with SIGKILL at seeded moments; what
+// Crash-safe output: runs, renders and sweeps are killed with SIGKILL at seeded moments; what
 // is on disk must be whole files only (each equal to the uninterrupted result), and running the same
 // command again must finish the job with nothing lost or duplicated. The moments are fractions of the
 // uninterrupted command's own duration, so the test means the same on a fast build and under ASan.

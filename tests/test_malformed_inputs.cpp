@@ -1,4 +1,4 @@
-// Every input error is an error message (issue 7): a table of malformed inputs, scene files and
+// Every input error is an error message: a table of malformed inputs, scene files and
 // flags, each of which must give exit code 2 and one printable line naming the field, quickly and in
 // bounded memory, with nothing written. Regression cases found by the fuzzer are at the end.
 #include <catch2/catch.hpp>
@@ -104,7 +104,7 @@ TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, n
         {"flag-nan", "", "--angle nan", "ramp.angle_deg"},
         {"flag-infinity", "", "--fill inf", "fill.ratio"},
         {"flag-negative-seed", "", "--seed -1", "--seed"},
-        // CLI11 clamped a number past 2^64-1 to 2^64-1 and ran (issue 15).
+        // CLI11 clamped a number past 2^64-1 to 2^64-1 and ran.
         {"flag-seed-past-2^64", "", "--seed 99999999999999999999", "0 to 2^64-1, got 99999999999999999999"},
         {"flag-seed-2^64", "", "--seed 18446744073709551616", "--seed"},
         {"flag-int-past-2^63", "", "--sides 99999999999999999999", "--sides 99999999999999999999: out of range"},

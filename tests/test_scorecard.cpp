@@ -126,7 +126,7 @@ TEST_CASE("scorecard: the band and D's slope agree when simulated as the paper s
 }
 
 TEST_CASE("scorecard: a band too narrow and too steep disagrees, by how much", "[scorecard]") {
-    // As polyroll showed it before issue 11: the third behaviour at 13.5-14 deg only, D jumping.
+    // As polyroll once showed it: the third behaviour at 13.5-14 deg only, D jumping.
     std::vector<std::pair<double, int>> stopping;
     for (double a = 9; a <= 17; a += 0.5) stopping.emplace_back(a, a == 13.5 ? 2 : a == 14.0 ? 3 : a == 12.5 ? 1 : 0);
     const ObservationScore s = score_observation(band_observation(), band_runs(stopping, 2.0, -26.0));

@@ -94,7 +94,7 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         {"--from " + out.string(), {out.string(), "no sweep plan"}},
         {"--fill 0.5 --from " + out.string(), {"not allowed with --from"}},
         {"--fill 0.5", {"exactly one of --out"}},
-        // Points no run could use are refused up front, not found afterwards as failed rows (issue 16).
+        // Points no run could use are refused up front, not found afterwards as failed rows.
         {"--fill 25,50 --angle 14 --out " + out.string(), {"fill.ratio = 25 (from --fill)", "from 0 to 1", "2 of 2 runs"}},
         {"--fill 0,5 --out " + out.string(), {"fill.ratio = 5", "1 of 2 runs"}},
         {"--sides 6 --seed 99999999999999999999 --out " + out.string(), {"run.seed", "0 to 2^64-1"}},
@@ -116,7 +116,7 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         for (const auto& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
         CHECK_FALSE(fs::exists(out));
     }
-    // A non-empty folder that is no sweep: the message suggests what sweep has, not --force (issue 16).
+    // A non-empty folder that is no sweep: the message suggests what sweep has, not --force.
     fs::create_directories(out);
     std::ofstream(out / "notes.txt") << "mine";
     const Result full = shell(exe + " sweep --fill 0 --out " + out.string());

@@ -1,4 +1,4 @@
-// `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells of issue 13
+// `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells it was adopted on
 // (n = 6, 8, 10, 18 at 5, 10, 20, 30 degrees): wall time, speed-up, hand-over and how far apart the
 // two runs end, with the rigid model alone and one grain run at the reference preset as yardsticks,
 // and what the rigid model's rolling needs (faces that would hop, friction). A benchmark prints;
@@ -11,7 +11,7 @@
 
 namespace polyroll::cli {
 
-// The empty shells of issue 13's first done-when: these side counts on ramps at these angles.
+// The empty shells the auto model was first measured on: these side counts on ramps at these angles.
 inline constexpr std::array<int, 4> kAutoBenchSides{6, 8, 10, 18};
 inline constexpr std::array<double, 4> kAutoBenchAnglesDeg{5.0, 10.0, 20.0, 30.0};
 

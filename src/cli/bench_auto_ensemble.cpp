@@ -56,7 +56,7 @@ void bench_auto_ensemble(const Scene& base, int members) {
     fmt::print("{:>3} {:>5} {:>24} {:>24} {:>24} {:>7} {:>7}  {}\n", "n", "deg", "auto", "grains", "fine", "a-fine",
                "g-fine", "nearer");
     int auto_within = 0, grains_within = 0, auto_nearer = 0, compared = 0;
-    constexpr double kWithin = 0.02;  // issue 13's 2%
+    constexpr double kWithin = 0.02;  // auto's agreement bound, 2%
     for (int sides : kAutoBenchSides) {
         for (double angle : kAutoBenchAnglesDeg) {
             Spread a, g, f;

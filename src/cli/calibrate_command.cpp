@@ -1,4 +1,4 @@
-// polyroll calibrate: fits chosen unmeasured scene fields to an observations file (issue 11, item 3).
+// polyroll calibrate: fits chosen unmeasured scene fields to an observations file.
 // The optimiser, the objective and the folder's growing plan are in sweep/calibration.*; this file
 // checks the command line, keeps the output folder (resume, --force) and writes the results.
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Command-line parse errors in polyroll's own words. CLI11 reports a bad flag as "Could not convert:
 // --fill = abc" or "At Most 1 required but received 2"; a user should read what was wrong, what is
-// allowed, and which command's --help to read, the way every other input error reads (issue 16).
+// allowed, and which command's --help to read, the way every other input error reads.
 #pragma once
 
 #include <map>

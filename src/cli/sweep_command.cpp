@@ -213,7 +213,7 @@ int run(const SweepArgs& a) {
         dir = a.out;
         plan = plan_from_args(a, notes);
         // A point no run could use (--fill 25) is refused before anything is written, not found
-        // after the sweep as a table of failed rows (issue 16).
+        // after the sweep as a table of failed rows.
         check = check_grid(plan);
         if (check.invalid > 0)
             throw InputError(fmt::format("sweep: {}; {} of {} runs cannot run, so none was started", check.first_invalid,

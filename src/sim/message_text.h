@@ -20,7 +20,7 @@ std::string open_failure_reason(int error_number);
 std::string json_error_text(std::string_view what);
 
 // How fast a run went against the wall clock: "120x real time", "5.3x real time", "0.25x real time".
-// Whole numbers hide nothing above 10x, but a run at 0.4x printed as "0x" (issue 16): below 10x, two
+// Whole numbers hide nothing above 10x, but a run at 0.4x printed as "0x": below 10x, two
 // significant digits. "too fast to time" when the clock saw no time pass.
 std::string real_time_text(double simulated_s, double wall_s);
 

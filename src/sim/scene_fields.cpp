@@ -207,8 +207,8 @@ std::vector<SceneField> make_table() {
         Row("run.model", T::choice, member<&Scene::run, &RunParams::model>())
             .choices<model_names, model_named>().flag("--model", 1).label("model")
             .help("physics: grains (Box2D simulates the shell and every grain), one of the experimenters' reduced "
-                  "models, or auto (the cheapest model the scene needs: rigid for an empty shell, going on as a free "
-                  "rigid body where it would lift off or slip; grains for a filled one)"),
+                  "models, or auto (the cheapest model the scene needs: rigid for an empty or a full shell, going on as a "
+                  "free rigid body where it would lift off or slip; grains for a partly filled one or a curved track)"),
         Row("run.seed", T::seed, member<&Scene::run, &RunParams::seed>())
             .flag("--seed").help("random seed for the grain packing"),
         Row("run.time_limit_s", T::number, member<&Scene::run, &RunParams::time_limit_s>())

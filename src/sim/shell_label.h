@@ -1,5 +1,5 @@
 // The shell named for what it is. A polygon preset with --sides changed is no longer that preset:
-// `--sides 8` on hexagon-small printed "hexagon-small (n = 8)" (issue 16). The label says the shape
+// `--sides 8` on hexagon-small printed "hexagon-small (n = 8)". The label says the shape
 // and where its other dimensions came from: "octagon (n = 8) with hexagon-small's size, walls and mass".
 #pragma once
 

@@ -1,4 +1,4 @@
-// Extending a sweep with more values (issue 16): `polyroll sweep --out DIR` with a grid that holds
+// Extending a sweep with more values: `polyroll sweep --out DIR` with a grid that holds
 // every run of the folder's plan, and more, runs only the new points. A run keeps its id when the
 // grid grows (the id is a hash of the base scene and the point, sweep_plan.h), so the runs already
 // finished are found by id, re-indexed to the wider plan's order, and kept.

@@ -1,5 +1,5 @@
 // What a sweep costs before it runs: an upper bound on one run's wall time from its scene, so the
-// sweep can say "at most about 40 min" before starting instead of after (issue 16).
+// sweep can say "at most about 40 min" before starting instead of after.
 #pragma once
 
 #include <string>

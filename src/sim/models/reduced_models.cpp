@@ -40,7 +40,7 @@ RollingTrack rolling_track(const Scene& scene) {
 
 RunResult run_reduced_model(const Scene& scene, FillMotion motion, bool until_invalid) {
     const auto start = std::chrono::steady_clock::now();
-    // Both models time each face from the energy integral (issue 13; face_clock.h): the rigid model is
+    // Both models time each face from the energy integral (face_clock.h): the rigid model is
     // what `--model auto` runs for an empty shell, and it agrees with the stepped series to about
     // 1e-11 (tests/test_face_clock.cpp runs the matrix with both fill motions).
     RollingTrack track = rolling_track(scene);
