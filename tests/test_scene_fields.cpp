@@ -43,6 +43,27 @@ TEST_CASE("the field table holds every field of a scene file, in its order", "[s
     }
 }
 
+TEST_CASE("each field's row reads and writes its own member and no other", "[scene][fields]") {
+    // A row whose member chain names the wrong member (two rows on one member, or a row writing one
+    // member and reading another) changes some other field or does not hold the value set.
+    const Scene base = resolve_scene({});
+    for (const SceneField& f : scene_fields()) {
+        FieldValue changed = f.access.get(base);
+        if (auto* d = std::get_if<double>(&changed)) *d += 0.125;
+        else if (auto* i = std::get_if<int>(&changed)) *i += 1;
+        else if (auto* o = std::get_if<std::optional<double>>(&changed)) *o = o->value_or(0.0) + 0.125;
+        else if (auto* seed = std::get_if<std::uint64_t>(&changed)) *seed += 1;
+        else if (auto* text = std::get_if<std::string>(&changed)) *text += "-changed";
+        else continue;  // the enumerations: two values each, their rows' names are checked elsewhere
+        Scene s = base;
+        f.access.set(s, changed);
+        INFO(f.path);
+        CHECK(f.access.get(s) == changed);
+        for (const SceneField& g : scene_fields())
+            if (g.path != f.path) CHECK(g.access.get(s) == g.access.get(base));
+    }
+}
+
 TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scene][fields]") {
     std::set<std::string_view> flags;
     std::vector<int> axes;

@@ -30,6 +30,12 @@ inline double release_pivot_x_m(const ShellProperties& shell) { return shell.out
 // against it.
 double release_slope_deg(const Scene& scene, const ShellProperties& shell);
 
+// Where every model ends a run: the centre this far down the ramp puts the polygon's front at the
+// ramp's end.
+inline double end_centre_x_m(const Scene& scene, const ShellProperties& shell) {
+    return scene.ramp.length_m - shell.outer_circumradius_m;
+}
+
 // The release pose: resting on face (0, 1), or on its downhill vertex turned past balance.
 ShellPose release_pose(const Scene& scene, const ShellProperties& shell);
 

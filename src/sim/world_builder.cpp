@@ -64,7 +64,7 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
     // Until the first step turns it (a curved track), gravity as at the release.
     w->gravity_m_s2 = gravity_at_m_s2(scene.ramp, scene.run.gravity_m_s2, release_pivot_x_m(w->shell_props));
     // The run ends when the front of the polygon reaches the ramp's end.
-    w->end_centre_x_m = scene.ramp.length_m - w->shell_props.outer_circumradius_m;
+    w->end_centre_x_m = end_centre_x_m(scene, w->shell_props);
 
     w->materials = std::make_unique<ContactMaterials>(w->scene);
     const b2Vec2 gravity_units = {static_cast<float>(w->units.to_units(w->gravity_m_s2.x)),

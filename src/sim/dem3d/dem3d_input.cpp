@@ -60,7 +60,7 @@ json script_input(const Scene& s, double frames_hz) {
                     {"tilt_deg", s.release.tilt_deg},
                     {"pose", s.release.pose == ReleasePose::vertex ? "vertex" : "face"}};
     j["pivot_vertex"] = 1;  // release_pose stands the shell on vertex 1, the downhill end of face (0, 1)
-    j["end_centre_x_m"] = s.ramp.length_m - p.outer_circumradius_m;  // as build_world
+    j["end_centre_x_m"] = end_centre_x_m(s, p);
     const MaterialParams& m = s.fill.material;
     j["fill"] = {{"grain_count", grain_count(s)},
                  {"grain_diameter_m", m.diameter_m},

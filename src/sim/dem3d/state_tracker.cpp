@@ -11,6 +11,7 @@
 
 #include "sim/fill_plan.h"
 #include "sim/geometry.h"
+#include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
 namespace polyroll::dem3d {
@@ -75,7 +76,7 @@ public:
     Measurer(const Scene& scene, const StateRow& release, const TrackRules& rules)
         : scene_(scene), rules_(rules), outer_(shell_outer_polygon_m(scene.shell)), release_(release) {
         pivot_radius_m_ = shell_properties(scene.shell).pivot_radius_m;
-        end_centre_x_m_ = scene.ramp.length_m - shell_properties(scene.shell).outer_circumradius_m;  // as build_world
+        end_centre_x_m_ = end_centre_x_m(scene, shell_properties(scene.shell));
         step_s_ = 1.0 / scene.fidelity.step_hz;
         m_.grains_inside = rules.grains;
     }

@@ -9,6 +9,7 @@
 #include "sim/models/reduced_models.h"
 #include "sim/models/reveal.h"
 #include "sim/run_snapshot.h"
+#include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
 namespace polyroll::models {
@@ -45,7 +46,7 @@ HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene)
     rules_.gravity_m_s2 = scene.run.gravity_m_s2;
     // Box2D mixes two fixtures' coefficients as sqrt(a b); the shell's fixtures carry the ramp's own.
     rules_.friction = scene.ramp.friction;
-    rules_.end_centre_x_m = scene.ramp.length_m - sp.outer_circumradius_m;  // as build_world
+    rules_.end_centre_x_m = end_centre_x_m(scene, sp);
     rules_.time_limit_s = scene.run.time_limit_s;
     rules_.sample_hz = scene.run.sample_hz;
     rules_.sample_grid_hz = scene.fidelity.step_hz;

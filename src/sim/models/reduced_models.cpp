@@ -29,7 +29,7 @@ RollingTrack rolling_track(const Scene& scene) {
     t.angle_deg = scene.ramp.angle_deg;
     t.gravity_m_s2 = scene.run.gravity_m_s2;
     t.start_rotation_rad = -release_pose(scene, sp).angle_rad;
-    t.end_centre_x_m = scene.ramp.length_m - sp.outer_circumradius_m;  // as build_world
+    t.end_centre_x_m = end_centre_x_m(scene, sp);
     t.time_limit_s = scene.run.time_limit_s;
     t.sample_hz = scene.run.sample_hz;
     t.sample_grid_hz = scene.fidelity.step_hz;  // rows at the grain tracker's sample times
