@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -611,8 +612,9 @@ TEST_CASE("the status line makes one speed statement: the chosen rate, or what t
     // Falling behind: the rate reached, with two significant digits, and what was asked; never
     // "real time" beside a lower figure.
     const std::string behind = speed_statement(1, true, false, 0.2412);
-    CHECK(behind == "0.24\u00D7 real time: as fast as this computer can (real time asked)");
-    CHECK(speed_statement(4, true, false, 0.031) == "0.031\u00D7 real time: as fast as this computer can (1/4\u00D7 asked)");
+    CHECK(behind == "playing at 0.24\u00D7 real time: this scene costs more than real time here");
+    CHECK(speed_statement(4, true, false, 0.031) ==
+          "playing at 0.031\u00D7 real time: this scene costs more than 1/4\u00D7 slow motion here");
     // Paused or ended: the clock's last verdict no longer applies.
     CHECK(speed_statement(1, false, false, 0.24) == "real time");
 }
@@ -675,4 +677,43 @@ TEST_CASE("exports write polyroll run's files per lane under numbered names", "[
     export_runs(next_numbered(dir, "run", ""), {r, r});
     CHECK(fs::exists(dir / "run-002" / "lane-2" / "trajectory.csv"));
     fs::remove_all(dir);
+}
+
+TEST_CASE("the demonstration presets are named for what they show and come first", "[app]") {
+    const PresetPanel panel = preset_panel();
+    std::vector<std::string> labels;
+    for (const PresetButton& b : panel.demos) labels.push_back(b.label);
+    CHECK(labels == std::vector<std::string>{"stops at its first impact", "stops abruptly", "rolls to a terminal velocity"});
+    // Each says in its description what it shows, and the grid's buttons carry their angle.
+    for (const PresetButton& b : panel.demos) CHECK_THAT(b.tooltip, Catch::Contains(b.label));
+    REQUIRE(!panel.rows.empty());
+    CHECK(panel.rows.front().buttons.front().angle_deg == 19.0);
+}
+
+TEST_CASE("the UI scale shown fits the window", "[app]") {
+    CHECK(fitted_ui_scale(2.0f, 800, 600) == Approx(1.0f));
+    CHECK(fitted_ui_scale(2.0f, 1920, 1080) == Approx(2.0f));
+    CHECK(fitted_ui_scale(1.0f, 1280, 800) == Approx(1.0f));
+    CHECK(fitted_ui_scale(2.5f, 1280, 800) == Approx(800.0f / kUiScaleWindowHeightPx));
+    CHECK(fitted_ui_scale(1.0f, 600, 400) == Approx(kUiScaleMin));
+}
+
+TEST_CASE("a scene file gives one lane whose controls rebuild the same scene, and a seed control", "[app]") {
+    const std::filesystem::path dir = test::scratch_dir("sandbox-scene-file", true);
+    const std::filesystem::path file = dir / "octagon.json";
+    std::ofstream(file) << R"({"shell": "octagon-small", "fill": {"ratio": 0.375, "material": "rice"},
+                              "ramp": {"angle_deg": 14}, "run": {"seed": 4}})";
+    SandboxState s = state_for_scene_file(file.string());
+    REQUIRE(s.lanes.size() == 1);
+    CHECK(s.preset.empty());
+    CHECK(s.scene_file == file.string());
+    const Scene scene = scenes_for(s).front();
+    CHECK(scene.shell.sides == 8);
+    CHECK(scene.fill.ratio == 0.375);
+    CHECK(scene.ramp.angle_deg == 14.0);
+    CHECK(scene.run.seed == 4);
+    set_seed(s.shared, 5);
+    CHECK(scenes_for(s).front().run.seed == 5);
+    CHECK_THROWS_AS(state_for_scene_file((dir / "missing.json").string()), InputError);
+    std::filesystem::remove_all(dir);
 }

@@ -1,6 +1,6 @@
-// The sandbox's physics budget (issue 13 item 3): which model it steps when the scenes asked for cannot
-// keep real time, that coarser grains keep the fill's mass, that full detail gives the scenes back as
-// asked, and what the panel says. Figures are set here (not the asset's measured ones), so the choices
+// The sandbox's physics budget: which cheaper model it offers when the scenes asked for cannot keep
+// real time, that coarser grains keep the fill's mass, that the window steps only what the user
+// picked (a slow machine plays the same run slower), and what the panel says. Figures are set here (not the asset's measured ones), so the choices
 // do not depend on the machine the asset was measured on.
 #include <catch2/catch.hpp>
 
@@ -54,7 +54,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a reduced model or an empty shell fits any budget") {
         const BudgetFigures f = figures(3e-6);
         for (const Scene& s : {test::with_model(big_rice(), Model::rigid), test::scene_with({{"fill", {{"ratio", 0.0}}}})}) {
-            const BudgetChoice c = choose_model({s}, f, f.physics_s_per_grain_step, false, false);
+            const BudgetChoice c = suggest_model({s}, f, f.physics_s_per_grain_step, false);
             CHECK(!c.reduced());
             CHECK(c.fits);
             CHECK(apply_choice({s}, f, c)[0].fill.material.diameter_m == s.fill.material.diameter_m);
@@ -63,7 +63,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a machine fast enough keeps the big scene as asked") {
         // 0.7 s of physics per simulated second buys 0.7 / 1e-7 grain steps: 7,000 grains at 1,000 steps/s.
         const BudgetFigures f = figures(1e-7);
-        const BudgetChoice c = choose_model(big, f, f.physics_s_per_grain_step, false, false);
+        const BudgetChoice c = suggest_model(big, f, f.physics_s_per_grain_step, false);
         CHECK(!c.reduced());
         CHECK(c.fits);
     }
@@ -71,7 +71,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
         // Between the cost of the grains as asked and 1 / 1.5^2 of it.
         const double cost = 0.7 / (grains * 1000.0) * 1.5;
         const BudgetFigures f = figures(cost);
-        const BudgetChoice c = choose_model(big, f, cost, false, false);
+        const BudgetChoice c = suggest_model(big, f, cost, false);
         REQUIRE(c.reduced());
         CHECK(f.levels.at(static_cast<size_t>(c.level)).grain_scale == 1.5);
         CHECK(f.levels.at(static_cast<size_t>(c.level)).fidelity.empty());
@@ -83,7 +83,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("much too slow: coarser grains first, then a coarser step") {
         const double cost = 0.7 / (grains * 1000.0) * 6.0;  // 2x grains alone (1/4) is not enough
         const BudgetFigures f = figures(cost);
-        const BudgetChoice c = choose_model(big, f, cost, true, false);
+        const BudgetChoice c = suggest_model(big, f, cost, true);
         REQUIRE(c.reduced());
         const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
         CHECK(l.grain_scale == 2.0);
@@ -98,18 +98,33 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     }
     SECTION("beyond every level: the cheapest, saying it still does not keep up") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = choose_model(big, f, f.physics_s_per_grain_step, false, false);
+        const BudgetChoice c = suggest_model(big, f, f.physics_s_per_grain_step, false);
         CHECK(c.level == static_cast<int>(f.levels.size()) - 1);
         CHECK(!c.fits);
-        CHECK_THAT(budget_statement(c, f), Catch::Contains("still slower"));
+        const BudgetChoice asked = picked_model(big, f, -1, f.physics_s_per_grain_step, false);
+        CHECK_THAT(budget_statement(asked, c, f), Catch::Contains("comes closer to real time"));
     }
-    SECTION("full detail keeps the scene as asked however slow") {
+    SECTION("the scene as asked stays as asked however slow, saying it plays slower") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = choose_model(big, f, f.physics_s_per_grain_step, false, true);
+        const BudgetChoice c = picked_model(big, f, -1, f.physics_s_per_grain_step, false);
         CHECK(!c.reduced());
         CHECK(!c.fits);
         CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m == big[0].fill.material.diameter_m);
-        CHECK_THAT(budget_statement(c, f), Catch::Contains("Full detail") && Catch::Contains("slower than real time"));
+        const BudgetChoice offer = suggest_model(big, f, f.physics_s_per_grain_step, false);
+        CHECK_THAT(budget_statement(c, offer, f),
+                   Catch::Contains("costs more than real time") && Catch::Contains("never differently"));
+    }
+    SECTION("a level is only ever the one picked, and its key names it on the command line") {
+        const BudgetFigures f = figures(1e-9);  // a fast machine: the scene fits as asked
+        const BudgetChoice c = picked_model(big, f, 1, f.physics_s_per_grain_step, false);
+        CHECK(c.level == 1);
+        CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m ==
+              Approx(f.levels[1].grain_scale * big[0].fill.material.diameter_m));
+        CHECK(level_from_key("none", f) == -1);
+        for (size_t i = 0; i < f.levels.size(); ++i) CHECK(level_from_key(level_key(f.levels[i]), f) == static_cast<int>(i));
+        CHECK(level_key(f.levels.back()) == "2x-draft");
+        CHECK_THROWS_WITH(level_from_key("3x", f), Catch::Contains("--coarser 3x") && Catch::Contains("allowed: none, 1.5x"));
+        CHECK_THROWS(picked_model(big, f, 99, f.physics_s_per_grain_step, false));
     }
 }
 
@@ -132,20 +147,25 @@ TEST_CASE("coarser grains keep the fill's mass and level in fewer grains", "[app
     CHECK_THROWS_WITH(with_coarser_grains(big_rice(), 0.5), Catch::Contains("0.5") && Catch::Contains("allowed"));
 }
 
-TEST_CASE("the panel names what the budget chose and what it costs", "[app][budget]") {
+TEST_CASE("the panel names what the budget offers and what it costs", "[app][budget]") {
     const BudgetFigures f = figures(0.7 / (900 * 1000.0) * 6.0);
-    const BudgetChoice c = choose_model({big_rice()}, f, f.physics_s_per_grain_step, false, false);
+    const BudgetChoice c = suggest_model({big_rice()}, f, f.physics_s_per_grain_step, false);
     REQUIRE(c.reduced());
     const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
-    const std::string said = budget_statement(c, f);
-    CHECK_THAT(said, Catch::Contains("To keep real time") && Catch::Contains(level_label(l)) &&
+    const BudgetChoice asked = picked_model({big_rice()}, f, -1, f.physics_s_per_grain_step, false);
+    const std::string said = budget_statement(asked, c, f);
+    CHECK_THAT(said, Catch::Contains("Offered: " + level_label(l)) && Catch::Contains("keeps real time") &&
                          Catch::Contains("same fill mass") && Catch::Contains("trade study"));
+    // Picked, the same level says it was picked and what it costs.
+    const BudgetChoice picked = picked_model({big_rice()}, f, c.level, f.physics_s_per_grain_step, false);
+    CHECK_THAT(budget_statement(picked, c, f), Catch::Contains("as picked") && Catch::Contains(level_label(l)) &&
+                                                   Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     // The level's measured error, as a percentage, and the full detail's beside it.
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * f.full_detail.terminal_velocity_error)));
     CHECK(budget_model_label("grains", l) == level_label(l));
     CHECK(budget_model_label("auto: grains", l) == "auto: " + level_label(l));
-    CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("full detail"));
+    CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("picked in the panel"));
     CHECK(level_label({2.0, "draft", 0, 0, 0, ""}) == "grains 2x larger, draft step");
     CHECK(level_label({1.5, "", 0, 0, 0, ""}) == "grains 1.5x larger");
     // A pile costs more per grain than loose grains: the grain steps grow faster than the grains.
@@ -153,36 +173,78 @@ TEST_CASE("the panel names what the budget chose and what it costs", "[app][budg
     CHECK(grain_steps_per_engine_step(1008, 1.0) == Approx(1009.0));
     CHECK(grain_steps_per_engine_step(1008, 1.84) / grain_steps_per_engine_step(251, 1.84) ==
           Approx(std::pow(1009.0 / 252.0, 1.84)));
-    CHECK_THAT(budget_statement(choose_model({big_rice()}, figures(1e-9), 1e-9, false, false), f),
-               Catch::Contains("as asked"));
+    const BudgetChoice fast = picked_model({big_rice()}, figures(1e-9), -1, 1e-9, false);
+    CHECK_THAT(budget_statement(fast, fast, f), Catch::Contains("as asked") && Catch::Contains("keeps real time"));
 }
 
-TEST_CASE("the sandbox's physics builds the budget's choice, and full detail restores the scene as asked",
-          "[app][budget][physics]") {
+TEST_CASE("the sandbox's physics builds the model picked and never another", "[app][budget][physics]") {
     // The large hexagon 0.6 full of rice: more than the asset's measured machine can step at real time,
     // yet quicker to build than full.
     const Scene asked = test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 0.6}, {"material", "rice"}}}});
     const BudgetFigures& f = budget_figures();
     REQUIRE(estimated_cost_s({asked}, f.physics_s_per_grain_step, f) > f.physics_share);
     SandboxPhysics physics(true, [] { return 0.0; });  // a capture: the asset's cost, no measuring
-    auto build = [&](bool full_detail) {
+    auto build = [&](int level) {
         PhysicsRequests r;
-        r.full_detail = full_detail;
+        r.model_level = level;
         r.restart_with = std::vector<Scene>{asked};
         r.wait_until_built = true;
         const PhysicsOutcome out = physics.run(r);
         REQUIRE(out.built);
         return physics.lanes().lane(0).grains();
     };
-    const int reduced = build(false);
-    REQUIRE(physics.budget_choice().reduced());
-    CHECK(physics.lanes().lane(0).scene().fill.material.diameter_m > asked.fill.material.diameter_m);
-    const int full = build(true);
+    // Too slow here, yet stepped as asked: the cheaper model is only offered.
+    const int full = build(-1);
     CHECK(!physics.budget_choice().reduced());
-    CHECK(physics.budget_choice().full_detail_asked);
+    CHECK(!physics.budget_choice().fits);
+    CHECK(physics.budget_offer().reduced());
     CHECK(physics.lanes().lane(0).scene().fill.material.diameter_m == asked.fill.material.diameter_m);
     CHECK(physics.lanes().lane(0).scene().fidelity.preset == asked.fidelity.preset);
+    // Picked, it is stepped.
+    const int reduced = build(physics.budget_offer().level);
+    REQUIRE(physics.budget_choice().reduced());
+    CHECK(physics.lanes().lane(0).scene().fill.material.diameter_m > asked.fill.material.diameter_m);
     CHECK(full > reduced);
-    // And back: the budget's choice again.
-    CHECK(build(false) == reduced);
+    // And back to the scene as asked.
+    CHECK(build(-1) == full);
+}
+
+// A slow machine: every call of the wall clock takes 4 ms, so a frame's 14 ms physics budget runs out
+// after a few steps. The run must stay the scene as asked (same grains, same size, same step) and play
+// slower instead, saying so; the cost it measured changes only the offer.
+TEST_CASE("a slow measured cost slows the playback and never changes the scene stepped", "[app][budget][physics]") {
+    const Scene asked = test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 0.6}, {"material", "rice"}}}});
+    double fake_now = 0.0;
+    SandboxPhysics physics(false, [&fake_now] { return fake_now += 0.004; });
+    PhysicsRequests build;
+    build.restart_with = std::vector<Scene>{asked};
+    build.wait_until_built = true;
+    build.play = true;
+    REQUIRE(physics.run(build).built);
+    const int grains = physics.lanes().lane(0).grains();
+    REQUIRE(grains > 200);
+    double simulated = 0.0;
+    for (int frame = 0; frame < 150; ++frame) {  // 2.5 s of wall time at 60 frames/s
+        PhysicsRequests r;
+        r.frame = PhysicsRequests::Frame{1.0 / 60.0, 1};
+        const PhysicsOutcome out = physics.run(r);
+        CHECK(!out.built);  // never rebuilt
+        simulated = out.time_s;
+    }
+    // The cost this window measured is far above the asset's: the offer is a cheaper level...
+    CHECK(physics.measured_cost_per_grain_step() > budget_figures().physics_s_per_grain_step);
+    CHECK(physics.budget_offer().reduced());
+    CHECK(physics.budget_offer().measured);
+    // ... but the lane is the scene as asked, from t = 0 on, played slower than real time.
+    CHECK(!physics.budget_choice().reduced());
+    const Scene& stepped = physics.lanes().lane(0).scene();
+    CHECK(stepped.fill.material.diameter_m == asked.fill.material.diameter_m);
+    CHECK(stepped.fidelity.preset == asked.fidelity.preset);
+    CHECK(stepped.fidelity.step_hz == asked.fidelity.step_hz);
+    CHECK(physics.lanes().lane(0).grains() == grains);
+    CHECK(simulated < 0.5 * 2.5);
+    CHECK(physics.clock().realtime_ratio() < 0.5);
+    CHECK(!physics.clock().keeping_up());
+    CHECK_THAT(speed_statement(1, true, physics.clock().keeping_up(), physics.clock().realtime_ratio()),
+               Catch::Contains("real time: this scene costs more than real time here"));
 }

@@ -77,7 +77,11 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(refusal("fill=1.5").rfind("fill=1.5: out of range (allowed: ", 0) == 0);
     CHECK(refusal("fill=nan").rfind("fill=nan: not a number", 0) == 0);
     CHECK(refusal("angle=95").rfind("angle=95: out of range (allowed: ", 0) == 0);
-    CHECK(refusal("angle=").rfind("angle=: not a number", 0) == 0);
+    // A key without a value, or a value without a key, is said as such.
+    CHECK(refusal("angle=").rfind("angle=: no value (allowed: ", 0) == 0);
+    CHECK(refusal("sides") == "sides=: no value (allowed: 3 to 64)");
+    CHECK(refusal("frames=") == "frames=: no value (allowed: 1 to 10000000)");
+    CHECK(refusal("=5") == "=5: no setting name before the '=' (allowed: " + page_query_keys() + ")");
     CHECK(refusal("frames=0") == "frames=0: out of range (allowed: 1 to 10000000)");
     // Not a whole number is said as such, not as "out of range".
     CHECK(refusal("frames=1.5") == "frames=1.5: not a whole number (allowed: 1 to 10000000)");
@@ -90,12 +94,33 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     const std::string material = refusal("material=sand");
     CHECK(material.rfind("material=sand: unknown (allowed: ", 0) == 0);
     CHECK(material.find("rice") != std::string::npos);
-    CHECK(refusal("colour=red") ==
-          "colour: unknown setting in the address (allowed: preset, sides, fill, material, angle, frames, paused, bench)");
+    CHECK(refusal("colour=red") == "colour: unknown setting in the address (allowed: " + page_query_keys() + ")");
+    CHECK(page_query_keys().rfind("preset, sides, fill, material, angle, ", 0) == 0);
     // A key given twice is refused naming it, whichever value came second (the page would show one of them).
     CHECK(refusal("fill=0.5&fill=0.3") == "fill=0.3: fill is given twice in the address (allowed: each setting once)");
     CHECK(refusal("paused&sides=6&paused=0") ==
           "paused=0: paused is given twice in the address (allowed: each setting once)");
     // Every refusal names its value; a good query is not refused.
     CHECK(refusal("preset=race&sides=8").empty());
+}
+
+// polyroll-sandbox's flags of the page's names go through the page's checks, the flag named as typed.
+TEST_CASE("window flags: the page's keys with the page's checks and the flag's own name", "[app][web]") {
+    const PageSettings p = parse_window_flags({{"sides", "8"}, {"fill", "0.375"}, {"material", "rice"},
+                                               {"angle", "14"}, {"seed", "3"}});
+    CHECK(*p.sides == 8);
+    CHECK(*p.fill_ratio == 0.375);
+    CHECK(*p.material == "rice");
+    CHECK(*p.angle_deg == 14.0);
+    CHECK(*p.seed == 3);
+    SandboxState s = state_for_preset("default");
+    apply_page_settings(p, s);
+    const Scene scene = scenes_for(s).front();
+    CHECK(scene.shell.sides == 8);
+    CHECK(scene.run.seed == 3);
+    CHECK_THROWS_WITH(parse_window_flags({{"sides", "99"}}), "--sides 99: out of range (allowed: 3 to 64)");
+    CHECK_THROWS_WITH(parse_window_flags({{"material", "sand"}}), Catch::StartsWith("--material sand: unknown (allowed: "));
+    CHECK_THROWS_WITH(parse_window_flags({{"seed", "1e3"}}), Catch::StartsWith("--seed 1e3: not a whole number"));
+    // A value holding the address's own separators is one value, not more of the address.
+    CHECK_THROWS_WITH(parse_window_flags({{"fill", "0.5&sides=9"}}), Catch::StartsWith("--fill 0.5&sides=9: not a number"));
 }

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 #include "app/sandbox_settings.h"
 #include "render/colour.h"
 #include "render/png_writer.h"
@@ -130,32 +132,101 @@ TEST_CASE("the sandbox plays at real time with the physics beside the drawing", 
     fs::remove_all(dir);
 }
 
-// Issue 13 item 3: the large hexagon full of rice is more than the asset's measured machine steps at
-// real time, so the window steps the budget's cheaper model and names it; --full-detail keeps the
-// scene as asked. (Which level fits is the asset's figures' business: tests/test_model_budget.cpp.)
-TEST_CASE("the sandbox steps a cheaper model of the large rice hexagon and names it, full detail on request",
-          "[app][sandbox]") {
+// The large hexagon 0.8 full of rice (grains) costs more than the asset's measured machine steps at
+// real time: the window steps it as asked all the same (same grains), says so, and offers the cheaper
+// model; only --coarser (or the panel's button) steps that one. From a scene file (--scene).
+TEST_CASE("the sandbox steps a costly scene as asked and a cheaper model only when picked", "[app][sandbox]") {
     const fs::path dir = scratch("budget");
-    const std::string bench =
-        "cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE + " --bench --frames 5";
-    const Run cheaper = run(bench);
+    std::ofstream(dir / "rice.json") << R"({"shell": "hexagon-large", "fill": {"ratio": 0.8, "material": "rice"},
+                                           "run": {"model": "grains"}})";
+    const std::string bench = "cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE +
+                              " --bench --frames 5 --scene rice.json";
+    const Run asked = run(bench);
+    INFO(asked.out);
+    REQUIRE(asked.exit_code == 0);
+    CHECK_THAT(asked.out, Catch::Contains("scene file rice.json"));
+    CHECK_THAT(asked.out, Catch::Contains("model        The scene as asked") &&
+                              Catch::Contains("never differently") && Catch::Contains("Offered: grains"));
+    CHECK_THAT(asked.out, Catch::Contains("fidelity standard"));
+    const Run cheaper = run(bench + " --coarser 2x");
     INFO(cheaper.out);
     REQUIRE(cheaper.exit_code == 0);
-    CHECK_THAT(cheaper.out, Catch::Contains("preset hexagon-large-rice"));
-    CHECK_THAT(cheaper.out, Catch::Contains("model        To keep real time: grains") &&
-                                Catch::Contains("same fill mass") && Catch::Contains("trade study"));
-    const Run full = run(bench + " --full-detail");
-    INFO(full.out);
-    REQUIRE(full.exit_code == 0);
-    CHECK_THAT(full.out, Catch::Contains("model        Full detail: the scene as asked"));
-    CHECK_THAT(full.out, Catch::Contains("fidelity standard"));
-    // The grains stepped: fewer for the cheaper model than for full detail.
+    CHECK_THAT(cheaper.out, Catch::Contains("model        Stepping a cheaper model, as picked: grains 2x larger") &&
+                                Catch::Contains("trade study"));
+    // The grains stepped: fewer for the cheaper model than as asked.
     auto grains = [](const std::string& out) {
         const auto at = out.find(" grains, fidelity");
         REQUIRE(at != std::string::npos);
         return std::stol(out.substr(out.rfind(", ", at) + 2));
     };
-    CHECK(grains(cheaper.out) < grains(full.out) / 2);
+    CHECK(grains(cheaper.out) < grains(asked.out) / 2);
+    fs::remove_all(dir);
+}
+
+namespace {
+
+using Box = std::array<double, 4>;  // x0, y0, x1, y1
+
+Box box_of(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()}; }
+
+bool overlap(const Box& a, const Box& b) { return a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]; }
+
+bool inside(double x, double y, const Box& b) { return x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3]; }
+
+}  // namespace
+
+// The window's layout at the sizes and UI scales a classroom uses: no panel's text runs past its
+// box's right edge (the control panel and the readout table may scroll down, nothing sideways), the
+// status band's text is whole inside it, the status covers no ramp's start and no lane badge, the
+// ramps' starts and the badges are inside the scene, and the speed plot, where shown, is no thumbnail.
+TEST_CASE("the sandbox's text fits its boxes and the status covers no ramp start at 800x600 to 1920x1080",
+          "[app][sandbox]") {
+    const fs::path dir = scratch("layout");
+    struct Case {
+        std::string size;
+        std::string scale;
+        std::string extra;
+    };
+    for (const Case& c : {Case{"800x600", "1", "--preset race"}, Case{"800x600", "2", "--preset race --colour-by speed"},
+                          Case{"1280x800", "1", "--preset race --colour-by speed"}, Case{"1280x800", "2", "--preset race"},
+                          Case{"1920x1080", "1", "--preset race"}, Case{"1920x1080", "2", "--preset race"},
+                          Case{"1280x800", "1", "--preset stops-abruptly --coarser 1.5x"}}) {
+        INFO(c.size << " at UI scale " << c.scale << " " << c.extra);
+        const fs::path report = dir / "layout.json";
+        const Run r = run("cd " + dir.string() + " && " + sandbox_env() + "xvfb-run -a -s \"-screen 0 1920x1080x24\" " +
+                          POLYROLL_SANDBOX_EXE + " " + c.extra + " --size " + c.size + " --ui-scale " + c.scale +
+                          " --frames 20 --layout-report " + report.string());
+        INFO(r.out);
+        REQUIRE(r.exit_code == 0);
+        const nlohmann::json j = nlohmann::json::parse(polyroll::test::read_file(report));
+        const double font = j.at("font_px").get<double>();
+        for (const auto& [name, window] : j.at("windows").items()) {
+            INFO(name);
+            const Box w = box_of(window), content = box_of(j.at("contents").at(name));
+            CHECK(content[2] <= w[2] + 1.0);  // nothing cut at the right
+            if (name == "status") CHECK(content[3] <= w[3] + 1.0);
+        }
+        const Box status = box_of(j.at("windows").at("status"));
+        const Box scene = box_of(j.at("scene"));
+        CHECK(scene[1] >= status[3] - 1.0);
+        const auto& starts = j.at("ramp_starts");
+        REQUIRE(!starts.empty());
+        for (const auto& p : starts) {
+            const double x = p.at(0).get<double>(), y = p.at(1).get<double>();
+            CHECK_FALSE(inside(x, y, status));
+            CHECK(inside(x, y, scene));
+        }
+        for (const auto& b : j.at("badges")) {
+            CHECK_FALSE(overlap(box_of(b), status));
+            CHECK(box_of(b)[1] >= scene[1] - 0.5);
+            CHECK(box_of(b)[0] >= scene[0] - 0.5);
+        }
+        if (j.at("plots").contains("speed")) {
+            const Box plot = box_of(j.at("plots").at("speed"));
+            CHECK(plot[2] - plot[0] >= 12.0 * font);
+            CHECK(plot[3] - plot[1] >= 6.0 * font);
+        }
+    }
     fs::remove_all(dir);
 }
 
@@ -204,13 +275,18 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
                                     std::string("--ui-scale 9"), std::string("--size 10x10"),
                                     std::string("--screenshot x.png"),
                                     // 0 frames would run forever (issue 16 row 7): refused, not "unlimited".
-                                    std::string("--frames 0"), std::string("--theme light")}) {
+                                    std::string("--frames 0"), std::string("--theme light"),
+                                    std::string("--coarser 3x")}) {
         INFO(args);
         const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + args);
         CHECK(r.exit_code == 2);
         CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
         CHECK_THAT(r.out, Catch::Contains("allowed") || Catch::Contains("needs"));
     }
+    // A scene file that cannot be read: one line naming it, exit 2.
+    const Run scene = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " --scene no-such-file.json");
+    CHECK(scene.exit_code == 2);
+    CHECK(scene.out == "polyroll-sandbox: scene file no-such-file.json: cannot be read: no such file or directory\n");
     // What CLI11 itself refuses reads in the program's words too, naming the value and what is allowed,
     // as polyroll's flags do ("Could not convert: --ui-scale = abc" before).
     struct Case {
@@ -223,7 +299,11 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
                           Case{"--theme", "polyroll-sandbox: --theme needs a value (allowed: projector, dark) (see "
                                           "polyroll-sandbox --help)\n"},
                           Case{"--ui-scal 2", "polyroll-sandbox: unknown flag '--ui-scal'; did you mean '--ui-scale'? "
-                                              "(see polyroll-sandbox --help)\n"}}) {
+                                              "(see polyroll-sandbox --help)\n"},
+                          // The page's keys as flags: the page's checks, the flag named as typed.
+                          Case{"--sides 99", "polyroll-sandbox: --sides 99: out of range (allowed: 3 to 64)\n"},
+                          Case{"--fill abc", "polyroll-sandbox: --fill abc: not a number (allowed: from 0 to 1)\n"},
+                          Case{"--seed -1", "polyroll-sandbox: --seed -1: not a whole number (allowed: 0 to 2^64-1)\n"}}) {
         INFO(c.args);
         const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + c.args);
         CHECK(r.exit_code == 2);

@@ -76,6 +76,9 @@ void set_fidelity(SharedControls& c, const std::string& preset) {
     c.fidelity = preset;
 }
 
+// Every 64-bit seed is one the core accepts (run.seed: 0 to 2^64-1): nothing to clamp.
+void set_seed(SharedControls& c, std::uint64_t seed) { c.seed = seed; }
+
 LaneControls lane_controls_from(const Scene& s) {
     LaneControls c;
     c.polygon = s.shell.preset;
@@ -96,6 +99,7 @@ SharedControls shared_controls_from(const Scene& s) {
     c.pose = s.release.pose;
     c.model = s.run.model;
     c.fidelity = s.fidelity.preset;
+    c.seed = s.run.seed;
     return c;
 }
 
@@ -122,7 +126,7 @@ json controls_layer(const LaneControls& lane, const SharedControls& shared) {
     doc["ramp"] = ramp;
     doc["release"] = json{{"pose", to_string(shared.pose)}};
     if (!shared.fidelity.empty()) doc["fidelity"] = json{{"preset", shared.fidelity}};
-    doc["run"] = json{{"model", to_string(shared.model)}};
+    doc["run"] = json{{"model", to_string(shared.model)}, {"seed", shared.seed}};
     return doc;
 }
 

@@ -4,6 +4,7 @@
 // No GLFW or ImGui here: the mapping is unit-tested without a window.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct SharedControls {
     ReleasePose pose = ReleasePose::vertex;
     Model model = Model::grains;
     std::string fidelity;       // fidelity preset (assets/fidelity.json)
+    std::uint64_t seed = 1;     // the grain packing's seed: the same seed, the same run
 };
 
 // Setters: clamp numbers, check names (InputError naming the value and the choices).
@@ -48,6 +50,7 @@ void set_ramp_restitution(SharedControls& c, double restitution);
 void set_release_pose(SharedControls& c, ReleasePose pose);
 void set_model(SharedControls& c, Model model);
 void set_fidelity(SharedControls& c, const std::string& preset);
+void set_seed(SharedControls& c, std::uint64_t seed);
 
 // The controls showing a resolved scene.
 LaneControls lane_controls_from(const Scene& s);

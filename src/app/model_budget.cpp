@@ -9,6 +9,7 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/fill_plan.h"
+#include "sim/model_choice.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll::app {
@@ -46,9 +47,14 @@ BudgetFigures load_figures() {
 // Engine steps per simulated second.
 double engine_hz(const Scene& s) { return s.fidelity.step_hz * s.fidelity.substeps; }
 
-// Whether the lane steps grains (auto does for a filled shell: model_choice.h).
+// Whether the lane steps grains: the grain model, or auto where it chooses grains at the start or
+// later (model_choice.h: not for an empty shell, nor a full one, whose grains cannot move).
 bool steps_grains(const Scene& s) {
-    return s.fill.ratio > 0.0 && (s.run.model == Model::grains || s.run.model == Model::automatic);
+    if (s.fill.ratio <= 0.0) return false;
+    if (s.run.model == Model::grains) return true;
+    if (s.run.model != Model::automatic) return false;
+    const ModelChoice c = choose_model(s);
+    return c.model == Model::grains || c.then == Model::grains;
 }
 
 double grains_of(const Scene& s, double packing) { return steps_grains(s) ? packing * estimated_grain_count(s) : 0.0; }
@@ -90,36 +96,63 @@ double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_
     return cost;
 }
 
-BudgetChoice choose_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
-                          bool measured, bool full_detail) {
+namespace {
+
+// The estimate of the lanes with `level` applied (-1: as asked); throws InputError for grains too
+// large for a shell.
+BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, int level, double cost_per_grain_step,
+                      bool measured) {
     BudgetChoice c;
-    c.full_detail_asked = full_detail;
     c.cost_per_grain_step = cost_per_grain_step;
     c.measured = measured;
     for (const Scene& s : scenes) c.grains_asked += grains_of(s, f.packing);
     c.cost_asked = estimated_cost_s(scenes, cost_per_grain_step, f);
-    c.grains_chosen = c.grains_asked;
-    c.cost_chosen = c.cost_asked;
-    c.fits = c.cost_asked <= f.physics_share;
-    if (full_detail || c.fits) return c;
+    c.level = level;
+    const std::vector<Scene> stepped = apply_choice(scenes, f, c);
+    if (c.reduced())
+        for (const Scene& s : stepped) validate_scene(s);
+    for (const Scene& s : stepped) c.grains_chosen += grains_of(s, f.packing);
+    c.cost_chosen = estimated_cost_s(stepped, cost_per_grain_step, f);
+    c.fits = c.cost_chosen <= f.physics_share;
+    return c;
+}
+
+}  // namespace
+
+BudgetChoice suggest_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
+                           bool measured) {
+    BudgetChoice c = estimate(scenes, f, -1, cost_per_grain_step, measured);
+    if (c.fits) return c;
     for (size_t i = 0; i < f.levels.size(); ++i) {
-        BudgetChoice t = c;
-        t.level = static_cast<int>(i);
-        std::vector<Scene> reduced;
         try {
-            reduced = apply_choice(scenes, f, t);
-            for (const Scene& s : reduced) validate_scene(s);
+            c = estimate(scenes, f, static_cast<int>(i), cost_per_grain_step, measured);
         } catch (const InputError&) {
             continue;  // grains this large do not fit this shell: the next level cannot either
         }
-        t.grains_chosen = 0.0;
-        for (const Scene& s : reduced) t.grains_chosen += grains_of(s, f.packing);
-        t.cost_chosen = estimated_cost_s(reduced, cost_per_grain_step, f);
-        t.fits = t.cost_chosen <= f.physics_share;
-        c = t;
-        if (t.fits) break;
+        if (c.fits) break;
     }
     return c;
+}
+
+BudgetChoice picked_model(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
+                          double cost_per_grain_step, bool measured) {
+    if (level < -1 || level >= static_cast<int>(f.levels.size()))
+        throw InputError(fmt::format("model level {}: out of range (allowed: -1 to {})", level, f.levels.size() - 1));
+    return estimate(scenes, f, level, cost_per_grain_step, measured);
+}
+
+std::string level_key(const BudgetLevel& level) {
+    return fmt::format("{:g}x", level.grain_scale) + (level.fidelity.empty() ? "" : "-" + level.fidelity);
+}
+
+int level_from_key(const std::string& key, const BudgetFigures& f) {
+    std::string allowed = "none";
+    for (size_t i = 0; i < f.levels.size(); ++i) {
+        if (level_key(f.levels[i]) == key) return static_cast<int>(i);
+        allowed += ", " + level_key(f.levels[i]);
+    }
+    if (key == "none") return -1;
+    throw InputError(fmt::format("--coarser {}: unknown (allowed: {})", key, allowed));
 }
 
 std::vector<Scene> apply_choice(const std::vector<Scene>& scenes, const BudgetFigures& f, const BudgetChoice& c) {
@@ -137,24 +170,36 @@ std::string level_label(const BudgetLevel& level) {
     return label;
 }
 
-std::string budget_statement(const BudgetChoice& c, const BudgetFigures& f) {
-    if (c.full_detail_asked) {
-        if (c.fits) return "Full detail: the scene as asked, within the physics budget for real time.";
-        return fmt::format("Full detail: the scene as asked (about {} grains), slower than real time on this computer "
-                           "(the line over the scene says how much).",
-                           grains_text(c.grains_asked));
-    }
-    if (!c.reduced()) return "The scene as asked, within the physics budget for real time.";
-    const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
+std::string level_errors(const BudgetLevel& level, const BudgetFigures& f) {
     const std::string behaviours =
-        l.wrong_behaviours == 0 ? fmt::format("the same behaviour in all {} scenes", l.scenes)
-                                : fmt::format("behaviour changed in {} of {} scenes", l.wrong_behaviours, l.scenes);
-    return fmt::format(
-        "{}: {} (about {} -> {} grains, same fill mass). Costs, per the trade study: terminal velocity {} off on "
-        "average (full detail {}), {}.{}",
-        c.fits ? "To keep real time" : "Closer to real time (still slower)", level_label(l), grains_text(c.grains_asked),
-        grains_text(c.grains_chosen), percent(l.terminal_velocity_error), percent(f.full_detail.terminal_velocity_error),
-        behaviours, c.measured ? " Chosen from the cost measured on this computer." : "");
+        level.wrong_behaviours == 0
+            ? fmt::format("the same behaviour in all {} scenes", level.scenes)
+            : fmt::format("behaviour changed in {} of {} scenes", level.wrong_behaviours, level.scenes);
+    return fmt::format("terminal velocity {} off on average (full detail {}), {}", percent(level.terminal_velocity_error),
+                       percent(f.full_detail.terminal_velocity_error), behaviours);
+}
+
+std::string budget_statement(const BudgetChoice& stepped, const BudgetChoice& offer, const BudgetFigures& f) {
+    if (stepped.reduced()) {
+        const BudgetLevel& l = f.levels.at(static_cast<size_t>(stepped.level));
+        return fmt::format("Stepping a cheaper model, as picked: {} (about {} -> {} grains, same fill mass){}. Costs, "
+                           "per the trade study: {}.",
+                           level_label(l), grains_text(stepped.grains_asked), grains_text(stepped.grains_chosen),
+                           stepped.fits ? "" : ", still slower than real time here", level_errors(l, f));
+    }
+    if (stepped.fits) return "The scene as asked; it keeps real time on this computer.";
+    std::string said = fmt::format("The scene as asked (about {} grains) costs more than real time on this computer: it "
+                                   "plays slower (the line over the scene says how much), never differently.",
+                                   grains_text(stepped.grains_asked));
+    if (offer.reduced()) {
+        const BudgetLevel& l = f.levels.at(static_cast<size_t>(offer.level));
+        said += fmt::format(" Offered: {} (about {} -> {} grains, same fill mass), which {} real time here; per the "
+                            "trade study: {}.",
+                            level_label(l), grains_text(offer.grains_asked), grains_text(offer.grains_chosen),
+                            offer.fits ? "keeps" : "comes closer to", level_errors(l, f));
+    }
+    if (stepped.measured) said += " Measured on this computer.";
+    return said;
 }
 
 }  // namespace polyroll::app

@@ -1,9 +1,12 @@
-// The sandbox's physics budget (issue 13 item 3): when the scenes asked for cannot be stepped at real
-// time on this machine, the closest cheaper model that can: coarser grains of the same total mass
-// first, then a coarser step, as far as the trade study measured them. The figures (the machine's
-// cost per grain step, the share of a frame the physics may take, and each level's measured error)
-// are in assets/sandbox-budget.json; the cost per grain step is replaced by what the window
-// measures once it has stepped a scene. Plain data and functions: no GLFW, ImGui or threads.
+// The sandbox's physics budget: what a scene costs to step at real time on this machine, and which
+// cheaper model (coarser grains of the same total mass first, then a coarser step, as far as the
+// trade study measured them) would keep real time. The window never applies that model by itself:
+// the same scene gives the same run on any machine, a slow one only plays it slower. The budget
+// offers the cheaper model in the panel, with its measured errors, and the user picks it or not.
+// The figures (the machine's cost per grain step, the share of a frame the physics may take, and
+// each level's measured error) are in assets/sandbox-budget.json; the cost per grain step is
+// replaced by what the window measures once it has stepped a scene (it changes the offer only).
+// Plain data and functions: no GLFW, ImGui or threads.
 #pragma once
 
 #include <string>
@@ -39,9 +42,9 @@ struct BudgetFigures {
 // The figures of assets/sandbox-budget.json (throws if the file is malformed).
 const BudgetFigures& budget_figures();
 
-// What the budget chose for a set of lanes.
+// A model for a set of lanes, with its estimated cost: the one stepped (the scenes as asked, or the
+// level the user picked) or the one the budget offers.
 struct BudgetChoice {
-    bool full_detail_asked = false;   // the user asked for full detail: nothing changed
     int level = -1;                   // index into BudgetFigures::levels; -1: the scenes as asked
     double grains_asked = 0.0;        // estimated grains over all lanes, as asked
     double grains_chosen = 0.0;       // ... as chosen
@@ -61,11 +64,20 @@ double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_
 // The grain steps one engine step of a lane of `grains` grains counts for (the measured cost's unit).
 double grain_steps_per_engine_step(double grains, double cost_exponent);
 
-// Chooses for the lanes: the scenes as asked if they fit the budget (or full detail is asked), else
-// the first level that fits, else the cheapest level (then `fits` is false). A level that would make
-// a scene invalid (grains too large for its shell) is passed over.
-BudgetChoice choose_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
-                          bool measured, bool full_detail);
+// The offer: the scenes as asked if they fit the budget, else the first level that fits, else the
+// cheapest level (then `fits` is false). A level that would make a scene invalid (grains too large
+// for its shell) is passed over. Only ever shown: the window steps what the user picked.
+BudgetChoice suggest_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
+                           bool measured);
+// The model the user picked: `level` -1 (the scenes as asked) or an index into f.levels (throws
+// InputError for an index out of range, or a level whose grains do not fit a lane's shell).
+BudgetChoice picked_model(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
+                          double cost_per_grain_step, bool measured);
+
+// A level's short key, for --coarser: "1.5x", "2x", "2x-draft".
+std::string level_key(const BudgetLevel& level);
+// The level with that key (-1 for "none"); throws InputError naming the keys allowed.
+int level_from_key(const std::string& key, const BudgetFigures& f);
 
 // The scenes with the choice applied (the scenes unchanged when nothing was reduced).
 std::vector<Scene> apply_choice(const std::vector<Scene>& scenes, const BudgetFigures& f, const BudgetChoice& c);
@@ -74,10 +86,15 @@ std::vector<Scene> apply_choice(const std::vector<Scene>& scenes, const BudgetFi
 // "grains 2x larger, draft step".
 std::string level_label(const BudgetLevel& level);
 
-// The panel's statement of what the budget did and what it costs, from the trade study:
-// "To keep real time: grains 2x larger (about 1010 -> 250 grains, same mass). Trade study: terminal
-// velocity 7.4% off on average (full detail 4.6%), behaviour changed in 1 of 17 scenes." Or that the
-// scenes run as asked, or at full detail and slower than real time.
-std::string budget_statement(const BudgetChoice& c, const BudgetFigures& f);
+// What a level costs in accuracy, from the trade study: "terminal velocity 4.7% off on average (full
+// detail 5.0%), behaviour changed in 1 of 17 scenes".
+std::string level_errors(const BudgetLevel& level, const BudgetFigures& f);
+
+// The panel's statement of the model stepped and, when the scenes as asked cost more than real time
+// here, of the offer: "The scene as asked (about 1010 grains) costs more than real time here: it
+// plays slower, never differently. Grains 2x larger would keep real time (about 1010 -> 250 grains,
+// same fill mass): terminal velocity 4.7% off on average (full detail 5.0%), ..." Or, for a picked
+// level, what it is and what it costs.
+std::string budget_statement(const BudgetChoice& stepped, const BudgetChoice& offer, const BudgetFigures& f);
 
 }  // namespace polyroll::app

@@ -2,9 +2,12 @@
 #include "app/page_settings.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
@@ -60,6 +63,7 @@ double field_number(const std::string& key, const std::string& text, std::string
     const SceneField& f = scene_field(path);
     const std::optional<double> v = number_from(text);
     const std::string allowed = field_allowed(f);
+    if (text.empty()) throw InputError(fmt::format("{}=: no value (allowed: {})", key, allowed));
     if (!v) throw InputError(fmt::format("{}={}: not a number (allowed: {})", key, text, allowed));
     const bool below = f.min_open ? *v <= f.min : *v < f.min;
     const bool above = f.max_open ? *v >= f.max : *v > f.max;
@@ -77,7 +81,7 @@ std::string join(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::string page_query_keys() { return "preset, sides, fill, material, angle, frames, paused, bench"; }
+std::string page_query_keys() { return "preset, sides, fill, material, angle, seed, frames, paused, bench"; }
 
 PageSettings parse_page_query(std::string_view query) {
     if (!query.empty() && query.front() == '?') query.remove_prefix(1);
@@ -107,12 +111,22 @@ PageSettings parse_page_query(std::string_view query) {
             p.fill_ratio = field_number(key, value, "fill.ratio");
         } else if (key == "angle") {
             p.angle_deg = field_number(key, value, "ramp.angle_deg");
+        } else if (key == "seed") {
+            // Digits only, as polyroll run --seed takes them: "-1" or "1e3" would not be this seed.
+            std::uint64_t seed = 0;
+            const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seed);
+            if (value.empty() || error != std::errc() || end != value.data() + value.size())
+                throw InputError(fmt::format("seed={}: not a whole number (allowed: {})", value,
+                                             field_allowed(scene_field("run.seed"))));
+            p.seed = seed;
         } else if (key == "material") {
             const std::vector<std::string> names = assets::preset_names(assets::Kind::material);
             if (std::find(names.begin(), names.end(), value) == names.end())
                 throw InputError(fmt::format("material={}: unknown (allowed: {})", value, join(names)));
             p.material = value;
         } else if (key == "frames") {
+            if (value.empty())
+                throw InputError(fmt::format("frames=: no value (allowed: 1 to {})", kMaxPageFrames));
             const std::optional<double> v = number_from(value);
             if (!v || *v != std::floor(*v))
                 throw InputError(
@@ -128,9 +142,41 @@ PageSettings parse_page_query(std::string_view query) {
             if (!value.empty() && value != "1" && value != "0")
                 throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
             p.bench = value != "0";
+        } else if (key.empty()) {
+            // "?=5" or "?&=&": a value with no name before it (a link cut or mistyped).
+            throw InputError(fmt::format("={}: no setting name before the '=' (allowed: {})", value, page_query_keys()));
         } else {
             throw InputError(fmt::format("{}: unknown setting in the address (allowed: {})", key, page_query_keys()));
         }
+    }
+    return p;
+}
+
+PageSettings parse_window_flags(const std::vector<std::pair<std::string, std::string>>& flags) {
+    PageSettings p;
+    for (const auto& [key, value] : flags) {
+        // Each flag through the address's own checks, its value percent-encoded so that no '&', '='
+        // or '%' in it reads as more of the address.
+        std::string encoded;
+        for (const char c : value) {
+            if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') encoded += c;
+            else encoded += fmt::format("%{:02X}", static_cast<unsigned char>(c));
+        }
+        PageSettings one;
+        try {
+            one = parse_page_query(key + "=" + encoded);
+        } catch (const InputError& e) {
+            // "sides=99: out of range ..." -> "--sides 99: out of range ...".
+            const std::string said = e.what(), as_page = key + "=" + value;
+            const std::string rest = said.rfind(as_page, 0) == 0 ? said.substr(as_page.size()) : ": " + said;
+            throw InputError(fmt::format("--{} {}{}", key, value, rest));
+        }
+        if (one.preset) p.preset = one.preset;
+        if (one.sides) p.sides = one.sides;
+        if (one.fill_ratio) p.fill_ratio = one.fill_ratio;
+        if (one.material) p.material = one.material;
+        if (one.angle_deg) p.angle_deg = one.angle_deg;
+        if (one.seed) p.seed = one.seed;
     }
     return p;
 }
@@ -142,6 +188,7 @@ void apply_page_settings(const PageSettings& page, SandboxState& state) {
     if (page.fill_ratio) set_fill_ratio(lane, *page.fill_ratio);
     if (page.material) set_material(lane, *page.material);
     if (page.angle_deg) set_angle_deg(state.shared, *page.angle_deg);
+    if (page.seed) set_seed(state.shared, *page.seed);
     if (page.paused) state.playing = false;
     scenes_for(state);  // a combination out of range (too many grains) is refused here, named
 }

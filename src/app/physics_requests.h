@@ -17,9 +17,9 @@ struct PhysicsRequests {
 
     // The window found this lane's snapshot not finite: stop every lane with a message.
     std::optional<size_t> non_finite_lane;
-    // Full detail (true: the scenes as asked, however slow) or the budget's choice (false), for the
-    // next restart_with; the UI sends both together.
-    std::optional<bool> full_detail;
+    // The model the user picked for the next restart_with: -1 the scenes as asked, else an index into
+    // the budget's levels (model_budget.h). The UI sends both together; nothing else changes it.
+    std::optional<int> model_level;
     // Throw the lanes away and build these (Reset, a preset, an applied change): back to t = 0, and
     // no longer running to the end.
     std::optional<std::vector<Scene>> restart_with;
@@ -41,7 +41,7 @@ struct PhysicsRequests {
     std::optional<Frame> frame;
 
     bool has_commands() const {
-        return non_finite_lane || full_detail || restart_with || wait_until_built || play || step || run_to_end;
+        return non_finite_lane || model_level || restart_with || wait_until_built || play || step || run_to_end;
     }
 };
 
@@ -55,7 +55,6 @@ struct PhysicsOutcome {
     bool build_failed = false;   // a lane could not be built (the message: LaneSet::build_error)
     bool finished = false;       // every lane's run has ended
     bool trouble = false;        // numerical trouble stopped the lanes (the message: LaneSet::trouble)
-    bool rechosen = false;       // the budget measured the scene too slow and rebuilt it coarser (from t = 0)
 
     bool run_over() const { return finished || trouble; }
 };

@@ -67,16 +67,18 @@ std::string budget_model_label(const std::string& model_label, const BudgetLevel
 }
 
 std::string budget_status(const BudgetLevel& level) {
-    return fmt::format("Cheaper model to keep real time: {} (full detail: in the panel)", level_label(level));
+    return fmt::format("Cheaper model, picked in the panel: {}", level_label(level));
 }
 
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio) {
-    std::string asked = slow_divisor == 1 ? std::string("real time")
-                                          : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);
+    std::string asked = slow_divisor == 1
+                            ? std::string("real time")
+                            : fmt::format("1/{}\u00D7 slow motion ({}\u00D7 slower)", slow_divisor, slow_divisor);
     if (!stepping || keeping_up) return asked;
-    // Two significant digits: a slow scene reads 0.24x or 0.031x, never 0x.
-    return fmt::format("{:.2g}\u00D7 real time: as fast as this computer can ({} asked)", ratio,
-                       slow_divisor == 1 ? asked : fmt::format("1/{}\u00D7", slow_divisor));
+    // Two significant digits: a slow scene reads 0.24x or 0.031x, never 0x. The run is the same on
+    // any computer: only how fast it plays depends on this one.
+    return fmt::format("playing at {:.2g}\u00D7 real time: this scene costs more than {} here", ratio,
+                       slow_divisor == 1 ? asked : fmt::format("1/{}\u00D7 slow motion", slow_divisor));
 }
 
 std::string clamp_note(std::string_view label, double typed, double min, double max) {

@@ -41,13 +41,13 @@ std::string model_label(const Scene& scene, const ModelChoice* choice);
 // The model entry of a lane the physics budget made cheaper: "grains 2x larger, draft step" for
 // the grain model, "auto: grains, grains 2x larger" otherwise.
 std::string budget_model_label(const std::string& model_label, const BudgetLevel& level);
-// The status line's note of it: "Cheaper model to keep real time: grains 2x larger (full detail: in
-// the panel)".
+// The status line's note of a cheaper model the user picked: "Cheaper model, picked in the panel:
+// grains 2x larger".
 std::string budget_status(const BudgetLevel& level);
 
 // The status line's one statement of how fast the run plays (issue 16 row 9): the chosen rate
 // ("real time", "1/4\u00D7 slow motion (4\u00D7 slower)") while the computer keeps up, else the rate it
-// reaches and what was asked ("0.24\u00D7 real time: as fast as this computer can (real time asked)").
+// reaches and why ("playing at 0.24\u00D7 real time: this scene costs more than real time here").
 // `keeping_up` false only counts while stepping; `ratio` is simulated seconds per wall second.
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio);
 

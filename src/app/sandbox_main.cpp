@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <regex>
@@ -14,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/divergence.h"
 #include "cli/parse_errors.h"
@@ -71,7 +73,11 @@ struct Options {
     bool follow = false;
     std::string colour_by = "material";
     bool paused = false;
-    bool full_detail = false;
+    std::string coarser = "none";  // a cheaper model picked by its key (model_budget.h), or none
+    // The page's keys as flags (page_settings.h), checked as the address is: (key, value) as given.
+    std::vector<std::pair<std::string, std::string>> scene_flags;
+    std::string scene_file;      // --scene FILE: one lane from a scene file
+    std::string layout_report;   // --layout-report FILE: the last frame's layout as JSON (the layout tests)
     // Parsed.
     int width_px = kDefaultWidthPx, height_px = kDefaultHeightPx;
     bool capture() const { return frames > 0 && !bench; }
@@ -97,6 +103,9 @@ void check(Options& o) {
         throw InputError(fmt::format("--theme {}: unknown (allowed: projector, dark)", o.theme));
     if (o.colour_by != "material" && o.colour_by != "speed")
         throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
+    if (!o.layout_report.empty() && o.frames < 1)
+        throw InputError(fmt::format("--layout-report {}: needs --frames N (the frame whose layout it writes)",
+                                     o.layout_report));
     if (!o.screenshot.empty()) {
         const fs::path parent = fs::absolute(o.screenshot).parent_path();
         std::error_code ec;
@@ -128,7 +137,7 @@ struct BenchStats {
         const double sim = sim_end_s - sim_start_s, wall = wall_end_s - wall_start_s;
         // The real-time ratio counts only the frames in which something was still running.
         const double rt_wall = running_wall_s > 0 ? running_wall_s : wall;
-        fmt::print("polyroll-sandbox --bench: preset {}, {} lane(s), {} grains, fidelity {}, GL {}\n", preset,
+        fmt::print("polyroll-sandbox --bench: {}, {} lane(s), {} grains, fidelity {}, GL {}\n", preset,
                    lanes.size(), grains, lanes.lane(0).scene().fidelity.preset, gl);
         fmt::print("  build        {:.2f} s (pouring and settling, on a worker thread)\n", build_s);
         fmt::print("  frames       {} in {:.2f} s: {:.1f} frames/s\n", frame_s.size(), wall, n / wall);
@@ -160,10 +169,11 @@ public:
         ctx_.lanes = &physics_.lanes();
         ctx_.clock = &physics_.clock();
         ctx_.budget = &physics_.budget_choice();
+        ctx_.budget_offer = &physics_.budget_offer();
     }
 
     int run() {
-        pending_.full_detail = s_.full_detail;  // --full-detail
+        pending_.model_level = s_.model_level;  // --coarser
         apply_controls();
         pending_.play = s_.playing;  // --paused
         // A capture or a benchmark starts from the built scene, whatever the machine's speed.
@@ -202,7 +212,7 @@ public:
             last = t0;
             const bool final_frame = frames > 0 && frame + 1 >= frames;
             const bool was_running = lanes().ready() && !last_.run_over();
-            const FrameTimes times = frame_once(wall_dt, final_frame && !o_.screenshot.empty());
+            const FrameTimes times = frame_once(wall_dt, final_frame);
             ++frame;
             if (o_.bench) {
                 bench.frame_s.push_back(now_s() - t0);
@@ -229,11 +239,15 @@ public:
                     take(worker_.run(std::exchange(pending_, {})));
                 }
                 bench.steps = steps_;
-                bench.print(lanes(), last_.time_s, now_s(), s_.preset, win_.gl_renderer(), build_s);
-                fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), budget_figures()));
+                bench.print(lanes(), last_.time_s, now_s(),
+                            s_.scene_file.empty() ? "preset " + s_.preset : "scene file " + s_.scene_file,
+                            win_.gl_renderer(), build_s);
+                fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), physics_.budget_offer(),
+                                                                   budget_figures()));
             }
             if (o_.capture()) {
-                fmt::print("polyroll-sandbox: {} frames of preset {} ({:.2f} s simulated{}){}\n", frames, s_.preset,
+                fmt::print("polyroll-sandbox: {} frames of {} ({:.2f} s simulated{}){}\n", frames,
+                           s_.scene_file.empty() ? "preset " + s_.preset : "scene file " + s_.scene_file,
                            last_.time_s, last_.trouble ? ", stopped by numerical trouble" : "",
                            o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
                 if (lanes().trouble()) fmt::print("  {}\n", *lanes().trouble());
@@ -261,28 +275,37 @@ private:
     // share the frame's time instead of taking turns. A capture (--frames) runs its frame's job
     // first instead and waits for it, so that its last frame shows the moment its frame count
     // promises.
-    FrameTimes frame_once(double wall_dt, bool screenshot_after) {
-        win_.set_ui_scale(s_.ui_scale);
+    FrameTimes frame_once(double wall_dt, bool final_frame) {
+        const bool screenshot_after = final_frame && !o_.screenshot.empty();
+        // The scale shown fits the window (the size of the last frame; the asked size before the first).
+        const ImVec2 last_size = ImGui::GetIO().DisplaySize;
+        const float scale = fitted_ui_scale(s_.ui_scale, last_size.x > 0 ? last_size.x : static_cast<float>(o_.width_px),
+                                            last_size.y > 0 ? last_size.y : static_cast<float>(o_.height_px));
+        ctx_.ui_scale_shown = scale;
+        win_.set_ui_scale(scale);
         win_.set_high_contrast(s_.high_contrast);
         win_.begin_frame();
         FrameTimes times;
         if (o_.capture()) times.physics_s = take(worker_.run(frame_requests(wall_dt)));
 
         const ImGuiIO& io = ImGui::GetIO();
-        const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, s_.ui_scale);
+        const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, scale);
         UiRequests req;
         read_shortcuts(s_, req);
         ctx_.running_to_end = last_.running_to_end;
+        ctx_.run_over = lanes().ready() && last_.run_over() && !last_.running_to_end;
         ctx_.large_font = win_.large_font();
-        draw_control_panel(s_, ctx_, L, req);
-        draw_readouts_and_plots(s_, ctx_, L);
-        draw_status(s_, ctx_, L);
+        // The layout is reported for the capture's last frame (--layout-report).
+        UiLayoutReport report;
+        UiLayoutReport* const rep = final_frame && !o_.layout_report.empty() ? &report : nullptr;
+        draw_control_panel(s_, ctx_, L, req, rep);
+        draw_readouts_and_plots(s_, ctx_, L, rep);
+        const float top = draw_status(s_, ctx_, L, rep);
 
         int fb_w = 0, fb_h = 0;
         win_.framebuffer_size(fb_w, fb_h);
         const float ratio = win_.pixel_ratio();
-        // The scene fills the rest, below the status line (which would cover the top of the ramp).
-        const float top = kBaseFontPx * s_.ui_scale * kStatusLines;
+        // The scene fills the rest, below the status band (so it never covers a ramp's start).
         const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
                                   std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
         handle_mouse(area, ratio);
@@ -292,7 +315,9 @@ private:
 
         if (!o_.capture()) worker_.start(frame_requests(wall_dt));
         const double d0 = now_s();
-        draw_scene(fb_w, fb_h, area, ratio, labels, show_scene);
+        SceneViewBoxes boxes;
+        draw_scene(fb_w, fb_h, area, ratio, scale, labels, show_scene, rep ? &boxes : nullptr);
+        if (rep) write_layout_report(L, *rep, area, ratio, boxes);
         win_.render_ui();
         if (screenshot_after) write_screenshot(win_, o_.screenshot);
         if (req.screenshot) save_screenshot();
@@ -351,9 +376,9 @@ private:
     }
 
     // Reads only the snapshots and the view: it runs while the physics worker steps the lanes.
-    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, const std::vector<std::string>& labels,
-                    bool show_scene) {
-        const float unit = s_.ui_scale * ratio;
+    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, float scale,
+                    const std::vector<std::string>& labels, bool show_scene, SceneViewBoxes* boxes) {
+        const float unit = scale * ratio;
         if (!atlas_ || atlas_unit_ != unit) {
             atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
             atlas_unit_ = unit;
@@ -369,7 +394,38 @@ private:
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
         const std::vector<render::Snapshot> none;
-        gl_.draw(build_scene_view(show_scene ? shown_ : none, labels, vo, *atlas_));
+        gl_.draw(build_scene_view(show_scene ? shown_ : none, labels, vo, *atlas_, boxes));
+    }
+
+    // The frame's layout as JSON, in window coordinates (the scene's boxes divided by the pixel
+    // ratio): what tests/test_sandbox_smoke.cpp checks for text cut off or covering the ramps.
+    void write_layout_report(const UiLayout& L, const UiLayoutReport& r, const render::PxRect& area, float ratio,
+                             const SceneViewBoxes& b) const {
+        using json = nlohmann::ordered_json;
+        auto box = [](float x0, float y0, float x1, float y1) { return json::array({x0, y0, x1, y1}); };
+        auto px = [&](const render::PxRect& p) {
+            return box(p.x / ratio, p.y / ratio, (p.x + p.width) / ratio, (p.y + p.height) / ratio);
+        };
+        json j;
+        j["width"] = L.width;
+        j["height"] = L.height;
+        j["ui_scale"] = s_.ui_scale;
+        j["ui_scale_shown"] = ctx_.ui_scale_shown;
+        j["font_px"] = kBaseFontPx * ctx_.ui_scale_shown;
+        for (const auto& [key, list] : {std::pair{"windows", &r.windows}, std::pair{"contents", &r.contents},
+                                        std::pair{"plots", &r.plots}}) {
+            json o = json::object();
+            for (const LayoutBox& w : *list) o[w.name] = box(w.x0, w.y0, w.x1, w.y1);
+            j[key] = o;
+        }
+        j["scene"] = px(area);
+        j["ramp_starts"] = json::array();
+        for (const render::Px& p : b.ramp_starts) j["ramp_starts"].push_back({p.x / ratio, p.y / ratio});
+        for (const auto& [key, list] : {std::pair{"badges", &b.badges}, std::pair{"close_up", &b.close_up}}) {
+            j[key] = json::array();
+            for (const render::PxRect& p : *list) j[key].push_back(px(p));
+        }
+        std::ofstream(o_.layout_report) << j.dump(1) << "\n";
     }
 
     // The controls' scenes, requested of the physics as a restart (or the reason they were refused).
@@ -388,9 +444,9 @@ private:
             fs::create_directories(o_.out);
             const fs::path p = next_numbered(o_.out, "screenshot", ".png");
             write_screenshot(win_, p);
-            ctx_.last_saved = p.string();
+            say(fmt::format("Saved the screenshot: {}", p.string()));
         } catch (const std::exception& e) {
-            ctx_.last_saved = fmt::format("screenshot failed: {}", e.what());
+            say(fmt::format("The screenshot failed: {}", e.what()));
         }
     }
 
@@ -402,10 +458,16 @@ private:
             for (size_t i = 0; i < lanes().size(); ++i) runs.push_back(lanes().lane(i).result());
             const fs::path folder = next_numbered(o_.out, "run", "");
             export_runs(folder, runs);
-            ctx_.last_saved = deliver_export(folder);
+            say("Saved the run: " + deliver_export(folder));
         } catch (const std::exception& e) {
-            ctx_.last_saved = fmt::format("export failed: {}", e.what());
+            say(fmt::format("The export failed: {}", e.what()));
         }
+    }
+
+    // A confirmation over the scene, where the eye is, for kFeedbackShowS.
+    void say(std::string text) {
+        ctx_.feedback = std::move(text);
+        ctx_.feedback_until_s = ImGui::GetTime() + kFeedbackShowS;
     }
 
     // At the sync point: the panel's requests become commands for the physics, handed over at once
@@ -414,6 +476,9 @@ private:
         if (req.load_preset) {
             try {
                 load_preset(s_, *req.load_preset);
+                // A cheaper model picked for one scene is not carried to the next: a preset plays as asked.
+                s_.model_level = -1;
+                pending_.model_level = -1;
                 view_.reset();
                 apply_controls();
             } catch (const std::exception& e) {
@@ -421,8 +486,8 @@ private:
             }
         }
         if (req.controls_changed) s_.changes_pending = true;
-        if (req.full_detail_changed) {
-            pending_.full_detail = s_.full_detail;
+        if (req.model_level_changed) {
+            pending_.model_level = s_.model_level;
             apply_controls();
         }
         // A slider applies when it is let go, not at every pixel of the drag.
@@ -510,9 +575,32 @@ int sandbox_main(int argc, char** argv) {
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
     cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
     cli.add_flag("--paused", o.paused, "start paused");
-    cli.add_flag("--full-detail", o.full_detail,
-                 "play the scene exactly as asked even where this computer cannot keep real time (default: a cheaper "
-                 "model of the same fill where it cannot, said on screen; the panel's 'full detail' box)");
+    // The page's address keys as flags of the same names, checked by the same code (page_settings.h).
+    const std::vector<std::pair<std::string, std::string>> page_flags = {
+        {"sides", "n: the selected lane's number of sides, 3 to 64"},
+        {"fill", "r: the selected lane's fill ratio, 0 to 1"},
+        {"material", "the selected lane's grains: bb, rice or peas"},
+        {"angle", "theta: the ramp's angle, 0 to 89 degrees (all lanes)"},
+        {"seed", "the grain packing's seed, all lanes (the same seed, the same run)"}};
+    std::map<std::string, std::string> flag_values;
+    for (const auto& [key, help] : page_flags) cli.add_option("--" + key, flag_values[key], help)->group("Scene");
+    cli.add_option("--scene", o.scene_file, "a scene file (JSON, as polyroll run --scene reads it): one lane; the flags "
+                                            "above apply over it")
+        ->group("Scene");
+    std::string levels_list = "none";
+    for (const BudgetLevel& l : budget_figures().levels) levels_list += ", " + level_key(l);
+    cli.add_option("--coarser", o.coarser,
+                   fmt::format("step a cheaper model than the scene asks, as the panel offers it: {} (default none; "
+                               "grains 2x larger of the same fill mass, ...; the errors are in the panel)",
+                               levels_list));
+    cli.add_option("--layout-report", o.layout_report,
+                   "with --frames: write the last frame's layout (the panels' boxes and what they hold, the ramps' "
+                   "start, the lanes' badges) as JSON, for the layout tests");
+    // The scenes are always stepped as asked now; the flag stays so that older command lines still run.
+    bool full_detail_ignored = false;
+    cli.add_flag("--full-detail", full_detail_ignored,
+                 "the default: the scene is always stepped exactly as asked, slower than real time where this "
+                 "computer cannot keep up (kept for older command lines)");
     cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
     cli.add_option("--theme", o.theme,
                    "panel colours: projector (default; dark text on pale panels, strong borders) or dark (ImGui's)");
@@ -520,6 +608,8 @@ int sandbox_main(int argc, char** argv) {
         cli.parse(argc, argv);
         o.frames_given = cli.count("--frames") > 0;
         o.out_given = cli.count("--out") > 0;
+        for (const auto& [key, help] : page_flags)
+            if (cli.count("--" + key) > 0) o.scene_flags.emplace_back(key, flag_values[key]);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
@@ -534,7 +624,8 @@ int sandbox_main(int argc, char** argv) {
             {"--preset", presets_list},
             {"--theme", "projector, dark"},
             {"--color-by", "material, speed"},
-            {"--colour-by", "material, speed"}};
+            {"--colour-by", "material, speed"},
+            {"--coarser", levels_list}};
         fmt::print(stderr, "polyroll-sandbox: {}\n",
                    printable_line(cli::flag_error_text(e, cli, "polyroll-sandbox", allowed)));
         return kExitBadInput;
@@ -542,9 +633,15 @@ int sandbox_main(int argc, char** argv) {
     SandboxState state;
     try {
         const std::optional<PageSettings> page = page_settings(o);
+        const PageSettings flags = parse_window_flags(o.scene_flags);
+        if (!o.scene_file.empty() && !o.preset.empty())
+            throw InputError(fmt::format("--scene {} and --preset {}: both given (allowed: one of them)", o.scene_file,
+                                         o.preset));
         check(o);
-        state = state_for_preset(o.preset);
+        state = o.scene_file.empty() ? state_for_preset(o.preset) : state_for_scene_file(o.scene_file);
         if (page) apply_page_settings(*page, state);
+        apply_page_settings(flags, state);
+        state.model_level = level_from_key(o.coarser, budget_figures());
     } catch (const InputError& e) {
         fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
         return kExitBadInput;
@@ -553,7 +650,6 @@ int sandbox_main(int argc, char** argv) {
     state.colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
     state.ui_scale = o.ui_scale;
     state.playing = !o.paused;
-    state.full_detail = o.full_detail;
     state.high_contrast = o.theme == "projector";
 
     std::string why;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "app/sandbox_settings.h"
+#include "sim/errors.h"
 
 namespace polyroll::app {
 
@@ -39,10 +40,9 @@ PhysicsOutcome SandboxPhysics::run(const PhysicsRequests& requests) {
 
 void SandboxPhysics::apply(const PhysicsRequests& r, PhysicsOutcome& out) {
     if (r.non_finite_lane) lanes_.report_non_finite(*r.non_finite_lane);
-    if (r.full_detail) full_detail_ = *r.full_detail;
+    if (r.model_level) model_level_ = *r.model_level;
     if (r.restart_with) {
         asked_ = *r.restart_with;
-        rechosen_ = false;
         build_chosen();
         running_to_end_ = false;
         clock_.restart(0.0);
@@ -86,40 +86,44 @@ void SandboxPhysics::step_frame(double wall_dt_s, PhysicsOutcome& out) {
     const AdvanceResult r = lanes_.advance_to(clock_.target_s(), budget, now_s_);
     out.steps += r.steps;
     clock_.frame_done(dt, r.reached_s, r.budget_hit);
-    if (!fixed_frames_ && clock_.slow_divisor() == 1) measure(dt, lanes_.time_s() - sim0_s, now_s_() - t0, r.grain_steps, out);
+    if (!fixed_frames_ && clock_.slow_divisor() == 1) measure(dt, lanes_.time_s() - sim0_s, now_s_() - t0, r.grain_steps);
 }
 
 void SandboxPhysics::build_chosen() {
-    // A capture (fixed frames) uses the asset's cost only, so it shows the same model on any machine.
-    const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
     const BudgetFigures& f = budget_figures();
-    choice_ = choose_model(asked_, f, measured ? measured_cost_ : f.physics_s_per_grain_step, measured, full_detail_);
+    const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
+    const double cost = measured ? measured_cost_ : f.physics_s_per_grain_step;
+    // The user's pick alone decides the model; a level that does not fit these scenes' shells (the
+    // panel offers only those that do) falls back to the scenes as asked rather than refusing them.
+    try {
+        choice_ = picked_model(asked_, f, model_level_, cost, measured);
+    } catch (const InputError&) {
+        choice_ = picked_model(asked_, f, -1, cost, measured);
+    }
+    update_offer();
     lanes_.rebuild(apply_choice(asked_, f, choice_));
     played_wall_s_ = played_sim_s_ = played_physics_s_ = played_grain_steps_ = 0.0;
 }
 
-void SandboxPhysics::measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps,
-                             PhysicsOutcome& out) {
+void SandboxPhysics::update_offer() {
+    // A capture (fixed frames) uses the asset's cost only, so it shows the same offer on any machine.
+    const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
+    const BudgetFigures& f = budget_figures();
+    offer_ = suggest_model(asked_, f, measured ? measured_cost_ : f.physics_s_per_grain_step, measured);
+}
+
+void SandboxPhysics::measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps) {
     played_wall_s_ += wall_dt_s;
     played_sim_s_ += sim_dt_s;
     played_physics_s_ += physics_s;
     played_grain_steps_ += grain_steps;
     if (played_wall_s_ < kBudgetMeasureS || played_grain_steps_ <= 0.0 || played_sim_s_ <= 0.0) return;
-    const double cost = played_physics_s_ / played_grain_steps_;
     // Only a heavy scene's cost stands for the next scenes' (a few loose grains cost far less each).
-    if (played_grain_steps_ / played_sim_s_ >= kBudgetMinGrainStepsPerS) measured_cost_ = cost;
-    if (full_detail_ || rechosen_ || clock_.keeping_up()) return;
-    // Too slow for real time although the estimate said it would fit: choose again with what this
-    // window measured, once, and only towards cheaper models.
-    const BudgetFigures& f = budget_figures();
-    const BudgetChoice again = choose_model(asked_, f, cost, true, false);
-    rechosen_ = true;
-    if (again.level <= choice_.level) return;
-    choice_ = again;
-    lanes_.rebuild(apply_choice(asked_, f, choice_));
+    if (played_grain_steps_ / played_sim_s_ < kBudgetMinGrainStepsPerS) return;
+    // The scene's own cost on this computer: the offer follows it; the lanes go on as they are.
+    measured_cost_ = played_physics_s_ / played_grain_steps_;
+    update_offer();
     played_wall_s_ = played_sim_s_ = played_physics_s_ = played_grain_steps_ = 0.0;
-    clock_.restart(0.0);
-    out.rechosen = true;
 }
 
 }  // namespace polyroll::app

@@ -2,9 +2,9 @@
 // the end), changed only by run(), which the physics worker calls with a frame's requests. The UI
 // reads lanes() and clock() only between jobs, while the worker is idle, and learns what a job did
 // from its PhysicsOutcome. No GLFW or ImGui here.
-// The physics budget (model_budget.h) lives here too: each restart builds the model it chose for the
-// scenes asked (full detail when asked), and a scene measured too slow in its first second of play
-// is rebuilt once at the next cheaper level that the measured cost says fits.
+// The physics budget (model_budget.h) lives here too, as an offer only: each restart builds the
+// scenes as asked, or the cheaper level the user picked, and never anything else; what this machine
+// measures changes how fast the run plays and which cheaper model the panel offers, never the run.
 #pragma once
 
 #include <functional>
@@ -28,8 +28,10 @@ public:
 
     const LaneSet& lanes() const { return lanes_; }
     const SimClock& clock() const { return clock_; }
-    // What the budget chose for the lanes (read between jobs, as lanes()).
+    // The model the lanes step (the scenes as asked, or the level picked), and the cheaper model the
+    // budget offers for real time (read between jobs, as lanes()).
     const BudgetChoice& budget_choice() const { return choice_; }
+    const BudgetChoice& budget_offer() const { return offer_; }
     // The cost per grain engine step measured in this window, 0 until a heavy enough scene has played
     // long enough (kBudgetMinGrainStepsPerS).
     double measured_cost_per_grain_step() const { return measured_cost_; }
@@ -38,8 +40,9 @@ private:
     void apply(const PhysicsRequests& r, PhysicsOutcome& out);
     void step_frame(double wall_dt_s, PhysicsOutcome& out);
     void build_chosen();
-    // After a playing frame: learns the cost per grain step, and rebuilds coarser once if too slow.
-    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps, PhysicsOutcome& out);
+    // After a playing frame: learns the cost per grain step, which updates the offer (never the lanes).
+    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps);
+    void update_offer();
 
     bool fixed_frames_;
     std::function<double()> now_s_;
@@ -49,13 +52,12 @@ private:
     bool running_to_end_ = false;
 
     // The budget.
-    bool full_detail_ = false;
+    int model_level_ = -1;      // the user's pick: -1 the scenes as asked
     std::vector<Scene> asked_;  // the scenes as the controls asked for them
-    BudgetChoice choice_;
+    BudgetChoice choice_, offer_;
     double measured_cost_ = 0.0;
     // Since the build: wall, simulated and physics time, and the work done in grain engine steps.
     double played_wall_s_ = 0.0, played_sim_s_ = 0.0, played_physics_s_ = 0.0, played_grain_steps_ = 0.0;
-    bool rechosen_ = false;  // this build was already rebuilt coarser once
 };
 
 }  // namespace polyroll::app

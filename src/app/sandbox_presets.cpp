@@ -51,13 +51,20 @@ PresetPanel preset_panel() {
     PresetPanel panel;
     for (const auto& [name, entry] : presets_json().items()) {
         const SandboxPreset preset = sandbox_preset(name);
-        PresetButton button{name, name, fmt::format("Preset '{}': {}", name, preset.description)};
+        const std::vector<Scene> lanes = resolve_preset(preset);
+        PresetButton button{name, name, fmt::format("Preset '{}': {}", name, preset.description),
+                            lanes.front().ramp.angle_deg};
+        if (entry.contains("demo")) {
+            button.label = entry.at("demo").get<std::string>();
+            panel.demos.push_back(button);
+            continue;
+        }
         if (!entry.contains("row")) {
             panel.others.push_back(button);
             continue;
         }
         if (entry.contains("button")) button.label = entry.at("button").get<std::string>();
-        else button.label = assets::material_look(resolve_preset(preset).front().fill.material.preset).label;
+        else button.label = assets::material_look(lanes.front().fill.material.preset).label;
         const std::string row = entry.at("row").get<std::string>();
         auto it = std::find_if(panel.rows.begin(), panel.rows.end(), [&](const PresetRow& r) { return r.label == row; });
         if (it == panel.rows.end()) it = panel.rows.insert(panel.rows.end(), PresetRow{row, {}});

@@ -34,9 +34,8 @@ inline constexpr double kFrameRateCapHz = 60.0;
 // against 10 ms: the large rice scene 0.16x against 0.13x real time, 47 against 52 frames/s.
 inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
 // The physics budget (app/model_budget.h, assets/sandbox-budget.json) measures a scene's cost per
-// grain step over its first this-much wall time of real-time play (a rate window, kRateWindowS);
-// then, if the scene does not keep real time, it rebuilds it once at the cheaper level that cost says
-// fits.
+// grain step over each this-much wall time of real-time play (a rate window, kRateWindowS) and
+// updates the cheaper model the panel offers; the scene stepped never changes with it.
 inline constexpr double kBudgetMeasureS = 1.0;
 // Only a scene doing at least this many grain steps per simulated second (model_budget.h: a lane of G
 // grains does (G + 1)^1.84 per engine step; this is about 200 grains at 1,000 steps/s) stands for the
@@ -60,8 +59,18 @@ inline constexpr int kDefaultWidthPx = 1280, kDefaultHeightPx = 800;  // a proje
 inline constexpr float kBaseFontPx = 18.0f;    // DejaVu Sans at UI scale 1: readable from the back row
 inline constexpr float kUiScaleMin = 0.75f, kUiScaleMax = 2.5f, kDefaultUiScale = 1.0f;
 inline constexpr float kPanelWidthPx = 400.0f;     // the control panel, at UI scale 1
+// The window each unit of UI scale needs: a scale larger than the window allows is shown at the
+// largest that fits (800x600 at 1, 1280x800 at 1.48, 1920x1080 at 2), since at 800x600 a
+// scale of 2 left the scene a sliver and the panels' text cut.
+inline constexpr float kUiScaleWindowWidthPx = 800.0f, kUiScaleWindowHeightPx = 540.0f;
 inline constexpr float kPlotsHeightShare = 0.36f;  // the readouts and plots strip, share of the height
-inline constexpr float kStatusLines = 2.6f;       // the status line over the scene, in base font heights
+// The readout table's widest share of the strip beside the plots: past it its cells wrap. A plot
+// narrower than kMinPlotWidthEm (in font heights) beside it is a thumbnail (at UI scale 2 a 60% table
+// left the plot one): then the table gets a tab of its own beside the plots instead.
+inline constexpr float kReadoutTableMaxShare = 0.6f;
+inline constexpr float kMinPlotWidthEm = 16.0f;
+// How long a confirmation ("Saved: runs/sandbox/screenshot-001.png") stays over the scene, seconds.
+inline constexpr double kFeedbackShowS = 8.0;
 inline constexpr double kDefaultColourSpeedMax_m_s = 1.0;  // grain speed at the top of the colour map
 
 // The projector theme's panel background (opaque, a pale blue-grey distinct from the scene's

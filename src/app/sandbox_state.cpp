@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "app/sandbox_presets.h"
+#include "sim/scene_json.h"
 
 namespace polyroll::app {
 
@@ -11,6 +12,7 @@ void load_preset(SandboxState& s, const std::string& name) {
     const SandboxPreset p = sandbox_preset(name);
     const std::vector<Scene> scenes = resolve_preset(p);
     s.preset = name;
+    s.scene_file.clear();
     s.lanes.clear();
     for (size_t i = 0; i < scenes.size(); ++i) s.lanes.push_back({p.lanes[i], lane_controls_from(scenes[i])});
     // The ramp, release and physics are shared: the first lane's.
@@ -25,10 +27,25 @@ SandboxState state_for_preset(const std::string& name) {
     return s;
 }
 
+SandboxState state_for_scene_file(const std::string& path) {
+    const SceneLayer layer = read_scene_file(path);
+    const Scene scene = resolve_scene({layer});
+    SandboxState s;
+    s.scene_file = path;
+    s.lanes.push_back({layer.doc, lane_controls_from(scene)});
+    s.shared = shared_controls_from(scene);
+    return s;
+}
+
 std::vector<Scene> scenes_for(const SandboxState& s) {
     std::vector<Scene> scenes;
     for (const LaneChoice& lane : s.lanes) scenes.push_back(lane_scene(lane.base, lane.controls, s.shared));
     return scenes;
+}
+
+float fitted_ui_scale(float asked, float width, float height) {
+    const float fits = std::min(width / kUiScaleWindowWidthPx, height / kUiScaleWindowHeightPx);
+    return std::max(kUiScaleMin, std::min(asked, fits));
 }
 
 bool add_lane(SandboxState& s) {

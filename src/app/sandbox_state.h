@@ -21,7 +21,8 @@ struct LaneChoice {
 };
 
 struct SandboxState {
-    std::string preset;                // the sandbox preset last loaded
+    std::string preset;                // the sandbox preset last loaded ("" for a scene file)
+    std::string scene_file;            // the scene file loaded (--scene), until a preset replaces it
     std::vector<LaneChoice> lanes;     // 1 to kMaxLanes
     SharedControls shared;
     int selected_lane = 0;             // the lane the main controls edit
@@ -29,9 +30,9 @@ struct SandboxState {
     // Changes rebuild the scene and restart at once, or wait for Reset.
     bool restart_on_change = true;
     bool changes_pending = false;      // controls changed since the lanes were built
-    // Full detail: the scenes as asked however slowly they play; off, the physics budget may step a
-    // cheaper model to keep real time (app/model_budget.h).
-    bool full_detail = false;
+    // The model stepped: -1 the scenes as asked (however slowly this computer plays them), else the
+    // index of the cheaper level (app/model_budget.h) the user picked. Only the user changes it.
+    int model_level = -1;
 
     // The transport as the physics last reported it (PhysicsOutcome), shown by the panel; at the start,
     // what the window asks for (--paused). Play and pause are requests (PhysicsRequests).
@@ -45,11 +46,18 @@ struct SandboxState {
 
 // A state showing the named sandbox preset (throws InputError for an unknown name).
 SandboxState state_for_preset(const std::string& name);
+// A state of one lane from a scene file (polyroll run --scene's format); throws InputError naming the
+// file and what is wrong.
+SandboxState state_for_scene_file(const std::string& path);
 // Loads another preset into an existing state, keeping the transport and view choices.
 void load_preset(SandboxState& s, const std::string& name);
 
 // Every lane's scene from the state; throws InputError for a combination out of range.
 std::vector<Scene> scenes_for(const SandboxState& s);
+
+// The UI scale shown in a window of this size: the one asked, or the largest that fits it
+// (kUiScaleWindowWidthPx), never below kUiScaleMin.
+float fitted_ui_scale(float asked, float width, float height);
 
 // Lane management: a new lane copies the selected one; the last lane cannot be removed.
 bool add_lane(SandboxState& s);

@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
@@ -18,6 +21,7 @@
 #include "app/sandbox_presets.h"
 #include "app/scene_view.h"
 #include "app/slider_text.h"
+#include "render/colour.h"
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
@@ -52,6 +56,29 @@ void tip(const std::string& text) {
     ImGui::TextUnformatted(text.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+}
+
+// A button's width for its label at the current font.
+float button_w(const char* label) {
+    return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
+// Puts the next item of width `next_w` on the same line when it fits there, else starts a new line:
+// rows of buttons wrap in a narrow panel or at a large UI scale instead of running off its edge.
+void same_line_if_fits(float next_w) {
+    const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + next_w;
+    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
+// The current window's visible rectangle and the extent of what was laid out in it, for the layout
+// checks. Call before End (or EndChild).
+void record_window(UiLayoutReport* report, const char* name) {
+    if (!report) return;
+    const ImGuiWindow* w = ImGui::GetCurrentWindow();
+    report->windows.push_back({name, w->InnerClipRect.Min.x, w->InnerClipRect.Min.y, w->InnerClipRect.Max.x,
+                               w->InnerClipRect.Max.y});
+    report->contents.push_back({name, w->DC.CursorStartPos.x, w->DC.CursorStartPos.y, w->DC.CursorMaxPos.x,
+                                w->DC.CursorMaxPos.y});
 }
 
 std::string preset_description(assets::Kind kind, const std::string& name) {
@@ -130,10 +157,26 @@ std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
 }
 
 // The last value typed (Ctrl+click) outside its field's limits and clamped by the control's setter,
-// said under the panel's controls as the command line would refuse it; cleared by the next edit.
+// said right under that control (where the eye is) as the command line would refuse it; cleared by
+// the next edit.
 std::string last_clamp_note;
+std::string last_clamp_field;  // the field path it is about
 
-void note_clamping(const SceneField& f, double typed) { last_clamp_note = clamp_note(f.label, typed, f.min, f.max); }
+void note_clamping(const SceneField& f, double typed) {
+    last_clamp_note = clamp_note(f.label, typed, f.min, f.max);
+    last_clamp_field = std::string(f.path);
+}
+
+// The panel's theme, for the notes drawn inside the controls' helpers (set at the panel's start).
+bool panel_high_contrast = true;
+
+// The clamp note under the control of field `f`, if it is about that field.
+void clamp_note_here(const SceneField& f, bool high_contrast) {
+    if (last_clamp_note.empty() || last_clamp_field != f.path) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, high_contrast && panel_high_contrast));
+    ImGui::TextWrapped("%s", last_clamp_note.c_str());
+    ImGui::PopStyleColor();
+}
 
 // The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
 // setter (controls.h), which checks the name or clamps the number: the panel never writes a value
@@ -160,17 +203,22 @@ bool slider_control(const SceneField& f, Controls& c, double value, const char* 
         note_clamping(f, value);
     }
     tip(field_tip(f, panel_note));
+    clamp_note_here(f, true);
     return edited;
 }
 
 void heading(const char* text) {
     ImGui::Spacing();
-    ImGui::TextDisabled("%s", text);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
     ImGui::Separator();
 }
 
-// The preset buttons: the rows (one per polygon, one button per material) and then the rest, as
-// assets/sandbox-presets.json lays them out (sandbox_presets.h).
+// The preset buttons: the demonstrations, named for what they show, first; then the experiment's
+// grid (one row per polygon, one button per material, each with its angle); then the rest, as
+// assets/sandbox-presets.json lays them out (sandbox_presets.h). Under them, always visible, what the
+// loaded preset is: its description, not only on hover.
 void preset_buttons(SandboxState& s, UiRequests& req) {
     static std::string error;
     static const PresetPanel panel = [] {
@@ -182,33 +230,58 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
         }
     }();
     if (!error.empty()) ImGui::TextWrapped("%s", error.c_str());
-    auto button = [&](const PresetButton& b) {
+    auto button = [&](const PresetButton& b, const std::string& text, bool first_in_row) {
+        if (!first_in_row) same_line_if_fits(button_w(text.c_str()));
         ImGui::PushID(b.preset.c_str());
         const bool current = s.preset == b.preset;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(b.label.c_str())) req.load_preset = b.preset;
+        if (ImGui::Button(text.c_str())) req.load_preset = b.preset;
         if (current) ImGui::PopStyleColor();
         tip(b.tooltip);
         ImGui::PopID();
     };
+    bool first = true;
+    for (const PresetButton& b : panel.demos) {
+        button(b, b.label, first);
+        first = false;
+    }
+    for (const PresetButton& b : panel.others) {
+        button(b, b.label, first);
+        first = false;
+    }
+    ImGui::TextDisabled("the experiment's polygons, half full:");
     const float label_w = ImGui::GetFontSize() * 7.5f;
     for (const PresetRow& row : panel.rows) {
         ImGui::AlignTextToFramePadding();
         ImGui::TextUnformatted(row.label.c_str());
         bool first_in_row = true;
         for (const PresetButton& b : row.buttons) {
-            // The first material button lines up in a column after the polygon names.
-            if (first_in_row) ImGui::SameLine(label_w);
-            else ImGui::SameLine();
+            // The angle on the button: the presets of one polygon differ in it.
+            const std::string text = fmt::format("{} {:g}\u00B0", b.label, b.angle_deg);
+            // The first material button lines up in a column after the polygon names, when it fits.
+            if (first_in_row && label_w + button_w(text.c_str()) <= ImGui::GetContentRegionAvail().x) {
+                ImGui::SameLine(label_w);
+                button(b, text, true);
+            } else {
+                button(b, text, false);  // after the label, or on a line of its own
+            }
             first_in_row = false;
-            button(b);
         }
     }
-    bool first = true;
-    for (const PresetButton& b : panel.others) {
-        if (!first) ImGui::SameLine();
-        first = false;
-        button(b);
+    // What is loaded, in words.
+    std::string loaded;
+    if (!s.scene_file.empty()) loaded = "Scene file " + s.scene_file;
+    else if (!s.preset.empty()) {
+        try {
+            loaded = fmt::format("'{}': {}", s.preset, sandbox_preset(s.preset).description);
+        } catch (const std::exception&) {
+            loaded = s.preset;
+        }
+    }
+    if (!loaded.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", loaded.c_str());
+        ImGui::PopStyleColor();
     }
 }
 
@@ -225,6 +298,7 @@ void lane_controls(SandboxState& s, UiRequests& req) {
         changed = true;
     }
     tip(field_tip(sides, fmt::format("Ctrl+click to type more than {}.", kSidesSliderMax)));
+    clamp_note_here(sides, s.high_contrast);
     changed |= slider_control(scene_field("fill.ratio"), c, c.fill_ratio, "%.2f", set_fill_ratio, "");
     changed |= preset_control(scene_field("fill.material.preset"), c, c.material, set_material,
                               "Friction and restitution can be changed under Advanced.");
@@ -237,6 +311,15 @@ void shared_controls(SandboxState& s, UiRequests& req) {
                        fmt::format("All lanes. Ctrl+click to type more than {:g} degrees.", kAngleSliderMaxDeg),
                        kAngleSliderMaxDeg))
         req.controls_changed = true;
+    // The seed: the same seed gives the same run, here, on the page and with polyroll run --seed.
+    std::uint64_t seed = c.seed;
+    const std::uint64_t one = 1;
+    if (ImGui::InputScalar("seed", ImGuiDataType_U64, &seed, &one, nullptr, "%llu")) {
+        set_seed(c, seed);
+        req.controls_changed = true;
+    }
+    tip("The grain packing's seed, all lanes: the same seed gives the same run (as polyroll run --seed and the "
+        "page's ?seed= do); another seed, another packing of the same fill, to see how much the outcome varies.");
 }
 
 // A combo over an enumeration's names (sim/scene_names.h); true when the choice changed.
@@ -257,13 +340,14 @@ void physics_controls(SandboxState& s, UiRequests& req) {
     const SceneField& pose = scene_field("release.pose");
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(std::string(pose.label).c_str());
-    ImGui::SameLine();
+    const float radio_extra = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
+    same_line_if_fits(radio_extra + ImGui::CalcTextSize("on a vertex").x);
     if (ImGui::RadioButton("on a vertex", c.pose == ReleasePose::vertex)) {
         set_release_pose(c, ReleasePose::vertex);
         changed = true;
     }
     tip("Held on a vertex with the centre straight above it, then let go (as in the experiment).");
-    ImGui::SameLine();
+    same_line_if_fits(radio_extra + ImGui::CalcTextSize("on a face").x);
     if (ImGui::RadioButton("on a face", c.pose == ReleasePose::face)) {
         set_release_pose(c, ReleasePose::face);
         changed = true;
@@ -278,8 +362,9 @@ void physics_controls(SandboxState& s, UiRequests& req) {
     }
     tip(field_tip(model, "segments: the fill as rigid segments that re-level after each impact; rigid: the fill "
                          "frozen as at release. The reduced models compute a whole run in under a millisecond and "
-                         "draw the shell only. auto: rigid for an empty shell (Box2D takes over at lift-off), "
-                         "grains for a filled one."));
+                         "draw the shell only; neither runs a curved track. auto: rigid for an empty or a full shell "
+                         "(a free rigid body where it would lift off or slip), grains for a partly filled one or a "
+                         "curved track."));
     changed |= preset_control(scene_field("fidelity.preset"), c, c.fidelity, set_fidelity, "");
     if (changed) req.controls_changed = true;
 }
@@ -298,38 +383,60 @@ void advanced_controls(SandboxState& s, UiRequests& req) {
     if (changed) req.controls_changed = true;
 }
 
-// What the physics budget did, and the full-detail box one click away (issue 13 item 3).
+// What the scenes cost here, and the cheaper model the budget offers, one click away and only when
+// clicked: the window never changes the model by itself, so a scene runs the same on any computer.
 void budget_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
-    if (!ctx.budget) return;
+    if (!ctx.budget || !ctx.budget_offer) return;
     const BudgetChoice& c = *ctx.budget;
+    const BudgetChoice& offer = *ctx.budget_offer;
     const bool warn = c.reduced() || !c.fits;
     if (warn) ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-    ImGui::TextWrapped("%s", budget_statement(c, budget_figures()).c_str());
+    ImGui::TextWrapped("%s", budget_statement(c, offer, budget_figures()).c_str());
     if (warn) ImGui::PopStyleColor();
-    if (ImGui::Checkbox("full detail (may play slower than real time)", &s.full_detail)) req.full_detail_changed = true;
-    tip("On: the scene exactly as asked, however slowly this computer plays it. Off: where the physics cannot keep "
-        "real time, the sandbox steps the closest cheaper model that can (grains of the same total mass but larger, "
-        "then a coarser time step) and says what that costs in accuracy, as the trade study measured it "
-        "(docs/tradeoff/tradeoff.md).");
+    if (c.reduced()) {
+        if (ImGui::Button("Back to the scene as asked")) {
+            s.model_level = -1;
+            req.model_level_changed = true;
+        }
+        tip("Step the scene exactly as asked again, however slowly this computer plays it.");
+    } else if (offer.reduced()) {
+        const std::string label =
+            "Use " + level_label(budget_figures().levels.at(static_cast<size_t>(offer.level)));
+        if (ImGui::Button(label.c_str())) {
+            s.model_level = offer.level;
+            req.model_level_changed = true;
+        }
+        tip("Step this cheaper model instead (grains of the same total mass but larger, or a coarser time step), so "
+            "that the run plays at real time here. What it costs in accuracy is above, as the trade study measured "
+            "it (docs/tradeoff/tradeoff.md); the run may differ from the scene as asked.");
+    }
 }
 
-void view_controls(SandboxState& s, UiRequests& req) {
+void view_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
     ImGui::Checkbox("follow the polygon (F)", &s.follow);
     tip("On: the camera follows the leading polygon, zoomed in. Off: the whole ramp. Drag to pan, scroll to zoom.");
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("grains by");
-    ImGui::SameLine();
+    const float radio_extra = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
+    same_line_if_fits(radio_extra + ImGui::CalcTextSize("material").x);
     if (ImGui::RadioButton("material", s.colouring == render::GrainColouring::material))
         s.colouring = render::GrainColouring::material;
     tip("Grains coloured by their material (C toggles).");
-    ImGui::SameLine();
+    same_line_if_fits(radio_extra + ImGui::CalcTextSize("speed").x);
     if (ImGui::RadioButton("speed", s.colouring == render::GrainColouring::speed))
         s.colouring = render::GrainColouring::speed;
-    tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles).",
+    tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles); the "
+                    "legend is over the scene.",
                     kDefaultColourSpeedMax_m_s));
     float scale = s.ui_scale;
     if (knob_slider("UI scale", ImGuiDataType_Float, scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
-    tip("Size of the panel's text and the scene's labels, for a projector at the back of the room.");
+    tip("Size of the panel's text and the scene's labels, for a projector at the back of the room. A window too "
+        "small for the scale asked shows the largest that fits it (a unit of scale needs 800x540 pixels).");
+    if (ctx.ui_scale_shown < s.ui_scale) {
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
+        ImGui::TextWrapped("shown at %.2f\u00D7: the largest this window size fits", ctx.ui_scale_shown);
+        ImGui::PopStyleColor();
+    }
     ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
     tip("Dark text on pale panels with strong borders; off: ImGui's dark theme.");
     if (ImGui::Button("reset view (Home)")) req.reset_view = true;
@@ -443,27 +550,37 @@ UiLayout ui_layout(float width, float height, float ui_scale) {
     return L;
 }
 
-void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req) {
+void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req,
+                        UiLayoutReport* report) {
     ImGui::SetNextWindowPos({0, 0});
     ImGui::SetNextWindowSize({L.panel_w, L.height});
     ImGui::Begin("controls", nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
+    panel_high_contrast = s.high_contrast;
+    // Every control's frame ends where its label's room begins, so no label runs off the panel's edge
+    // (ImGui's default, 65% of the width, leaves too little at a large UI scale).
+    float label_w = 0.0f;
+    for (const char* l : {"slow motion", "polygon", "n (sides)", "r (fill)", "material", "\u03B8 (angle)", "seed",
+                          "ramp", "model", "fidelity", "grain restitution", "UI scale"})
+        label_w = std::max(label_w, ImGui::CalcTextSize(l).x);
+    ImGui::PushItemWidth(-(label_w + ImGui::GetStyle().ItemInnerSpacing.x + 2.0f));
     if (ctx.large_font) ImGui::PushFont(ctx.large_font);
     ImGui::TextUnformatted("polyroll sandbox");
     if (ctx.large_font) ImGui::PopFont();
 
-    // Transport.
-    if (ImGui::Button(s.playing ? "\u275A\u275A Pause" : "\u25B6 Play")) req.toggle_play = true;
-    tip("Play or pause the simulation (Space).");
-    ImGui::SameLine();
+    // Transport. After the end, the play button says what it does then: the run starts again.
+    const char* play = ctx.run_over ? "\u25B6 Replay" : s.playing ? "\u275A\u275A Pause" : "\u25B6 Play";
+    if (ImGui::Button(play)) req.toggle_play = true;
+    tip(ctx.run_over ? "The run has ended: start it again from release (Space)." : "Play or pause the simulation (Space).");
+    same_line_if_fits(button_w("Step"));
     if (ImGui::Button("Step")) req.step = true;
     tip(fmt::format("Advance {:.3f} s of simulated time while paused (Right arrow).", kSingleStepS));
-    ImGui::SameLine();
+    same_line_if_fits(button_w("Reset"));
     if (ImGui::Button("Reset")) req.reset = true;
     tip("Rebuild the scene from the controls and start again from release (R).");
-    ImGui::SameLine();
+    same_line_if_fits(button_w("Run to end"));
     if (ImGui::Button("Run to end")) req.run_to_end = true;
     tip("Compute the rest of the run as fast as possible without drawing it, then show the end (G).");
     std::vector<std::string> slow_labels;
@@ -512,37 +629,33 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
     physics_controls(s, req);
     budget_controls(s, ctx, req);
 
-    if (ImGui::CollapsingHeader("Advanced: friction and restitution")) advanced_controls(s, req);
-    if (ImGui::CollapsingHeader("View")) view_controls(s, req);
+    if (ImGui::CollapsingHeader("Advanced")) advanced_controls(s, req);
+    tip("Grain and ramp friction and restitution.");
+    if (ImGui::CollapsingHeader("View")) view_controls(s, ctx, req);
     if (ImGui::CollapsingHeader("Save")) {
         if (ImGui::Button("Screenshot (S)")) req.screenshot = true;
-        tip("Save the window as a PNG.");
-        ImGui::SameLine();
+        tip("Save the window as a PNG; where it went is said over the scene.");
+        same_line_if_fits(button_w("Export run (E)"));
         if (ImGui::Button("Export run (E)")) req.export_run = true;
         tip("Write the current run's summary.json, trajectory.csv and impacts.csv (the files polyroll run writes), "
-            "one folder per lane.");
-        if (!ctx.last_saved.empty()) ImGui::TextWrapped("saved: %s", ctx.last_saved.c_str());
+            "one folder per lane; where they went is said over the scene.");
     }
     ImGui::Spacing();
-    ImGui::Checkbox("restart when a control changes", &s.restart_on_change);
-    tip("On: every change rebuilds the scene and starts again. Off: changes wait for Reset.");
+    ImGui::Checkbox("restart on change", &s.restart_on_change);
+    tip("On: every change rebuilds the scene and starts again (a slider when let go). Off: changes wait for Reset.");
     if (s.changes_pending && !s.restart_on_change) {
-        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "controls changed: Reset applies them");
-    }
-    if (!last_clamp_note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-        ImGui::TextWrapped("%s", last_clamp_note.c_str());
+        ImGui::TextWrapped("controls changed: Reset applies them");
         ImGui::PopStyleColor();
     }
-    if (!ctx.control_error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
-        ImGui::TextWrapped("%s", ctx.control_error.c_str());
-        ImGui::PopStyleColor();
-    }
+    // Room under the last control, so that scrolled to the bottom it is whole above the window's edge.
+    ImGui::Dummy({1.0f, ImGui::GetFrameHeight()});
+    ImGui::PopItemWidth();
+    record_window(report, "controls");
     ImGui::End();
 }
 
-void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L) {
+void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
     ImGui::SetNextWindowPos({L.panel_w, L.height - L.plots_h});
     ImGui::SetNextWindowSize({L.width - L.panel_w, L.plots_h});
     ImGui::Begin("readouts", nullptr,
@@ -552,6 +665,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     const LaneSet& lanes = *ctx.lanes;
     if (!lanes.ready()) {
         ImGui::TextUnformatted(lanes.building() ? "building the scene..." : "no scene");
+        record_window(report, "readouts");
         ImGui::End();
         return;
     }
@@ -569,7 +683,8 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
                 r[i].model = budget_model_label(r[i].model,
                                                 budget_figures().levels.at(static_cast<size_t>(ctx.budget->level)));
     // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
-    // 60% of the width; past that its cells wrap rather than cut their text.
+    // kReadoutTableMaxShare of the width; past that its cells wrap rather than cut their text, and the
+    // plot keeps the rest (at a large UI scale it would otherwise shrink to a thumbnail).
     const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
                                              "behaviour", "distance", "terminal v", "model"};
     const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
@@ -578,67 +693,80 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     needed_w += cell_pad;
     for (const LaneReadout& lr : r) {
         float w = fs * 2.0f;
+        // The model entry wraps in its cell ("auto: free body from 0.48 s" would set the column's width
+        // alone): the table is as wide as the other entries, or as "auto: free body" (two lines at most).
         for (const std::string* f : {&lr.polygon, &lr.fill, &lr.position, &lr.speed, &lr.impacts, &lr.behaviour,
-                                     &lr.distance, &lr.terminal, &lr.model})
+                                     &lr.distance, &lr.terminal})
             w = std::max(w, ImGui::CalcTextSize(f->c_str()).x);
+        w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize("auto: free body").x));
         needed_w += w + cell_pad;
     }
-    const bool table_fits = needed_w <= avail.x * 0.6f;
-    const float table_w = table_fits ? needed_w : avail.x * 0.6f;
+    // A table that needs more than its share of the strip wraps its cells there, as long as the plot
+    // beside it keeps kMinPlotWidthEm; past that (a large UI scale, a narrow window) it gets a tab of
+    // its own, as wide as the strip, beside the plots' tabs: its cells would otherwise wrap letter by
+    // letter, or the plot shrink to a thumbnail.
+    const float share_w = avail.x * kReadoutTableMaxShare;
+    const bool table_tab = needed_w > share_w && avail.x - share_w - gap < fs * kMinPlotWidthEm;
+    const bool table_fits = needed_w <= (table_tab ? avail.x : share_w);
+    const float table_w = table_tab ? avail.x : std::min(needed_w, share_w);
     // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
     // so the readout columns and the plot both stay wide enough to read.
     const bool racing = lanes.size() > 1;
-    // Tabs also when two plots side by side would be narrower than about 16 em each (a large UI
+    // Tabs also when two plots side by side would be narrower than kMinPlotWidthEm each (a large UI
     // scale or a small window): one readable plot rather than two slivers.
-    const bool tabbed = racing || (avail.x - table_w - 2 * gap) / 2.0f < fs * 16.0f;
-    const float plot_w = tabbed ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
+    const bool tabbed = table_tab || racing || (avail.x - table_w - 2 * gap) / 2.0f < fs * kMinPlotWidthEm;
+    const float plot_w = table_tab ? avail.x : tabbed ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
+    const float tab_h = ImGui::GetFrameHeightWithSpacing();
 
     // Readouts: one column per lane (the time is the status line's: the lanes started together).
-    ImGui::BeginChild("table", {table_w, avail.y});
-    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
-                               (table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
-    if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
-        if (racing) {
-            ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
-            ImGui::TableSetColumnIndex(0);
-            ImGui::TextUnformatted("lane");
-            for (size_t i = 0; i < lanes.size(); ++i) {
-                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                if (ctx.large_font) ImGui::PushFont(ctx.large_font);
-                ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
-                if (ctx.large_font) ImGui::PopFont();
+    auto table = [&](float height) {
+        ImGui::BeginChild("table", {table_w, height});
+        const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
+                                   (table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
+        if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
+            if (racing) {
+                ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+                ImGui::TableSetColumnIndex(0);
+                ImGui::TextUnformatted("lane");
+                for (size_t i = 0; i < lanes.size(); ++i) {
+                    ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                    if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+                    ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
+                    if (ctx.large_font) ImGui::PopFont();
+                }
             }
+            auto row = [&](const char* label, std::string LaneReadout::*field, const char* what) {
+                ImGui::TableNextRow();
+                ImGui::TableSetColumnIndex(0);
+                ImGui::TextUnformatted(label);
+                tip(what);
+                for (size_t i = 0; i < lanes.size(); ++i) {
+                    ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                    if (table_fits && field != &LaneReadout::model) ImGui::TextUnformatted((r[i].*field).c_str());
+                    else ImGui::TextWrapped("%s", (r[i].*field).c_str());
+                    // auto's reason under the pointer, on the lane's model entry.
+                    if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason);
+                }
+            };
+            row("polygon", &LaneReadout::polygon, "The number of sides n.");
+            row("fill", &LaneReadout::fill, "The fill ratio r and the grains.");
+            row("position", &LaneReadout::position, "The lid centre's distance down the ramp from release, m.");
+            row("speed", &LaneReadout::speed, "The lid centre's speed along the ramp, m/s (negative rocking back).");
+            row("face impacts", &LaneReadout::impacts, "Faces landed so far.");
+            row("behaviour", &LaneReadout::behaviour, "What the run did, once known: stopped at its first impact, stopped "
+                                                      "(after rolling), or rolled to the end.");
+            row("distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended).");
+            row("terminal v", &LaneReadout::terminal,
+                "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
+            row("model", &LaneReadout::model,
+                "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty or a "
+                "full shell, going on as a free rigid body where it would lift off or slip; grains for a partly "
+                "filled one or a curved track. Hover a lane's entry for its reason.");
+            ImGui::EndTable();
         }
-        auto row = [&](const char* label, std::string LaneReadout::*field, const char* what) {
-            ImGui::TableNextRow();
-            ImGui::TableSetColumnIndex(0);
-            ImGui::TextUnformatted(label);
-            tip(what);
-            for (size_t i = 0; i < lanes.size(); ++i) {
-                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                if (table_fits) ImGui::TextUnformatted((r[i].*field).c_str());
-                else ImGui::TextWrapped("%s", (r[i].*field).c_str());
-                // auto's reason under the pointer, on the lane's model entry.
-                if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason);
-            }
-        };
-        row("polygon", &LaneReadout::polygon, "The number of sides n.");
-        row("fill", &LaneReadout::fill, "The fill ratio r and the grains.");
-        row("position", &LaneReadout::position, "The lid centre's distance down the ramp from release, m.");
-        row("speed", &LaneReadout::speed, "The lid centre's speed along the ramp, m/s (negative rocking back).");
-        row("face impacts", &LaneReadout::impacts, "Faces landed so far.");
-        row("behaviour", &LaneReadout::behaviour, "What the run did, once known: stopped at its first impact, stopped "
-                                                  "(after rolling), or rolled to the end.");
-        row("distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended).");
-        row("terminal v", &LaneReadout::terminal,
-            "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
-        row("model", &LaneReadout::model,
-            "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty shell, "
-            "going on as a free rigid body where it would lift off or slip; grains for a filled one. Hover a "
-            "lane's entry for its reason.");
-        ImGui::EndTable();
-    }
-    ImGui::EndChild();
+        record_window(report, "table");
+        ImGui::EndChild();
+    };
 
     std::vector<const Measurements*> all;
     for (size_t i = 0; i < lanes.size(); ++i) all.push_back(&lanes.lane(i).measured());
@@ -652,6 +780,9 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
             markers.push_back({impact_markers(*all[i]), im_colour(lane_colour(i))});
         }
         draw_plot("Speed", "m/s", speed_range(all), traces, markers, {plot_w, height});
+        if (report)
+            report->plots.push_back({"speed", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                                     ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
         tip("The lid centre's speed along the ramp against time; dots mark face impacts.");
     };
     const size_t sel = std::min(static_cast<size_t>(std::max(0, s.selected_lane)), lanes.size() - 1);
@@ -666,15 +797,21 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         tip("Kinetic energy of shell and grains, potential energy relative to release, and the energy dissipated so "
             "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
     };
-    ImGui::SameLine();
+    if (!table_tab) {
+        table(avail.y);
+        ImGui::SameLine();
+    }
     if (!tabbed) {
         speed_plot(avail.y);
         ImGui::SameLine();
         energy_plot(avail.y);
     } else {
         ImGui::BeginGroup();
-        const float tab_h = ImGui::GetFrameHeightWithSpacing();
         if (ImGui::BeginTabBar("plots")) {
+            if (table_tab && ImGui::BeginTabItem("readouts")) {
+                table(avail.y - tab_h);
+                ImGui::EndTabItem();
+            }
             if (ImGui::BeginTabItem(racing ? "speed, all lanes" : "speed")) {
                 speed_plot(avail.y - tab_h);
                 ImGui::EndTabItem();
@@ -688,25 +825,23 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         }
         ImGui::EndGroup();
     }
+    record_window(report, "readouts");
     ImGui::End();
 }
 
-void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L) {
-    const float pad = ImGui::GetFontSize() * 0.6f;
-    ImGui::SetNextWindowPos({L.panel_w + pad, pad});
-    ImGui::SetNextWindowSizeConstraints({0, 0}, {L.width - L.panel_w - 2 * pad, L.height});
-    ImGui::SetNextWindowBgAlpha(0.88f);
-    ImGui::Begin("status", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
     const LaneSet& lanes = *ctx.lanes;
     const int divisor = kSlowMotionDivisors[static_cast<size_t>(s.slow_index)];
-    if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+    // The lines, each with its colour; the first in the large font.
+    struct Line {
+        std::string text;
+        std::optional<ImVec4> colour;
+    };
+    std::vector<Line> lines;
     if (lanes.building()) {
-        ImGui::TextUnformatted("Building the scene: pouring and settling the grains...");
+        lines.push_back({"Building the scene: pouring and settling the grains...", {}});
     } else if (!lanes.ready()) {
-        ImGui::TextUnformatted("No scene");
+        lines.push_back({"No scene", {}});
     } else {
         std::string state;
         if (lanes.trouble()) state = "stopped";
@@ -718,32 +853,105 @@ void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L)
         const bool stepping = s.playing && !lanes.all_finished() && !lanes.trouble() && !ctx.running_to_end;
         const std::string speed =
             speed_statement(divisor, stepping, ctx.clock->keeping_up(), ctx.clock->realtime_ratio());
-        // Wrapped at the status box's width: nothing runs off the window's edge.
-        ImGui::PushTextWrapPos(L.width - L.panel_w - 4 * pad);
-        ImGui::TextWrapped("t = %.2f s   %s   %s", lanes.time_s(), state.c_str(), speed.c_str());
-        ImGui::PopTextWrapPos();
+        lines.push_back({fmt::format("t = {:.2f} s   {}   {}", lanes.time_s(), state, speed), {}});
     }
-    if (ctx.large_font) ImGui::PopFont();
-    if (!lanes.build_error().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
-        ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
-        ImGui::TextWrapped("The scene could not be built: %s", lanes.build_error().c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::PopStyleColor();
-    }
-    if (lanes.trouble()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kErrorColour, s.high_contrast));
-        ImGui::PushTextWrapPos(L.width - L.panel_w - 3 * pad);
-        ImGui::TextWrapped("%s", lanes.trouble()->c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::PopStyleColor();
-    }
+    const ImVec4 error = on_panel(kErrorColour, s.high_contrast), warn = on_panel(kWarnColour, s.high_contrast);
+    if (!lanes.build_error().empty()) lines.push_back({"The scene could not be built: " + lanes.build_error(), error});
+    if (lanes.trouble()) lines.push_back({*lanes.trouble(), error});
+    if (!ctx.control_error.empty()) lines.push_back({ctx.control_error, error});
     if (s.changes_pending && !s.restart_on_change)
-        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "Controls changed: press Reset (R) to apply them.");
+        lines.push_back({"Controls changed: press Reset (R) to apply them.", warn});
     if (ctx.budget && ctx.budget->reduced() && lanes.ready())
-        ImGui::TextColored(on_panel(kWarnColour, s.high_contrast), "%s",
-                           budget_status(budget_figures().levels.at(static_cast<size_t>(ctx.budget->level))).c_str());
+        lines.push_back({budget_status(budget_figures().levels.at(static_cast<size_t>(ctx.budget->level))), warn});
+    // What the user just did (a screenshot or an export saved), where the eye is, for a few seconds.
+    if (!ctx.feedback.empty() && ImGui::GetTime() < ctx.feedback_until_s) lines.push_back({ctx.feedback, {}});
+    const bool speed_legend = s.colouring == render::GrainColouring::speed;
+    // Racing: the lanes' legend, one entry per lane in its colour, wrapping as a line of text does.
+    std::vector<std::string> lane_names;
+    if (lanes.ready() && lanes.size() > 1)
+        for (size_t i = 0; i < lanes.size(); ++i)
+            lane_names.push_back(fmt::format("{}  {}", i + 1, lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), 0).title));
+
+    // The band's size from its wrapped text, before it is drawn: it spans the scene's width, and the
+    // scene starts under it.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float x0 = L.panel_w, width = std::max(1.0f, L.width - L.panel_w);
+    const float wrap = std::max(1.0f, width - 2.0f * style.WindowPadding.x);
+    float height = 2.0f * style.WindowPadding.y;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const bool large = i == 0 && ctx.large_font;
+        if (large) ImGui::PushFont(ctx.large_font);
+        height += ImGui::CalcTextSize(lines[i].text.c_str(), nullptr, false, wrap).y;
+        if (large) ImGui::PopFont();
+        if (i > 0) height += style.ItemSpacing.y;
+    }
+    const float legend_h = ImGui::GetFontSize();
+    if (speed_legend) height += style.ItemSpacing.y + legend_h;
+    // The lane legend's rows: entries left to right, a new row when the next would pass the edge.
+    const float entry_gap = ImGui::GetFontSize() * 1.5f;
+    int legend_rows = 0;
+    for (float x = wrap + 1.0f; const std::string& name : lane_names) {
+        const float w = ImGui::CalcTextSize(name.c_str()).x;
+        if (x + w > wrap) {
+            ++legend_rows;
+            x = 0.0f;
+        }
+        x += w + entry_gap;
+    }
+    if (legend_rows > 0) height += legend_rows * (legend_h + style.ItemSpacing.y);
+    height = std::ceil(height);
+
+    ImGui::SetNextWindowPos({x0, 0});
+    ImGui::SetNextWindowSize({width, height});
+    ImGui::Begin("status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const bool large = i == 0 && ctx.large_font;
+        if (large) ImGui::PushFont(ctx.large_font);
+        if (lines[i].colour) ImGui::PushStyleColor(ImGuiCol_Text, *lines[i].colour);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(lines[i].text.c_str());
+        ImGui::PopTextWrapPos();
+        if (lines[i].colour) ImGui::PopStyleColor();
+        if (large) ImGui::PopFont();
+    }
+    float row_x = 0.0f;  // where the legend's current row ends
+    for (size_t i = 0; i < lane_names.size(); ++i) {
+        const float w = ImGui::CalcTextSize(lane_names[i].c_str()).x;
+        if (i > 0 && row_x + entry_gap + w <= wrap) {
+            ImGui::SameLine(0.0f, entry_gap);
+            row_x += entry_gap + w;
+        } else {
+            row_x = w;
+        }
+        ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%s", lane_names[i].c_str());
+    }
+    if (speed_legend) {
+        // The grain colours' legend: a bar from rest to the top of the colour map.
+        const std::string left = "grain speed  0 m/s", right = fmt::format("{:g} m/s and above", kDefaultColourSpeedMax_m_s);
+        ImGui::TextUnformatted(left.c_str());
+        ImGui::SameLine();
+        const float bar_w = std::min(ImGui::GetFontSize() * 10.0f,
+                                     std::max(ImGui::GetFontSize() * 2.0f,
+                                              ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(right.c_str()).x -
+                                                  2.0f * style.ItemSpacing.x));
+        const ImVec2 p = ImGui::GetCursorScreenPos();
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        constexpr int kSteps = 24;
+        for (int k = 0; k < kSteps; ++k) {
+            const render::Rgba c = render::speed_colour((k + 0.5) / kSteps);
+            dl->AddRectFilled({p.x + bar_w * k / kSteps, p.y + legend_h * 0.15f},
+                              {p.x + bar_w * (k + 1) / kSteps + 0.5f, p.y + legend_h * 0.85f}, im_colour(c));
+        }
+        ImGui::Dummy({bar_w, legend_h});
+        ImGui::SameLine();
+        ImGui::TextUnformatted(right.c_str());
+    }
+    record_window(report, "status");
     ImGui::End();
+    return height;
 }
 
 void read_shortcuts(SandboxState& s, UiRequests& req) {

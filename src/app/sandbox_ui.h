@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/lane_set.h"
 #include "app/model_budget.h"
@@ -20,7 +21,7 @@ struct UiRequests {
     bool toggle_play = false, step = false, reset = false, run_to_end = false;
     bool screenshot = false, export_run = false, reset_view = false;
     bool controls_changed = false;  // a control changed: rebuild now, or mark pending
-    bool full_detail_changed = false;  // the full-detail box was clicked: rebuild at once
+    bool model_level_changed = false;  // a cheaper model was picked, or the scene as asked: rebuild at once
     std::optional<std::string> load_preset;
 };
 
@@ -28,10 +29,16 @@ struct UiRequests {
 struct UiContext {
     const LaneSet* lanes = nullptr;
     const SimClock* clock = nullptr;
-    const BudgetChoice* budget = nullptr;  // what the physics budget chose for the lanes
+    const BudgetChoice* budget = nullptr;        // the model the lanes step (as asked, or the level picked)
+    const BudgetChoice* budget_offer = nullptr;  // the cheaper model the budget offers for real time
     bool running_to_end = false;
+    bool run_over = false;      // every lane ended (or trouble stopped them): Play starts again
+    float ui_scale_shown = 1.0f;  // fitted_ui_scale: less than asked in a small window
     std::string control_error;  // the last combination the core refused
-    std::string last_saved;     // where the last screenshot or export went
+    // What the user just did, said over the scene where the eye is ("Saved: ..."), until this time
+    // (ImGui's clock).
+    std::string feedback;
+    double feedback_until_s = 0.0;
     ImFont* large_font = nullptr;
 };
 
@@ -41,9 +48,29 @@ struct UiLayout {
 };
 UiLayout ui_layout(float width, float height, float ui_scale);
 
-void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req);
-void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L);
-void draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L);
+
+// What the panels laid out this frame, in window coordinates, for the layout checks
+// (polyroll-sandbox --layout-report, tests/test_sandbox_smoke.cpp): each window's visible
+// rectangle and the extent of its content, and the speed plot's card.
+struct LayoutBox {
+    std::string name;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+struct UiLayoutReport {
+    std::vector<LayoutBox> windows;   // visible rectangles: "controls", "status", "readouts", "table"
+    std::vector<LayoutBox> contents;  // what was laid out in each, same names (may scroll in y only)
+    std::vector<LayoutBox> plots;     // "speed", "energy" cards (the one shown)
+    float font_px = 0;
+};
+
+void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req,
+                        UiLayoutReport* report = nullptr);
+void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L,
+                             UiLayoutReport* report = nullptr);
+// The status band across the top of the scene (time, state, speed statement, warnings, what the user
+// just did, the grain-speed legend), as tall as its wrapped text: the scene starts under it, so it
+// never covers the ramps' start, the lanes' badges or their legend. Returns its bottom edge.
+float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report = nullptr);
 
 // Keyboard shortcuts (when no text field has the keyboard).
 void read_shortcuts(SandboxState& s, UiRequests& req);

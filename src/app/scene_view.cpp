@@ -29,7 +29,7 @@ namespace {
 // shrinks down to a quarter of the view's height for that, and past it overlaps as before.
 void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const Snapshot& lowest,
                         const Camera& lowest_cam, const SceneViewOptions& o, const WorldStyle& st,
-                        const FontAtlas& font, DrawList& dl) {
+                        const FontAtlas& font, DrawList& dl, SceneViewBoxes* boxes) {
     const float u = o.unit;
     const float m = 12.0f * u;
     const float w = std::round(0.36f * o.area.width);
@@ -41,6 +41,7 @@ void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camer
     const float clear_top = ramp_y + render::kRampBelowDesignPx * u + m;
     const float h = std::round(std::clamp(bottom - clear_top, 0.25f * o.area.height, 0.50f * o.area.height));
     CloseUpStyle style = close_up_style({o.area.x + m, bottom - h, w, h}, u);
+    if (boxes) boxes->close_up.push_back({o.area.x + m, bottom - h, w, h});
     style.marker = lane_colour(lane);
     style.border = lane_colour(lane);
     if (racing) style.label_suffix = fmt::format(", lane {}", lane + 1);
@@ -58,14 +59,24 @@ Rgba lane_colour(size_t lane) {
 }
 
 DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<std::string>& labels,
-                          const SceneViewOptions& o, const FontAtlas& font) {
+                          const SceneViewOptions& o, const FontAtlas& font, SceneViewBoxes* boxes) {
     DrawList dl;
     dl.width_px = o.width_px;
     dl.height_px = o.height_px;
     dl.background = palette::background;
     dl.atlas = &font;
     if (lanes.empty()) return dl;
-    const LaneLayout layout = lane_layout(lanes, o.area, o.follow, o.unit, o.view);
+    // When racing, each lane's badge sits left of and just above its ramp's upper end: the ramps are
+    // fitted into the view less that room, so no badge is cut at the view's edge.
+    const bool racing = lanes.size() > 1;
+    const FontSpec badge_font = lane_font(o.unit);
+    const float badge_pad = 6.0f * o.unit, badge_r = 0.75f * font.line_height(badge_font);
+    PxRect fit = o.area;
+    if (racing) {
+        const float left = 2.0f * badge_r + badge_pad, top = 1.3f * badge_r;
+        fit = {o.area.x + left, o.area.y + top, std::max(1.0f, o.area.width - left), std::max(1.0f, o.area.height - top)};
+    }
+    const LaneLayout layout = lane_layout(lanes, fit, o.follow, o.unit, o.view);
     const ClipRect clip{static_cast<int>(std::floor(o.area.x)), static_cast<int>(std::floor(o.area.y)),
                         static_cast<int>(std::ceil(o.area.width)), static_cast<int>(std::ceil(o.area.height))};
     const WorldStyle st = world_style(o.unit, o.area, o.colouring, o.colour_speed_max_m_s);
@@ -74,38 +85,29 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<
         if (lanes.size() > 1) lane_st.shell_wall = lane_colour(i);
         draw_world(lanes[i], layout.cameras[i], lane_st, font, dl.new_layer(clip));
     }
+    if (boxes)
+        for (size_t i = 0; i < lanes.size(); ++i)
+            boxes->ramp_starts.push_back(layout.cameras[i].to_px(ramp_to_world({0.0, 0.0}, lanes[i].ramp_angle_deg)));
     if (!o.follow && o.close_up_lane >= 0 && static_cast<size_t>(o.close_up_lane) < lanes.size()) {
         const size_t k = static_cast<size_t>(o.close_up_lane);
         draw_lane_close_up(lanes[k], k, lanes.size() > 1, layout.cameras[k], lanes.back(), layout.cameras.back(), o, st,
-                           font, dl);
+                           font, dl, boxes);
     }
 
-    // When racing: each lane's number in a badge at the top of its ramp (where the polygons start),
-    // and a legend in the free corner above the ramps naming each lane.
-    if (lanes.size() > 1) {
+    // When racing: each lane's number in a badge at the top of its ramp (where the polygons start); the
+    // legend naming each lane is the status band's (sandbox_ui.cpp), above the scene, where it covers
+    // no ramp.
+    if (racing) {
         Layer& labels_layer = dl.new_layer(clip);
-        const FontSpec f = lane_font(o.unit);
-        const float pad = 6.0f * o.unit;
-        const float h = font.line_height(f);
-        float legend_w = 0.0f;
-        for (size_t i = 0; i < lanes.size() && i < labels.size(); ++i)
-            legend_w = std::max(legend_w, font.text_width(std::to_string(i + 1) + "  " + labels[i], f));
-        const float lx = o.area.x + o.area.width - legend_w - 3.0f * pad;
-        float ly = o.area.y + pad;
-        labels_layer.shapes.push_back(rounded_box({lx - pad, ly - pad / 2}, {legend_w + 2 * pad, h * static_cast<float>(lanes.size()) + pad},
-                                                  4.0f * o.unit, rgb8(255, 255, 255, 0.92f), std::max(1.0f, 1.5f * o.unit),
-                                                  palette::panel_border));
-        for (size_t i = 0; i < lanes.size() && i < labels.size(); ++i) {
-            font.layout(std::to_string(i + 1) + "  " + labels[i], f, {lx, ly + font.ascent(f)}, lane_colour(i),
-                        labels_layer.glyphs);
-            ly += h;
-            // The badge, left of the ramp's upper end.
+        const float h = font.line_height(badge_font);
+        for (size_t i = 0; i < lanes.size(); ++i) {
             const Px top = layout.cameras[i].to_px(ramp_to_world({0.0, 0.0}, lanes[i].ramp_angle_deg));
-            const float r = 0.75f * h;
-            const Px c{top.x - r - pad, top.y - r * 0.3f};
+            const float r = badge_r;
+            const Px c{top.x - r - badge_pad, top.y - r * 0.3f};
             labels_layer.shapes.push_back(disc(c, r, lane_colour(i), Tag::none));
+            if (boxes) boxes->badges.push_back({c.x - r, c.y - r, 2 * r, 2 * r});
             const std::string num = std::to_string(i + 1);
-            font.layout(num, f, {c.x - font.text_width(num, f) / 2.0f, c.y - h / 2.0f + font.ascent(f)},
+            font.layout(num, badge_font, {c.x - font.text_width(num, badge_font) / 2.0f, c.y - h / 2.0f + font.ascent(badge_font)},
                         rgb8(255, 255, 255), labels_layer.glyphs);
         }
     }

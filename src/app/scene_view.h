@@ -1,6 +1,6 @@
 // The sandbox's scene view as a draw list (GL-free): what a frame draws (the world and the close-up,
 // in render/view_style.h's style) for each lane through the lane's camera (view_control.h), clipped
-// to the view, plus what only the window has: the lanes' badges and legend in their colours. The
+// to the view, plus what only the window has: the lanes' badges in their colours. The
 // window draws it with render::GlRenderer, the same renderer as polyroll render's frames.
 #pragma once
 
@@ -33,7 +33,17 @@ std::vector<render::FontSpec> scene_view_fonts(float unit);
 // Each lane's colour: its label, its plot trace and its readout column share it.
 render::Rgba lane_colour(size_t lane);
 
+// Where the view put what must stay visible, in framebuffer pixels, for the layout checks
+// (polyroll-sandbox --layout-report): each lane's release point (its ramp's upper end) and badge,
+// and the close-up.
+struct SceneViewBoxes {
+    std::vector<render::Px> ramp_starts;
+    std::vector<render::PxRect> badges;
+    std::vector<render::PxRect> close_up;  // none or one
+};
+
 render::DrawList build_scene_view(const std::vector<render::Snapshot>& lanes, const std::vector<std::string>& labels,
-                                  const SceneViewOptions& o, const render::FontAtlas& font);
+                                  const SceneViewOptions& o, const render::FontAtlas& font,
+                                  SceneViewBoxes* boxes = nullptr);
 
 }  // namespace polyroll::app
