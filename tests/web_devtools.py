@@ -2,6 +2,7 @@
 plain `chromium --dump-dom` cannot do: real (not virtual) time, keys, downloads, resizing. Uses
 Debian's python3-websocket (hence /usr/bin/python3); the browser listens on 127.0.0.1 only, on a
 port it picks, with a fresh profile, and is ended when the `with` block ends."""
+import base64
 import json
 import os
 import shutil
@@ -15,18 +16,23 @@ import websocket  # Debian: python3-websocket
 CHROMIUM_FLAGS = [
     "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
     "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
-    "--disable-default-apps", "--mute-audio", "--window-size=1280,800", "--hide-scrollbars",
+    "--disable-default-apps", "--mute-audio", "--hide-scrollbars",
     "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0",
 ]
 
 
 class Chromium:
-    def __init__(self, timeout_s=600.0):
+    def __init__(self, timeout_s=600.0, window_size=(1280, 800)):
+        """window_size: the browser window's, as --window-size (headless Chromium's page is that wide
+        and about 143 px less high: 1280x800 gives a 1280x657 page)."""
         self.timeout_s = timeout_s
+        self.window_size = window_size
 
     def __enter__(self):
         self.profile = tempfile.mkdtemp(prefix="polyroll-chromium-")
-        self.process = subprocess.Popen(["chromium", *CHROMIUM_FLAGS, f"--user-data-dir={self.profile}", "about:blank"],
+        window = f"--window-size={self.window_size[0]},{self.window_size[1]}"
+        self.process = subprocess.Popen(["chromium", *CHROMIUM_FLAGS, window, f"--user-data-dir={self.profile}",
+                                         "about:blank"],
                                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         port_file = os.path.join(self.profile, "DevToolsActivePort")
         for _ in range(300):
@@ -87,3 +93,9 @@ class Chromium:
             self.call("Input.dispatchKeyEvent", type=kind, key=key, code=code, windowsVirtualKeyCode=key_code,
                       nativeVirtualKeyCode=key_code)
             time.sleep(0.3)  # a few of the page's frames, so the sandbox sees the key down, then up
+
+    def screenshot(self, path):
+        """Saves what the page shows now (its viewport) as a PNG."""
+        data = self.call("Page.captureScreenshot", format="png")["data"]
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(data))
