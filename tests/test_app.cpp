@@ -470,7 +470,7 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
     o.width_px = 1280;
     o.height_px = 800;
     o.area = {400, 47, 880, 465};
-    const render::DrawList dl = build_scene_view(snaps, {"a", "b"}, o, font);
+    const render::DrawList dl = build_scene_view(snaps, o, font);
     CHECK(dl.width_px == 1280);
     int walls = 0, glyphs = 0;
     for (const render::Layer& l : dl.layers) {
@@ -508,7 +508,7 @@ TEST_CASE("the scene view's text stays inside the view: no ramp label behind the
         o.unit = scale;
         const float panel_w = std::min(400.0f * scale, 640.0f);  // sandbox_ui.cpp's ui_layout
         o.area = {panel_w, 47, 1280 - panel_w, 465};
-        const render::DrawList dl = build_scene_view({lanes.lane(0).snapshot()}, {"a"}, o, font);
+        const render::DrawList dl = build_scene_view({lanes.lane(0).snapshot()}, o, font);
         // A glyph wholly outside its layer's clip is not drawn; one that is drawn lies wholly inside
         // the clip (no letter cut at an edge) and inside the view (none behind the panel).
         int shown = 0;
@@ -541,7 +541,7 @@ TEST_CASE("with four lanes the close-up hides no lane's start", "[app]") {
     o.width_px = 1280;
     o.height_px = 800;
     o.area = {400, 47, 880, 465};
-    const render::DrawList dl = build_scene_view(snaps, {"a", "b", "c", "d"}, o, font);
+    const render::DrawList dl = build_scene_view(snaps, o, font);
     // The inset's box: the bounds of its background triangles.
     float top = 1e9f, right = -1e9f;
     for (const render::Layer& l : dl.layers)

@@ -309,14 +309,14 @@ private:
         const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
                                   std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
         handle_mouse(area, ratio);
-        const std::vector<std::string> labels = take_snapshots();
+        take_snapshots();
         const bool show_scene = !last_.running_to_end;
         const bool any_active = ImGui::IsAnyItemActive();
 
         if (!o_.capture()) worker_.start(frame_requests(wall_dt));
         const double d0 = now_s();
         SceneViewBoxes boxes;
-        draw_scene(fb_w, fb_h, area, ratio, scale, labels, show_scene, rep ? &boxes : nullptr);
+        draw_scene(fb_w, fb_h, area, ratio, scale, show_scene, rep ? &boxes : nullptr);
         if (rep) write_layout_report(L, *rep, area, ratio, boxes);
         win_.render_ui();
         if (screenshot_after) write_screenshot(win_, o_.screenshot);
@@ -355,11 +355,10 @@ private:
             view_.pan_by(io.MouseDelta.x * ratio, io.MouseDelta.y * ratio);
     }
 
-    // The lanes' snapshots for this frame's picture, and the lanes' labels. The last finite snapshots
-    // are kept: a lane whose state turns to NaN stops the run (requested of the physics before it
-    // steps again), and the picture stays the last sound one rather than garbage.
-    std::vector<std::string> take_snapshots() {
-        std::vector<std::string> labels;
+    // The lanes' snapshots for this frame's picture (the lanes' names are in the status band). The last
+    // finite snapshots are kept: a lane whose state turns to NaN stops the run (requested of the
+    // physics before it steps again), and the picture stays the last sound one rather than garbage.
+    void take_snapshots() {
         const LaneSet& lanes = this->lanes();
         if (lanes.ready() && !last_.running_to_end) {
             shown_.resize(lanes.size());
@@ -367,17 +366,15 @@ private:
                 render::Snapshot snap = lanes.lane(i).snapshot();
                 if (snapshot_finite(snap)) shown_[i] = std::move(snap);
                 else if (!pending_.non_finite_lane) pending_.non_finite_lane = i;
-                labels.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), 0).title);
             }
         } else if (!lanes.ready()) {
             shown_.clear();
         }
-        return labels;
     }
 
     // Reads only the snapshots and the view: it runs while the physics worker steps the lanes.
-    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, float scale,
-                    const std::vector<std::string>& labels, bool show_scene, SceneViewBoxes* boxes) {
+    void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, float scale, bool show_scene,
+                    SceneViewBoxes* boxes) {
         const float unit = scale * ratio;
         if (!atlas_ || atlas_unit_ != unit) {
             atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
@@ -394,7 +391,7 @@ private:
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
         const std::vector<render::Snapshot> none;
-        gl_.draw(build_scene_view(show_scene ? shown_ : none, labels, vo, *atlas_, boxes));
+        gl_.draw(build_scene_view(show_scene ? shown_ : none, vo, *atlas_, boxes));
     }
 
     // The frame's layout as JSON, in window coordinates (the scene's boxes divided by the pixel

@@ -58,8 +58,8 @@ Rgba lane_colour(size_t lane) {
     return colours[lane % 4];
 }
 
-DrawList build_scene_view(const std::vector<Snapshot>& lanes, const std::vector<std::string>& labels,
-                          const SceneViewOptions& o, const FontAtlas& font, SceneViewBoxes* boxes) {
+DrawList build_scene_view(const std::vector<Snapshot>& lanes, const SceneViewOptions& o,
+                          const FontAtlas& font, SceneViewBoxes* boxes) {
     DrawList dl;
     dl.width_px = o.width_px;
     dl.height_px = o.height_px;

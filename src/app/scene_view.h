@@ -42,8 +42,8 @@ struct SceneViewBoxes {
     std::vector<render::PxRect> close_up;  // none or one
 };
 
-render::DrawList build_scene_view(const std::vector<render::Snapshot>& lanes, const std::vector<std::string>& labels,
-                                  const SceneViewOptions& o, const render::FontAtlas& font,
+render::DrawList build_scene_view(const std::vector<render::Snapshot>& lanes, const SceneViewOptions& o,
+                                  const render::FontAtlas& font,
                                   SceneViewBoxes* boxes = nullptr);
 
 }  // namespace polyroll::app
