@@ -47,8 +47,9 @@ BudgetFigures load_figures() {
 // Engine steps per simulated second.
 double engine_hz(const Scene& s) { return s.fidelity.step_hz * s.fidelity.substeps; }
 
-// Whether the lane steps grains: the grain model, or auto where it chooses grains at the start or
-// later (model_choice.h: not for an empty shell, nor a full one, whose grains cannot move).
+// Whether the lane may step grains: the grain model, or auto where it chooses grains at the start or
+// may hand over to them later (model_choice.h: a full shell's free rigid body can, where it meets a
+// contact it does not model; an empty shell has none to step).
 bool steps_grains(const Scene& s) {
     if (s.fill.ratio <= 0.0) return false;
     if (s.run.model == Model::grains) return true;
