@@ -35,6 +35,7 @@ MAX_SOLID_SHARE = 0.64  # random close packing: more solid than this in the inne
 GROW_SHARE = 0.3     # share of settle_time_s spent growing grains that had to start shrunk (dense fills)
 INSIDE_TOL = 0.1     # grains_inside tolerance, in nominal grain radii
 PROGRESS_EVERY_S = 0.25
+LID_LOAD_EVERY_ROWS = 10  # the lid load's means sample one row in ten (the formula's sum runs over every grain)
 MASK_INSIDE, MASK_RAMP = 1, 2  # grains+facets share bit 1; edge spheres+ramp share bit 2
 COLOR = (0.6, 0.6, 0.6)        # given explicitly: Yade's random colour reseeds Python's global random
 
@@ -316,7 +317,8 @@ def build_scene(c, rng):
         b.shape.radius = r * shrink
         grains.append(O.bodies.append(b))
     return {'clump': clump, 'members': member_ids, 'grains': grains, 'radii': radii, 'shrink': shrink,
-            'edges': member_ids[n_facets:], 'collider': collider, 'steps_per_row': steps_per_row}
+            'edges': member_ids[n_facets:], 'lids': member_ids[2 * n:n_facets], 'collider': collider,
+            'steps_per_row': steps_per_row}
 
 
 def advance(steps):
@@ -358,6 +360,47 @@ def grow(sc, share):
     for i, r in zip(sc['grains'], sc['radii']):
         O.bodies[i].shape.radius = r * f
     sc['collider']()  # the bounds follow the new radii
+
+
+class LidLoad:
+    """The normal force the grains put on the two lids (N, both together), measured from the contacts,
+    against what polyroll's 2D lid friction assumes for the same pile (src/sim/lid_friction.cpp):
+    each grain m g (2 K h / depth), h its depth below the pile's top along gravity,
+    K = 1 - sin(atan(grain friction)). Summed over sampled rows for their means."""
+
+    def __init__(self, c, sc):
+        from yade import O
+        self.with_body, self.lids = O.interactions.withBody, sc['lids']
+        self.grains = [O.bodies[i] for i in sc['grains']]
+        self.k = 1 - math.sin(math.atan(c['grain_friction']))
+        self.depth = c['inner_depth_m']
+        self.sum_measured = self.sum_formula = 0.0
+        self.rows = 0
+
+    def measured(self):
+        # The lids lie across z: a contact's z-component is its push on the lid.
+        return sum(abs(i.phys.normalForce[2]) for f in self.lids for i in self.with_body(f) if i.isReal)
+
+    def formula(self, gravity):
+        g = math.sqrt(sum(v * v for v in gravity))
+        if g == 0 or not self.grains:
+            return 0.0
+        up = [-v / g for v in gravity]
+        hs = [sum(u * p for u, p in zip(up, b.state.pos)) for b in self.grains]
+        top = max(h + b.shape.radius for h, b in zip(hs, self.grains))
+        return sum(b.state.mass * g * 2 * self.k * (top - h) / self.depth for h, b in zip(hs, self.grains))
+
+    def now(self, gravity):
+        return self.measured(), self.formula(gravity)
+
+    def add_row(self, gravity):
+        m, f = self.now(gravity)
+        self.sum_measured += m
+        self.sum_formula += f
+        self.rows += 1
+
+    def means(self):
+        return (self.sum_measured / self.rows, self.sum_formula / self.rows) if self.rows else (0.0, 0.0)
 
 
 def balance_turn(c, sc):
@@ -451,8 +494,9 @@ class Tracker:
         return vals + (inside,)
 
 
-def simulate(c, sc, angle0, states, frames):
-    """Step from the release to the end, writing one row per 1/step_hz; returns how the run ended."""
+def simulate(c, sc, angle0, states, frames, lids):
+    """Step from the release to the end, writing one row per 1/step_hz; returns how the run ended.
+    lids (LidLoad) adds the lid load of every LID_LOAD_EVERY_ROWS-th row to its means."""
     import yade
     from yade import O
     tr, steps = Tracker(c, sc, angle0), sc['steps_per_row']
@@ -462,6 +506,8 @@ def simulate(c, sc, angle0, states, frames):
     while True:
         t = k / c['step_hz']
         row = tr.row()
+        if k % LID_LOAD_EVERY_ROWS == 0:
+            lids.add_row(newton.gravity)
         states.write(','.join(map(repr, (t,) + row)) + '\n')
         if x0 is None:
             x0 = row[0]
@@ -517,17 +563,25 @@ def run(in_path, out_dir):
     from yade import O
     sc = build_scene(c, random.Random(c['seed']))  # private generator: Yade reseeds the global one
     settle_time, settled = settle(c, sc)
+    lids = LidLoad(c, sc)
+    poured = lids.now(O.engines[-1].gravity)  # the pile at rest in the held shell, before the release
     correction_deg, angle0 = release(c, sc)
     with AtomicFile(os.path.join(out_dir, 'states.csv')) as states, \
             (AtomicFile(os.path.join(out_dir, 'grains.csv')) if c['frames_hz'] > 0 else nullcontext()) as frames:
         states.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
         if frames:
             frames.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
-        end = simulate(c, sc, angle0, states, frames)
+        end = simulate(c, sc, angle0, states, frames, lids)
+    (run_mean, run_mean_formula), (end_load, end_formula) = lids.means(), lids.now(O.engines[-1].gravity)
     setup = {'grains': len(sc['grains']), 'fill_mass_kg': sum(O.bodies[i].state.mass for i in sc['grains']),
              'settle_time_s': settle_time, 'settled': settled, 'balance_correction_deg': correction_deg,
              'time_step_s': O.dt, 'yade_version': str(yade.config.version),
-             'cpu_time_s': time.process_time(), 'end': end}
+             'cpu_time_s': time.process_time(), 'end': end,
+             # Normal force of the grains on both lids (N): measured from the contacts, and what the 2D
+             # lid friction's formula gives for the same pile; after the pour, over the run, at its end.
+             'lid_load_N': {'poured': poured[0], 'poured_formula': poured[1],
+                            'run_mean': run_mean, 'run_mean_formula': run_mean_formula,
+                            'end': end_load, 'end_formula': end_formula}}
     with AtomicFile(os.path.join(out_dir, 'setup.json')) as f:
         f.write(json.dumps(setup, indent=2) + '\n')
 
