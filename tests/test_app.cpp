@@ -107,7 +107,7 @@ TEST_CASE("every sandbox preset resolves to one to four valid lanes", "[app]") {
         REQUIRE(again.size() == scenes.size());
         CHECK(changed_fields(scenes.front(), again.front()).empty());
     }
-    // The issue's examples.
+    // Presets the docs name as examples.
     for (const char* name : {"octagon-rice", "hexagon-bb", "race"}) CHECK_NOTHROW(sandbox_preset(name));
     const std::vector<Scene> race = resolve_preset(sandbox_preset("race"));
     REQUIRE(race.size() == 3);
@@ -126,15 +126,15 @@ TEST_CASE("each panel control changes exactly the scene parameters it names", "[
     using Fields = std::set<std::string>;
 
     SECTION("n") {
-        set_sides(b.lane(), 8);
+        set_control(b.lane(), "shell.sides", 8);
         CHECK(changed_fields(before, b.scene()) == Fields{"shell.sides"});
     }
     SECTION("r") {
-        set_fill_ratio(b.lane(), 0.6);
+        set_control(b.lane(), "fill.ratio", 0.6);
         CHECK(changed_fields(before, b.scene()) == Fields{"fill.ratio"});
     }
     SECTION("theta") {
-        set_angle_deg(b.state.shared, 12.5);
+        set_control(b.state.shared, "ramp.angle_deg", 12.5);
         CHECK(changed_fields(before, b.scene()) == Fields{"ramp.angle_deg"});
         CHECK(b.scene().ramp.angle_deg == 12.5);
     }
@@ -147,50 +147,50 @@ TEST_CASE("each panel control changes exactly the scene parameters it names", "[
         CHECK(b.scene().fill.material.friction == assets::preset_values(assets::Kind::material, "rice").at("friction").get<double>());
     }
     SECTION("polygon: the shell's values, nothing else") {
-        set_polygon(b.lane(), "hexagon-large");
+        set_control(b.lane(), "shell.preset", "hexagon-large");
         const Fields f = changed_fields(before, b.scene());
         CHECK(all_under(f, "shell."));
         CHECK(f.count("shell.inner_circumradius_m"));
-        set_polygon(b.lane(), "octagon-small");
+        set_control(b.lane(), "shell.preset", "octagon-small");
         CHECK(b.scene().shell.sides == 8);  // n follows the polygon chosen
     }
     SECTION("ramp: the ramp's values but not the angle") {
-        set_ramp(b.state.shared, "wooden");
+        set_control(b.state.shared, "ramp.preset", "wooden");
         const Fields f = changed_fields(before, b.scene());
         CHECK(all_under(f, "ramp."));
         CHECK(f.count("ramp.length_m"));
         CHECK(!f.count("ramp.angle_deg"));
     }
     SECTION("release") {
-        set_release_pose(b.state.shared, ReleasePose::face);
+        set_control(b.state.shared, "release.pose", ReleasePose::face);
         CHECK(changed_fields(before, b.scene()) == Fields{"release.pose"});
     }
     SECTION("model") {
-        set_model(b.state.shared, Model::rigid);
+        set_control(b.state.shared, "run.model", Model::rigid);
         CHECK(changed_fields(before, b.scene()) == Fields{"run.model"});
     }
     SECTION("fidelity") {
-        set_fidelity(b.state.shared, "precise");
+        set_control(b.state.shared, "fidelity.preset", "precise");
         const Fields f = changed_fields(before, b.scene());
         CHECK(all_under(f, "fidelity."));
         CHECK(f.count("fidelity.preset"));
     }
     SECTION("advanced: friction and restitution") {
-        set_grain_friction(b.lane(), 0.9);
+        set_control(b.lane(), "fill.material.friction", 0.9);
         CHECK(changed_fields(before, b.scene()) == Fields{"fill.material.friction"});
         Base c;
-        set_grain_restitution(c.lane(), 0.1);
+        set_control(c.lane(), "fill.material.restitution", 0.1);
         CHECK(changed_fields(before, c.scene()) == Fields{"fill.material.restitution"});
         Base d;
-        set_ramp_friction(d.state.shared, 0.5);
+        set_control(d.state.shared, "ramp.friction", 0.5);
         CHECK(changed_fields(before, d.scene()) == Fields{"ramp.friction"});
         Base e;
-        set_ramp_restitution(e.state.shared, 0.2);
+        set_control(e.state.shared, "ramp.restitution", 0.2);
         CHECK(changed_fields(before, e.scene()) == Fields{"ramp.restitution"});
     }
     SECTION("a lane's controls change only that lane") {
         REQUIRE(add_lane(b.state));
-        set_fill_ratio(b.state.lanes[1].controls, 0.9);
+        set_control(b.state.lanes[1].controls, "fill.ratio", 0.9);
         const std::vector<Scene> scenes = scenes_for(b.state);
         REQUIRE(scenes.size() == 2);
         CHECK(changed_fields(before, scenes[0]).empty());
@@ -201,38 +201,75 @@ TEST_CASE("each panel control changes exactly the scene parameters it names", "[
 TEST_CASE("panel values are clamped to their valid range and names are checked", "[app]") {
     LaneControls l = state_for_preset("default").lanes[0].controls;
     SharedControls s = state_for_preset("default").shared;
-    set_sides(l, 1);
+    set_control(l, "shell.sides", 1);
     CHECK(l.sides == scene_field("shell.sides").min);
-    set_sides(l, 1000);
+    set_control(l, "shell.sides", 1000);
     CHECK(l.sides == scene_field("shell.sides").max);
-    set_fill_ratio(l, -0.5);
+    set_control(l, "fill.ratio", -0.5);
     CHECK(l.fill_ratio == 0.0);
-    set_fill_ratio(l, 1.7);
+    set_control(l, "fill.ratio", 1.7);
     CHECK(l.fill_ratio == 1.0);
-    set_fill_ratio(l, std::numeric_limits<double>::quiet_NaN());
+    set_control(l, "fill.ratio", std::numeric_limits<double>::quiet_NaN());
     CHECK(l.fill_ratio == 0.0);
-    set_angle_deg(s, 95.0);
+    set_control(s, "ramp.angle_deg", 95.0);
     CHECK(s.angle_deg == scene_field("ramp.angle_deg").max);
-    set_angle_deg(s, -3.0);
+    set_control(s, "ramp.angle_deg", -3.0);
     CHECK(s.angle_deg == 0.0);
-    set_grain_friction(l, 5.0);
+    set_control(l, "fill.material.friction", 5.0);
     CHECK(l.grain_friction == scene_field("fill.material.friction").max);
-    set_grain_restitution(l, -1.0);
+    set_control(l, "fill.material.restitution", -1.0);
     CHECK(l.grain_restitution == 0.0);
-    set_ramp_friction(s, -2.0);
+    set_control(s, "ramp.friction", -2.0);
     CHECK(s.ramp_friction == 0.0);
-    set_ramp_restitution(s, 3.0);
+    set_control(s, "ramp.restitution", 3.0);
     CHECK(s.ramp_restitution == 1.0);
     // Clamped values always make a scene the core accepts.
     CHECK_NOTHROW(lane_scene(json::object(), l, s));
     CHECK_THROWS_AS(set_material(l, "sand"), InputError);
     CHECK_THROWS_WITH(set_material(l, "sand"), Catch::Contains("rice"));
-    CHECK_THROWS_AS(set_polygon(l, "circle"), InputError);
-    CHECK_THROWS_AS(set_ramp(s, "ice"), InputError);
-    CHECK_THROWS_AS(set_fidelity(s, "ultra"), InputError);
+    CHECK_THROWS_AS(set_control(l, "shell.preset", "circle"), InputError);
+    CHECK_THROWS_AS(set_control(s, "ramp.preset", "ice"), InputError);
+    CHECK_THROWS_AS(set_control(s, "fidelity.preset", "ultra"), InputError);
     CHECK_THROWS_AS(model_from("magic"), InputError);
     CHECK(model_from("segments") == Model::segments);
-    CHECK(release_pose_from("face") == ReleasePose::face);
+}
+
+TEST_CASE("each panel control is a row naming a labelled field of the scene table", "[app]") {
+    std::set<std::string> paths;
+    for (const ControlRow& row : control_rows()) {
+        INFO(row.path);
+        CHECK(paths.insert(std::string(row.path)).second);  // one row per field
+        const SceneField& f = scene_field(row.path);          // throws for a path not in the table
+        CHECK(!control_label(row).empty());
+        if (f.type == FieldType::number || f.type == FieldType::integer) {
+            CHECK(!row.format.empty());
+            CHECK(f.max > f.min);  // a slider needs fixed limits
+            if (row.slider_max) CHECK((*row.slider_max > f.min && *row.slider_max < f.max));
+        }
+        if (f.type == FieldType::choice)
+            for (const RadioOption& o : row.radio) CHECK(f.choice_named(o.name).has_value());
+    }
+    CHECK_THROWS_AS(control_row("shell.depth_m"), std::logic_error);
+    LaneControls l;
+    SharedControls s;
+    CHECK_THROWS_AS(set_control(l, "ramp.angle_deg", 10.0), std::logic_error);  // a shared row, not a lane's
+    CHECK_THROWS_AS(set_control(s, "fill.ratio", 0.5), std::logic_error);
+}
+
+TEST_CASE("the controls read from a scene give that scene back", "[app]") {
+    for (const std::string& name : {std::string("default"), std::string("race")}) {
+        const SandboxState st = state_for_preset(name);
+        const std::vector<Scene> scenes = scenes_for(st);
+        for (size_t i = 0; i < scenes.size(); ++i) {
+            const LaneControls l = lane_controls_from(scenes[i]);
+            const SharedControls sh = shared_controls_from(scenes[i]);
+            CHECK(scene_to_json(lane_scene(st.lanes[i].base, l, sh)) == scene_to_json(scenes[i]));
+            for (const ControlRow& row : control_rows()) {
+                INFO(row.path);
+                CHECK(control_value(row, l, sh) == scene_field(row.path).access.get(scenes[i]));
+            }
+        }
+    }
 }
 
 TEST_CASE("lanes: at most four, the last one stays", "[app]") {
@@ -626,7 +663,7 @@ TEST_CASE("a value typed outside a control's range is clamped with a note saying
     CHECK(clamp_note(r.label, 0.5, r.min, r.max).empty());
     // The control itself keeps the clamped value (controls.h), as the note says.
     LaneControls c;
-    set_fill_ratio(c, 50);
+    set_control(c, "fill.ratio", 50);
     CHECK(c.fill_ratio == r.max);
 }
 
@@ -687,7 +724,7 @@ TEST_CASE("the demonstration presets are named for what they show and come first
     // Each says in its description what it shows, and the grid's buttons carry their angle.
     for (const PresetButton& b : panel.demos) CHECK_THAT(b.tooltip, Catch::Contains(b.label));
     REQUIRE(!panel.rows.empty());
-    CHECK(panel.rows.front().buttons.front().angle_deg == 19.0);
+    CHECK(panel.rows.front().buttons.front().angle_deg == 20.0);
 }
 
 TEST_CASE("the UI scale shown fits the window", "[app]") {
@@ -712,7 +749,7 @@ TEST_CASE("a scene file gives one lane whose controls rebuild the same scene, an
     CHECK(scene.fill.ratio == 0.375);
     CHECK(scene.ramp.angle_deg == 14.0);
     CHECK(scene.run.seed == 4);
-    set_seed(s.shared, 5);
+    set_control(s.shared, "run.seed", 5);
     CHECK(scenes_for(s).front().run.seed == 5);
     CHECK_THROWS_AS(state_for_scene_file((dir / "missing.json").string()), InputError);
     std::filesystem::remove_all(dir);

@@ -12,6 +12,7 @@
 #include "sim/models/reduced_models.h"
 #include "sim/results_io.h"
 #include "sim/run_snapshot.h"
+#include "sim/scene_matrices.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -221,16 +222,14 @@ TEST_CASE("auto on an empty shell that never lifts off is the rigid model throug
     CHECK(!summary_json(a).contains("engine"));
 }
 
-// The measure auto was adopted on, for the empty shells: the same behaviour as the grain model everywhere.
+// The measure auto was adopted on, for the empty shells `bench --auto` times: the same behaviour as the grain model everywhere.
 TEST_CASE("auto on the issue's empty shells behaves as the grain model does", "[models][auto]") {
-    for (int sides : {6, 8, 10, 18}) {
-        for (double angle : {5.0, 10.0, 20.0, 30.0}) {
-            INFO("n = " << sides << " at " << angle << " deg");
-            const Scene s = empty_scene(sides, angle);
-            const RunResult a = run_scene(s);
-            const RunResult g = run_scene(with_model(s, Model::grains));
-            CHECK(a.measured.behaviour == g.measured.behaviour);
-            CHECK(a.measured.terminal_velocity_m_s.has_value() == g.measured.terminal_velocity_m_s.has_value());
-        }
+    for (const auto& [sides, angle] : scenes::auto_shells()) {
+        INFO("n = " << sides << " at " << angle << " deg");
+        const Scene s = empty_scene(sides, angle);
+        const RunResult a = run_scene(s);
+        const RunResult g = run_scene(with_model(s, Model::grains));
+        CHECK(a.measured.behaviour == g.measured.behaviour);
+        CHECK(a.measured.terminal_velocity_m_s.has_value() == g.measured.terminal_velocity_m_s.has_value());
     }
 }

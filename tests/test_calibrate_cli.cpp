@@ -19,7 +19,7 @@ namespace {
 using polyroll::test::read_file;
 using polyroll::test::run_command;
 
-const std::string exe = POLYROLL_EXE;
+using polyroll::test::kPolyrollExe;
 
 // The small hexagon a quarter full of BBs rolls to the end of the wooden ramp at 25 degrees; at
 // draft fidelity a run takes about 0.1 s. Its terminal velocity rises with the grains' restitution
@@ -86,7 +86,7 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     // The "experiment": polyroll at a chosen restitution, over seeds the calibration does not use
     // (11-14), so the observation carries its own seed noise as a lab's would.
     constexpr double kTrueRestitution = 0.7;
-    const auto truth = run_command(exe + " sweep" + kSceneFlags + " --set fill.material.restitution=0.7" +
+    const auto truth = run_command(kPolyrollExe + " sweep" + kSceneFlags + " --set fill.material.restitution=0.7" +
                                    " --seed 11,12,13,14 --jobs 2 -q --out " + (scratch / "truth").string());
     INFO(truth.out);
     REQUIRE(truth.exit_code == 0);
@@ -95,7 +95,7 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(observed, 0.006));
     const fs::path out = scratch / "out";
     // From the bb preset's own restitution (0.5, the scene's value) and a wide bound.
-    const std::string cmd = exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+    const std::string cmd = kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
                             obs.string() + " --seeds 4 --max-evals 20 --jobs 2 --out " + out.string();
     const auto first = run_command(cmd);
     INFO(first.out);
@@ -122,7 +122,7 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     const auto scene = nlohmann::json::parse(read_file(out / "calibrated-scene.json"));
     CHECK(scene["fill"]["material"]["restitution"].get<double>() == found);
     CHECK_THAT(scene["description"].get<std::string>(), Catch::Contains("objective") && Catch::Contains("lab.json"));
-    const auto rerun = run_command(exe + " run --scene " + (out / "calibrated-scene.json").string() +
+    const auto rerun = run_command(kPolyrollExe + " run --scene " + (out / "calibrated-scene.json").string() +
                                    " --fidelity draft --time-limit 0.5");
     INFO(rerun.out);
     CHECK(rerun.exit_code == 0);
@@ -138,7 +138,7 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     CHECK(std::count(resumed.begin(), resumed.end(), '\n') == 22);  // header and 21 evaluations
 
     // Another calibration in the same folder is refused, nothing changed.
-    const auto other = run_command(exe + " calibrate --params fill.material.restitution=0.3:0.9 --observations " +
+    const auto other = run_command(kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.9 --observations " +
                                    obs.string() + " --seeds 4 --max-evals 0 -q --out " + out.string());
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds another calibration"));
@@ -150,7 +150,7 @@ TEST_CASE("calibrate: two shards side by side retrace the same path as one proce
     const fs::path scratch = polyroll::test::scratch_dir("calibrate-shards", true);
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006));
     auto cmd = [&](const fs::path& out) {
-        return exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " + obs.string() +
+        return kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " + obs.string() +
                " --seeds 2 --max-evals 6 --jobs 1 -q --out " + out.string();
     };
     const auto one = run_command(cmd(scratch / "one"));
@@ -175,7 +175,7 @@ TEST_CASE("calibrate: two shards side by side retrace the same path as one proce
 TEST_CASE("calibrate: Ctrl-C exits 130 and the same command resumes", "[calibrate][cli]") {
     const fs::path scratch = polyroll::test::scratch_dir("calibrate-interrupt", true);
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";
-    const std::string base = exe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+    const std::string base = kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
                              obs.string() + " --seeds 6 --jobs 1 --out " + out.string();
     const std::string cmd = base + " --max-evals 30";
     // SIGINT once the first evaluation is written (30 evaluations of 6 runs take far longer).
@@ -222,13 +222,7 @@ TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[cali
         {"--params ramp.friction --shard 3/2" + lab, {"3/2"}},
         {"--params ramp.friction --observations " + (scratch / "none.json").string(), {"cannot be read"}},
     };
-    for (const Case& c : cases) {
-        const auto r = run_command(exe + " calibrate " + c.args + " -q --out " + out.string());
-        INFO(c.args << "\n" << r.out);
-        CHECK(r.exit_code == 2);
-        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
-        for (const std::string& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
-        CHECK_FALSE(fs::exists(out));
-    }
+    for (const Case& c : cases)
+        polyroll::test::expect_refused(kPolyrollExe + " calibrate " + c.args + " -q --out " + out.string(), c.words, out);
     fs::remove_all(scratch);
 }

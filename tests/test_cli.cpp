@@ -25,17 +25,12 @@ namespace {
 
 using Result = polyroll::test::CommandResult;
 
-Result run_polyroll(const std::string& args) {
-    return polyroll::test::run_command(std::string(POLYROLL_EXE) + " " + args);
-}
+using polyroll::test::expect_refused;
+using polyroll::test::kPolyrollExe;
+using polyroll::test::line_count;
+using polyroll::test::run_polyroll;
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("cli-" + name); }
-
-size_t line_count(const std::string& s) {
-    size_t lines = 0;
-    for (char c : s) lines += c == '\n';
-    return lines;
-}
+const polyroll::test::Scratch scratch("cli-");
 
 }  // namespace
 
@@ -63,15 +58,10 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
         {"--fil 0.3", {"unknown flag '--fil'; did you mean '--fill'?"}},
     };
     for (const Case& c : cases) {
-        const Result r = run_polyroll("run " + c.args + " --out " + out.string());
-        INFO("polyroll run " << c.args << " -> " << r.out);
-        CHECK(r.exit_code == 2);
-        CHECK(line_count(r.out) == 1);
-        for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
+        const Result r = expect_refused(kPolyrollExe + " run " + c.args + " --out " + out.string(), c.words, out);
         // CLI11's own wording is replaced by the program's.
         for (const char* cli11 : {"Could not convert", "At Most", "required but received", "not expected"})
             CHECK(r.out.find(cli11) == std::string::npos);
-        CHECK(!fs::exists(out));
     }
 }
 
@@ -94,14 +84,7 @@ TEST_CASE("one vocabulary: --jobs 1 to 1024 everywhere, no --param alias, no --m
         // compare runs every model: a --model flag would be listed and ignored.
         {"compare --model rigid --out " + out.string(), {"unknown flag '--model'", "see polyroll compare --help"}},
     };
-    for (const Case& c : cases) {
-        const Result r = run_polyroll(c.args);
-        INFO("polyroll " << c.args << " -> " << r.out);
-        CHECK(r.exit_code == 2);
-        CHECK(line_count(r.out) == 1);
-        for (const auto& w : c.words) CHECK(r.out.find(w) != std::string::npos);
-        CHECK(!fs::exists(out));
-    }
+    for (const Case& c : cases) expect_refused(kPolyrollExe + " " + c.args, c.words, out);
     const Result compare_help = run_polyroll("compare --help");
     CHECK(compare_help.out.find("--model") == std::string::npos);
     CHECK(compare_help.out.find("--sides") != std::string::npos);
@@ -217,14 +200,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
         {"--out " + (dir / "a-file" / "out").string(), "cannot create the folder"},
         {"--out " + (dir / "a-file").string(), "not a folder"},
     };
-    for (const Case& c : cases) {
-        const Result r = run_polyroll("run " + c.args);
-        INFO("polyroll run " << c.args << " -> " << r.out);
-        CHECK(r.exit_code == 2);
-        CHECK(line_count(r.out) == 1);
-        CHECK(r.out.find(c.words) != std::string::npos);
-        CHECK(!fs::exists(out));
-    }
+    for (const Case& c : cases) expect_refused(kPolyrollExe + " run " + c.args, {c.words}, out);
     // A non-empty folder is not overwritten without --force.
     fs::create_directories(out);
     std::ofstream(out / "keep.txt") << "mine";

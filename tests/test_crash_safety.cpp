@@ -31,16 +31,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kExe = POLYROLL_EXE;
+using polyroll::test::kPolyrollExe;
 
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("crash-" + name); }
+const polyroll::test::Scratch scratch("crash-");
 
 pid_t start(const std::vector<std::string>& args) {
     std::vector<char*> argv;
-    std::vector<std::string> all{kExe};
+    std::vector<std::string> all{kPolyrollExe};
     all.insert(all.end(), args.begin(), args.end());
     for (auto& a : all) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -49,7 +49,7 @@ pid_t start(const std::vector<std::string>& args) {
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
     pid_t pid = 0;
-    const int rc = posix_spawn(&pid, kExe.c_str(), &actions, nullptr, argv.data(), environ);
+    const int rc = posix_spawn(&pid, kPolyrollExe.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     REQUIRE(rc == 0);
     return pid;

@@ -3,6 +3,8 @@
 // integrator, kept as the fallback) over a matrix of polygons, ramps and fills.
 #include <catch2/catch.hpp>
 
+#include "test_helpers.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,8 +63,8 @@ TEST_CASE("both reduced models timed from the energy integral agree with the ste
     for (int n : {4, 6, 8, 18}) {
         for (double angle : {5.0, 10.0, 20.0, 30.0}) {
             for (double r : {0.0, 0.25, 0.5}) {
-                const Scene s = resolve_scene({SceneLayer{
-                    {{"shell", {{"sides", n}}}, {"fill", {{"ratio", r}}}, {"ramp", {{"angle_deg", angle}}}}, "test", {}}});
+                const Scene s = test::scene_with(
+                    {{"shell", {{"sides", n}}}, {"fill", {{"ratio", r}}}, {"ramp", {{"angle_deg", angle}}}});
                 const models::RollingBody body = models::rolling_body(s);
                 const models::RollingTrack track = models::rolling_track(s);
                 const models::RollingRun ref = models::roll(body, motion, track, models::FaceTiming::stepped);

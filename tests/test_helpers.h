@@ -1,6 +1,8 @@
-// Shared helpers for the tests: scenes from the bundled defaults with a few fields changed.
+// Shared helpers for the tests: scenes from the bundled defaults with a few fields changed, the
+// programs run as a user runs them, scratch folders, and the check that bad input is refused.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -9,8 +11,10 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <utility>
 #include <vector>
 
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include "sim/errors.h"
@@ -88,5 +92,42 @@ inline std::filesystem::path scratch_dir(const std::string& name, bool create = 
     if (create) std::filesystem::create_directories(p);
     return p;
 }
+
+// One test file's scratch folders: `scratch("x")` is scratch_dir(prefix + "x", create), fresh each time.
+class Scratch {
+public:
+    explicit Scratch(std::string prefix, bool create = false) : prefix_(std::move(prefix)), create_(create) {}
+    std::filesystem::path operator()(const std::string& name) const { return scratch_dir(prefix_ + name, create_); }
+
+private:
+    std::string prefix_;
+    bool create_;
+};
+
+// How many lines a command printed.
+inline std::size_t line_count(const std::string& out) {
+    return static_cast<std::size_t>(std::count(out.begin(), out.end(), '\n'));
+}
+
+// Runs `command` and checks it is refused as bad input is: exit 2, one line holding each of `words`,
+// and `out` (the folder it was told to write) not created. Returns what it printed, for more checks.
+inline CommandResult expect_refused(const std::string& command, const std::vector<std::string>& words,
+                                    const std::filesystem::path& out) {
+    const CommandResult r = run_command(command);
+    INFO(command << "\n" << r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(line_count(r.out) == 1);
+    for (const std::string& w : words) CHECK_THAT(r.out, Catch::Contains(w));
+    CHECK_FALSE(std::filesystem::exists(out));
+    return r;
+}
+
+#ifdef POLYROLL_EXE
+// The polyroll program under test.
+inline const std::string kPolyrollExe = POLYROLL_EXE;
+
+// `polyroll ARGS`, as a user runs it.
+inline CommandResult run_polyroll(const std::string& args) { return run_command(kPolyrollExe + " " + args); }
+#endif
 
 }  // namespace polyroll::test

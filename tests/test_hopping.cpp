@@ -1,7 +1,7 @@
-// The free rigid body that carries an empty shell on after lift-off (models/hopping_polygon.h):
+// The free rigid body that carries an empty shell on after lift-off (models/free_body.h):
 // exact flight, the impact law (no bounce, Coulomb friction), the pivot stretch against the rigid
 // impact model it continues, the sliding stretch's series (models/slide_motion.h), and the hand-over
-// back into a ModelRun (models/hopping_run.h).
+// back into a ModelRun (models/free_body_run.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -12,8 +12,8 @@
 #include "sim/fidelity_preset.h"
 #include "sim/fill_plan.h"
 #include "sim/model_registry.h"
-#include "sim/models/hopping_polygon.h"
-#include "sim/models/hopping_run.h"
+#include "sim/models/free_body.h"
+#include "sim/models/free_body_run.h"
 #include "sim/models/reduced_run.h"
 #include "sim/models/slide_motion.h"
 #include "sim/shell_properties.h"
@@ -30,13 +30,13 @@ Scene empty_scene(int sides, double angle_deg) {
     return test::scene_with({{"fill", {{"ratio", 0.0}}}, {"shell", {{"sides", sides}}}, {"ramp", {{"angle_deg", angle_deg}}}});
 }
 
-HopBody body_of(const Scene& s) {
+FreeBody body_of(const Scene& s) {
     const ShellProperties sp = shell_properties(s.shell);
     return {shell_outer_polygon_m(s.shell), sp.mass_kg, sp.inertia_kg_m2};
 }
 
-HopRules rules_of(const Scene& s) {
-    HopRules r;
+FreeBodyRules rules_of(const Scene& s) {
+    FreeBodyRules r;
     r.angle_deg = s.ramp.angle_deg;
     r.gravity_m_s2 = s.run.gravity_m_s2;
     r.friction = s.ramp.friction;
@@ -53,18 +53,18 @@ HopRules rules_of(const Scene& s) {
 TEST_CASE("a shell dropped vertex-first falls as a parabola and lands without bouncing, by Coulomb's law",
           "[models][hopping]") {
     const Scene s = empty_scene(8, 20.0);
-    const HopBody b = body_of(s);
-    HopRules rules = rules_of(s);
+    const FreeBody b = body_of(s);
+    FreeBodyRules rules = rules_of(s);
     const double g = s.run.gravity_m_s2, theta = 20.0 * kPi / 180.0;
     const double radius = geom::length(b.outer_m[0]), h0 = 0.01;
     // Vertex 1 straight down (tracker.cpp's numbering: a = pi/n - 2 pi/n), 1 cm above the ramp, at rest.
-    HopStart start;
+    FreeBodyStart start;
     start.state.pose.angle_rad = -kPi / 8.0;
     start.state.pose.centre_m = {0.5, radius + h0};
     start.release = start.state.pose;
     start.landed_vertex = 0;  // so that landing on vertex 1 is recorded, with its energies
     start.measured.behaviour = Behaviour::running;
-    const HopRun r = hop(b, rules, start);
+    const FreeBodyMotion r = free_body_motion(b, rules, start);
     REQUIRE(!r.unsupported_time_s);
     REQUIRE(!r.measured.impacts.empty());
     const FaceImpact& landing = r.measured.impacts.front();
@@ -91,7 +91,7 @@ TEST_CASE("a shell dropped vertex-first falls as a parabola and lands without bo
 
     // With a frictionless ramp the tangential momentum is kept and the vertex slides on.
     rules.friction = 0.0;
-    const HopRun slick = hop(b, rules, start);
+    const FreeBodyMotion slick = free_body_motion(b, rules, start);
     REQUIRE(!slick.measured.impacts.empty());
     CHECK(slick.measured.impacts.front().kinetic_after_J == Approx(0.5 * b.mass_kg * vt * vt).epsilon(1e-7));
     CHECK(slick.slides >= 1);
@@ -107,7 +107,7 @@ TEST_CASE("on a shell that never lifts off, the free rigid body rolls exactly as
         const RunResult rigid = run_scene(rigid_scene);
         REQUIRE(rigid.model_valid);
         ReducedRun at_release(rigid_scene, FillMotion::frozen);
-        HoppingRun free_body(rigid_scene, at_release.hand_over());
+        FreeBodyRun free_body(rigid_scene, at_release.hand_over());
         free_body.run_to_end();
         const RunResult f = free_body.result();
         CHECK(f.measured.behaviour == rigid.measured.behaviour);
@@ -131,7 +131,7 @@ TEST_CASE("the free rigid body hands over mid-run with the state it shows", "[mo
     const long lift = static_cast<long>(std::floor(*rigid.result().model_invalid_time_s * s.fidelity.step_hz));
     while (rigid.steps() < lift && rigid.step()) {
     }
-    HoppingRun free_body(s, rigid.hand_over());
+    FreeBodyRun free_body(s, rigid.hand_over());
     CHECK(free_body.steps() == lift);
     for (int i = 0; i < 150; ++i) free_body.step();
     const HandOver h = free_body.hand_over();

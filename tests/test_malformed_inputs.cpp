@@ -47,7 +47,7 @@ Result run_polyroll(const std::string& args) {
     return polyroll::test::run_command(limit + "exec " + std::string(POLYROLL_EXE) + " " + args);
 }
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("malformed-" + name, true); }
+const polyroll::test::Scratch scratch("malformed-", true);
 
 void write(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
 

@@ -54,7 +54,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a reduced model or an empty shell fits any budget") {
         const BudgetFigures f = figures(3e-6);
         for (const Scene& s : {test::with_model(big_rice(), Model::rigid), test::scene_with({{"fill", {{"ratio", 0.0}}}})}) {
-            const BudgetChoice c = suggest_model({s}, f, f.physics_s_per_grain_step, false);
+            const BudgetChoice c = offered_level({s}, f, f.physics_s_per_grain_step, false);
             CHECK(!c.reduced());
             CHECK(c.fits);
             CHECK(apply_choice({s}, f, c)[0].fill.material.diameter_m == s.fill.material.diameter_m);
@@ -63,7 +63,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a machine fast enough keeps the big scene as asked") {
         // 0.7 s of physics per simulated second buys 0.7 / 1e-7 grain steps: 7,000 grains at 1,000 steps/s.
         const BudgetFigures f = figures(1e-7);
-        const BudgetChoice c = suggest_model(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = offered_level(big, f, f.physics_s_per_grain_step, false);
         CHECK(!c.reduced());
         CHECK(c.fits);
     }
@@ -71,7 +71,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
         // Between the cost of the grains as asked and 1 / 1.5^2 of it.
         const double cost = 0.7 / (grains * 1000.0) * 1.5;
         const BudgetFigures f = figures(cost);
-        const BudgetChoice c = suggest_model(big, f, cost, false);
+        const BudgetChoice c = offered_level(big, f, cost, false);
         REQUIRE(c.reduced());
         CHECK(f.levels.at(static_cast<size_t>(c.level)).grain_scale == 1.5);
         CHECK(f.levels.at(static_cast<size_t>(c.level)).fidelity.empty());
@@ -83,7 +83,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("much too slow: coarser grains first, then a coarser step") {
         const double cost = 0.7 / (grains * 1000.0) * 6.0;  // 2x grains alone (1/4) is not enough
         const BudgetFigures f = figures(cost);
-        const BudgetChoice c = suggest_model(big, f, cost, true);
+        const BudgetChoice c = offered_level(big, f, cost, true);
         REQUIRE(c.reduced());
         const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
         CHECK(l.grain_scale == 2.0);
@@ -98,25 +98,25 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     }
     SECTION("beyond every level: the cheapest, saying it still does not keep up") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = suggest_model(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = offered_level(big, f, f.physics_s_per_grain_step, false);
         CHECK(c.level == static_cast<int>(f.levels.size()) - 1);
         CHECK(!c.fits);
-        const BudgetChoice asked = picked_model(big, f, -1, f.physics_s_per_grain_step, false);
+        const BudgetChoice asked = picked_level(big, f, -1, f.physics_s_per_grain_step, false);
         CHECK_THAT(budget_statement(asked, c, f), Catch::Contains("comes closer to real time"));
     }
     SECTION("the scene as asked stays as asked however slow, saying it plays slower") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = picked_model(big, f, -1, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = picked_level(big, f, -1, f.physics_s_per_grain_step, false);
         CHECK(!c.reduced());
         CHECK(!c.fits);
         CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m == big[0].fill.material.diameter_m);
-        const BudgetChoice offer = suggest_model(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice offer = offered_level(big, f, f.physics_s_per_grain_step, false);
         CHECK_THAT(budget_statement(c, offer, f),
                    Catch::Contains("costs more than real time") && Catch::Contains("never differently"));
     }
     SECTION("a level is only ever the one picked, and its key names it on the command line") {
         const BudgetFigures f = figures(1e-9);  // a fast machine: the scene fits as asked
-        const BudgetChoice c = picked_model(big, f, 1, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = picked_level(big, f, 1, f.physics_s_per_grain_step, false);
         CHECK(c.level == 1);
         CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m ==
               Approx(f.levels[1].grain_scale * big[0].fill.material.diameter_m));
@@ -124,7 +124,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
         for (size_t i = 0; i < f.levels.size(); ++i) CHECK(level_from_key(level_key(f.levels[i]), f) == static_cast<int>(i));
         CHECK(level_key(f.levels.back()) == "2x-draft");
         CHECK_THROWS_WITH(level_from_key("3x", f), Catch::Contains("--coarser 3x") && Catch::Contains("allowed: none, 1.5x"));
-        CHECK_THROWS(picked_model(big, f, 99, f.physics_s_per_grain_step, false));
+        CHECK_THROWS(picked_level(big, f, 99, f.physics_s_per_grain_step, false));
     }
 }
 
@@ -149,22 +149,32 @@ TEST_CASE("coarser grains keep the fill's mass and level in fewer grains", "[app
 
 TEST_CASE("the panel names what the budget offers and what it costs", "[app][budget]") {
     const BudgetFigures f = figures(0.7 / (900 * 1000.0) * 6.0);
-    const BudgetChoice c = suggest_model({big_rice()}, f, f.physics_s_per_grain_step, false);
+    const BudgetChoice c = offered_level({big_rice()}, f, f.physics_s_per_grain_step, false);
     REQUIRE(c.reduced());
     const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
-    const BudgetChoice asked = picked_model({big_rice()}, f, -1, f.physics_s_per_grain_step, false);
+    const BudgetChoice asked = picked_level({big_rice()}, f, -1, f.physics_s_per_grain_step, false);
     const std::string said = budget_statement(asked, c, f);
     CHECK_THAT(said, Catch::Contains("Offered: " + level_label(l)) && Catch::Contains("keeps real time") &&
                          Catch::Contains("same fill mass") && Catch::Contains("trade study"));
     // Picked, the same level says it was picked and what it costs.
-    const BudgetChoice picked = picked_model({big_rice()}, f, c.level, f.physics_s_per_grain_step, false);
+    const BudgetChoice picked = picked_level({big_rice()}, f, c.level, f.physics_s_per_grain_step, false);
     CHECK_THAT(budget_statement(picked, c, f), Catch::Contains("as picked") && Catch::Contains(level_label(l)) &&
                                                    Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     // The level's measured error, as a percentage, and the full detail's beside it.
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     CHECK_THAT(said, Catch::Contains(fmt::format("{:.1f}%", 100 * f.full_detail.terminal_velocity_error)));
-    CHECK(budget_model_label("grains", l) == level_label(l));
-    CHECK(budget_model_label("auto: grains", l) == "auto: " + level_label(l));
+    // From the lane's model and auto's choice, never from the label's text.
+    const Scene grains = test::with_model(big_rice(), Model::grains);
+    CHECK(budget_model_label(grains, nullptr, l) == level_label(l));
+    ModelChoice filled;
+    filled.model = Model::grains;
+    CHECK(budget_model_label(grains, &filled, l) == "auto: " + level_label(l));
+    ModelChoice handed;
+    handed.model = Model::rigid;
+    handed.then = Model::grains;
+    handed.lift_off_time_s = 0.3;
+    handed.hand_over_time_s = 0.412;
+    CHECK(budget_model_label(grains, &handed, l) == "auto: grains from 0.41 s, " + level_label(l));
     CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("picked in the panel"));
     CHECK(level_label({2.0, "draft", 0, 0, 0, ""}) == "grains 2x larger, draft step");
     CHECK(level_label({1.5, "", 0, 0, 0, ""}) == "grains 1.5x larger");
@@ -173,7 +183,7 @@ TEST_CASE("the panel names what the budget offers and what it costs", "[app][bud
     CHECK(grain_steps_per_engine_step(1008, 1.0) == Approx(1009.0));
     CHECK(grain_steps_per_engine_step(1008, 1.84) / grain_steps_per_engine_step(251, 1.84) ==
           Approx(std::pow(1009.0 / 252.0, 1.84)));
-    const BudgetChoice fast = picked_model({big_rice()}, figures(1e-9), -1, 1e-9, false);
+    const BudgetChoice fast = picked_level({big_rice()}, figures(1e-9), -1, 1e-9, false);
     CHECK_THAT(budget_statement(fast, fast, f), Catch::Contains("as asked") && Catch::Contains("keeps real time"));
 }
 

@@ -12,8 +12,11 @@
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
 #include "sim/shell_properties.h"
+#include "sim/model_choice.h"
 #include "sim/model_registry.h"
+#include "sim/scene_fields.h"
 #include "sim/world_builder.h"
+#include "test_helpers.h"
 
 using namespace polyroll;
 using geom::Vec2;
@@ -420,4 +423,29 @@ TEST_CASE("an empty shell rolls alike in the rigid model and the grain simulatio
     const double x_grains = before->position_m + w * (after->position_m - before->position_m);
     INFO("position at t = " << tenth.time_s << " s: rigid " << tenth.position_m << " m, grains " << x_grains << " m");
     CHECK(std::fabs(x_grains / tenth.position_m - 1.0) <= 0.05);
+}
+
+TEST_CASE("the registry describes every model and auto picks only the models it may", "[models][registry]") {
+    const std::string help = field_help(scene_field("run.model"));
+    for (Model m : all_models()) {
+        INFO(to_string(m));
+        CHECK_FALSE(model_traits(m).description.empty());
+        CHECK_THAT(help, Catch::Contains(to_string(m) + " (" + model_traits(m).description));
+    }
+    CHECK_THAT(help, Catch::Contains(auto_rule_description()));
+    // The window's tooltip lists only what the window offers.
+    for (Model m : all_models())
+        CHECK((model_help(everyday_models()).find(model_traits(m).description) != std::string::npos) ==
+              model_traits(m).everyday);
+    for (double ratio : {0.0, 0.25, 1.0}) {
+        for (double curvature : {0.0, 1.7}) {
+            const Scene s = test::with_model(
+                test::scene_with({{"fill", {{"ratio", ratio}}}, {"ramp", {{"curvature_deg_per_m", curvature}}}}),
+                Model::automatic);
+            INFO("fill " << ratio << ", curvature " << curvature);
+            for (Model m : models_a_run_may_use(s)) CHECK(model_traits(m).auto_may_pick);
+            // Only a run with a fill has grains to step, and every choice but the empty shell's may step them.
+            CHECK(may_step_grains(s) == (ratio > 0.0));
+        }
+    }
 }

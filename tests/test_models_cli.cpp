@@ -13,9 +13,9 @@ namespace {
 
 using Output = polyroll::test::CommandResult;
 
-Output run_polyroll(const std::string& args) { return polyroll::test::run_command(std::string(POLYROLL_EXE) + " " + args); }
+using polyroll::test::run_polyroll;
 
-std::filesystem::path fresh_dir(const std::string& name) { return polyroll::test::scratch_dir("models-" + name); }
+const polyroll::test::Scratch fresh_dir("models-");
 
 }  // namespace
 

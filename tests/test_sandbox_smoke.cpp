@@ -56,8 +56,7 @@ const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
 // Under AddressSanitizer (tests/ci_checks.sh) the sandbox still runs with ASan and UBSan checking every
 // access, but without the leak check at exit: Mesa's GLX driver, loaded with dlopen and unloaded by
 // GLFW before exit, leaves allocations that LeakSanitizer can only attribute to an "<unknown module>",
-// which no suppression can name. The leak checks the issue asks for (a run, a render, a sweep) are in
-// tests/ci_checks.sh.
+// which no suppression can name. The leak checks of a run, a render and a sweep are in tests/ci_checks.sh.
 std::string sandbox_env() {
 #if defined(__SANITIZE_ADDRESS__)
     const char* opts = std::getenv("ASAN_OPTIONS");
@@ -274,7 +273,7 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
     for (const std::string& args : {std::string("--preset nope"), std::string("--frames -3"),
                                     std::string("--ui-scale 9"), std::string("--size 10x10"),
                                     std::string("--screenshot x.png"),
-                                    // 0 frames would run forever (issue 16 row 7): refused, not "unlimited".
+                                    // 0 frames would run forever: refused, not "unlimited".
                                     std::string("--frames 0"), std::string("--theme light"),
                                     std::string("--coarser 3x")}) {
         INFO(args);

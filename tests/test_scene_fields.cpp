@@ -25,15 +25,35 @@ void leaf_paths(const json& j, const std::string& prefix, std::vector<std::strin
     }
 }
 
+// The scene file's format as users' files hold it, written out by hand: the fields in their order.
+// Neither the table nor the writer can change it unnoticed; a new field is added here on purpose.
+const std::vector<std::string> kSceneFileFields = {
+    "shell.preset", "shell.sides", "shell.inner_circumradius_m", "shell.wall_thickness_m", "shell.depth_m",
+    "shell.lid_thickness_m", "shell.mass_kg", "shell.lid_mass_fraction",
+    "fill.ratio", "fill.material.preset", "fill.material.diameter_m", "fill.material.diameter_spread",
+    "fill.material.bulk_density_kg_m3", "fill.material.friction", "fill.material.wall_friction",
+    "fill.material.lid_friction", "fill.material.restitution", "fill.material.packing_fraction",
+    "fill.material.grains_per_disc",
+    "ramp.preset", "ramp.length_m", "ramp.friction", "ramp.restitution", "ramp.angle_deg",
+    "ramp.curvature_deg_per_m",
+    "release.pose", "release.tilt_deg",
+    "fidelity.preset", "fidelity.step_hz", "fidelity.substeps", "fidelity.velocity_iterations",
+    "fidelity.position_iterations",
+    "run.model", "run.seed", "run.time_limit_s", "run.sample_hz", "run.gravity_m_s2", "run.settle_time_s",
+    "run.rest_speed_m_s", "run.rest_time_s",
+    "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.edge_radius_m",
+};
 
 }  // namespace
 
 TEST_CASE("the field table holds every field of a scene file, in its order", "[scene][fields]") {
+    // The default scene names every preset, so the writer leaves none of its fields out.
     std::vector<std::string> written;
     leaf_paths(scene_to_json(resolve_scene({})), "", written);
+    CHECK(written == kSceneFileFields);
     std::vector<std::string> table;
     for (const SceneField& f : scene_fields()) table.emplace_back(f.path);
-    CHECK(written == table);
+    CHECK(table == kSceneFileFields);
     // Each field round-trips through its accessor.
     const Scene s = resolve_scene({});
     for (const SceneField& f : scene_fields()) {

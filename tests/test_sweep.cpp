@@ -30,7 +30,7 @@ namespace {
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sweep-" + name); }
+const polyroll::test::Scratch scratch("sweep-");
 
 // A cheap grid: empty shells and a few grains, draft fidelity, short runs; one point out of range.
 SweepPlan tiny_plan() {

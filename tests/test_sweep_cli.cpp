@@ -23,9 +23,9 @@ using Result = polyroll::test::CommandResult;
 
 Result shell(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
-const std::string exe = POLYROLL_EXE;
+using polyroll::test::kPolyrollExe;
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sweep-cli-" + name); }
+const polyroll::test::Scratch scratch("sweep-cli-");
 
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
@@ -41,22 +41,22 @@ const std::string kGrid =
 TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-process table", "[sweep][cli]") {
     REQUIRE(shell("parallel --version").exit_code == 0);  // GNU parallel: third_party/debian-packages.txt
     const fs::path one = scratch("one"), big = scratch("big");
-    const Result single = shell(exe + " sweep " + kGrid + " --jobs 1 --out " + one.string());
+    const Result single = shell(kPolyrollExe + " sweep " + kGrid + " --jobs 1 --out " + one.string());
     INFO(single.out);
     REQUIRE(single.exit_code == 0);
 
-    const Result plan = shell(exe + " sweep " + kGrid + " --out " + big.string() + " --plan-only");
+    const Result plan = shell(kPolyrollExe + " sweep " + kGrid + " --out " + big.string() + " --plan-only");
     INFO(plan.out);
     REQUIRE(plan.exit_code == 0);
     CHECK(fs::exists(big / "plan.json"));
     CHECK_FALSE(fs::exists(big / "results.csv"));
     CHECK(read_file(big / "plan.json") == read_file(one / "plan.json"));
 
-    const Result slices = shell("parallel --will-cite --halt now,fail=1 -j2 " + exe + " sweep --from " + big.string() +
+    const Result slices = shell("parallel --will-cite --halt now,fail=1 -j2 " + kPolyrollExe + " sweep --from " + big.string() +
                                 " --shard {}/4 --jobs 1 -q ::: 1 2 3 4");
     INFO(slices.out);
     REQUIRE(slices.exit_code == 0);
-    const Result merged = shell(exe + " sweep --merge " + big.string());
+    const Result merged = shell(kPolyrollExe + " sweep --merge " + big.string());
     INFO(merged.out);
     REQUIRE(merged.exit_code == 0);
     CHECK_THAT(merged.out, Catch::Contains("5 tables") && Catch::Contains("48 of 48 runs"));
@@ -68,7 +68,7 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
           std::distance(fs::directory_iterator(one / "runs"), fs::directory_iterator{}));
 
     // The same command again resumes: nothing left to run, the table unchanged.
-    const Result again = shell(exe + " sweep " + kGrid + " --jobs 2 --out " + one.string());
+    const Result again = shell(kPolyrollExe + " sweep " + kGrid + " --jobs 2 --out " + one.string());
     INFO(again.out);
     CHECK(again.exit_code == 0);
     CHECK_THAT(again.out, Catch::Contains("48 found done before"));
@@ -108,18 +108,11 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         // One name for the field flag: --param was an alias of --set.
         {"--param shell.depth_m=0.05 --out " + out.string(), {"unknown flag '--param'"}},
     };
-    for (const Case& c : cases) {
-        const Result r = shell(exe + " sweep " + c.args);
-        INFO(c.args << "\n" << r.out);
-        CHECK(r.exit_code == 2);
-        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
-        for (const auto& w : c.words) CHECK_THAT(r.out, Catch::Contains(w));
-        CHECK_FALSE(fs::exists(out));
-    }
+    for (const Case& c : cases) polyroll::test::expect_refused(kPolyrollExe + " sweep " + c.args, c.words, out);
     // A non-empty folder that is no sweep: the message suggests what sweep has, not --force.
     fs::create_directories(out);
     std::ofstream(out / "notes.txt") << "mine";
-    const Result full = shell(exe + " sweep --fill 0 --out " + out.string());
+    const Result full = shell(kPolyrollExe + " sweep --fill 0 --out " + out.string());
     INFO(full.out);
     CHECK(full.exit_code == 2);
     CHECK_THAT(full.out, Catch::Contains("not empty") && Catch::Contains("a new or empty folder"));
@@ -127,9 +120,9 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
     CHECK_FALSE(fs::exists(out / "plan.json"));
     fs::remove_all(out);
     // A folder holding another sweep is not overwritten.
-    REQUIRE(shell(exe + " sweep --sides 6 --fill 0 --out " + out.string() + " --plan-only").exit_code == 0);
+    REQUIRE(shell(kPolyrollExe + " sweep --sides 6 --fill 0 --out " + out.string() + " --plan-only").exit_code == 0);
     const std::string before = read_file(out / "plan.json");
-    const Result other = shell(exe + " sweep --sides 8 --fill 0 --out " + out.string());
+    const Result other = shell(kPolyrollExe + " sweep --sides 8 --fill 0 --out " + out.string());
     INFO(other.out);
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds a different sweep"));
@@ -140,10 +133,10 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
 TEST_CASE("sweep: more values for the same flags extend a finished sweep and keep its runs", "[sweep][cli]") {
     const fs::path out = scratch("extend");
     const std::string common = " --sides 6 --fill 0 --fidelity draft --time-limit 0.2 -q --jobs 1 --out " + out.string();
-    REQUIRE(shell(exe + " sweep --angle 20" + common).exit_code == 0);
+    REQUIRE(shell(kPolyrollExe + " sweep --angle 20" + common).exit_code == 0);
     const std::string first_row = read_file(out / "results.csv").substr(read_file(out / "results.csv").find('\n') + 1);
     // 10 deg sorts before 20: the finished run moves to index 1 and is not run again.
-    const Result wider = shell(exe + " sweep --angle 10,20,30" + common);
+    const Result wider = shell(kPolyrollExe + " sweep --angle 10,20,30" + common);
     INFO(wider.out);
     REQUIRE(wider.exit_code == 0);
     CHECK_THAT(wider.out, Catch::Contains("extends the sweep") && Catch::Contains("1 runs were planned there, 3 now"));
@@ -156,7 +149,7 @@ TEST_CASE("sweep: more values for the same flags extend a finished sweep and kee
     // Fewer values, or another field, is still a different sweep, refused with nothing changed.
     const std::string plan_before = read_file(out / "plan.json");
     for (const std::string& args : {std::string(" --angle 10,20"), std::string(" --angle 10,20,30 --seeds 2")}) {
-        const Result other = shell(exe + " sweep" + args + common);
+        const Result other = shell(kPolyrollExe + " sweep" + args + common);
         INFO(args << "\n" << other.out);
         CHECK(other.exit_code == 2);
         CHECK_THAT(other.out, Catch::Contains("holds a different sweep") && Catch::Contains("more values to extend it"));
@@ -168,7 +161,7 @@ TEST_CASE("sweep: more values for the same flags extend a finished sweep and kee
 TEST_CASE("sweep: the grid and its time echoed first, lists out of order run ascending, all failed exits 1",
           "[sweep][cli]") {
     const fs::path out = scratch("echo");
-    const Result r = shell(exe + " sweep --fill 0 --angle 12,5 --fidelity draft --time-limit 0.1 -q --jobs 1 --out " +
+    const Result r = shell(kPolyrollExe + " sweep --fill 0 --angle 12,5 --fidelity draft --time-limit 0.1 -q --jobs 1 --out " +
                            out.string());
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -192,7 +185,7 @@ TEST_CASE("sweep: the grid and its time echoed first, lists out of order run asc
                                           {SweepAxis{"fill.ratio", "--fill", {25, 50}}});
     fs::create_directories(out);
     write_plan(out, plan);
-    const Result failed = shell(exe + " sweep -q --jobs 1 --from " + out.string());
+    const Result failed = shell(kPolyrollExe + " sweep -q --jobs 1 --from " + out.string());
     INFO(failed.out);
     CHECK(failed.exit_code == 1);
     CHECK_THAT(failed.out, Catch::Contains("first failure  invalid point: fill.ratio = 25"));

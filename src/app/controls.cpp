@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
+#include "app/sandbox_settings.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
@@ -19,114 +22,220 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
+// A row whose value is a member of LaneControls or of SharedControls.
+template <auto Member>
+ControlRow lane_row(std::string_view path, PanelSection section) {
+    ControlRow r;
+    r.path = path;
+    r.scope = Scope::lane;
+    r.section = section;
+    r.get = [](const LaneControls& l, const SharedControls&) { return FieldValue(l.*Member); };
+    r.put = [](LaneControls& l, SharedControls&, const FieldValue& v) {
+        l.*Member = std::get<std::decay_t<decltype(l.*Member)>>(v);
+    };
+    return r;
+}
+template <auto Member>
+ControlRow shared_row(std::string_view path, PanelSection section) {
+    ControlRow r;
+    r.path = path;
+    r.scope = Scope::shared;
+    r.section = section;
+    r.get = [](const LaneControls&, const SharedControls& c) { return FieldValue(c.*Member); };
+    r.put = [](LaneControls&, SharedControls& c, const FieldValue& v) {
+        c.*Member = std::get<std::decay_t<decltype(c.*Member)>>(v);
+    };
+    return r;
+}
+
+// The row with the panel's additions, named.
+struct With {
+    std::string_view note = {}, format = {};
+    std::optional<double> slider_max = {};
+    std::vector<RadioOption> radio = {};
+    std::string_view label = {};
+};
+ControlRow with(ControlRow r, With w) {
+    r.note = w.note;
+    r.format = w.format;
+    r.slider_max = w.slider_max;
+    r.radio = std::move(w.radio);
+    r.label = w.label;
+    return r;
+}
+
+using S = PanelSection;
+
+std::vector<ControlRow> make_rows() {
+    return {
+        // --- this lane: the polygon and its fill
+        with(lane_row<&LaneControls::polygon>("shell.preset", S::lane),
+             {.note = "This lane's shell; n below can change its number of sides."}),
+        with(lane_row<&LaneControls::sides>("shell.sides", S::lane),
+             {.format = "%d", .slider_max = kSidesSliderMax}),
+        with(lane_row<&LaneControls::fill_ratio>("fill.ratio", S::lane), {.format = "%.2f"}),
+        with(lane_row<&LaneControls::material>("fill.material.preset", S::lane),
+             {.note = "Friction and restitution can be changed under Advanced."}),
+        // --- all lanes: the ramp and the physics
+        with(shared_row<&SharedControls::angle_deg>("ramp.angle_deg", S::ramp),
+             {.note = "All lanes.", .format = "%.1f\u00B0", .slider_max = kAngleSliderMaxDeg}),
+        with(shared_row<&SharedControls::seed>("run.seed", S::ramp),
+             {.note = "All lanes: the same seed gives the same run (as polyroll run --seed and the page's ?seed= "
+                      "do); another seed, another packing of the same fill, to see how much the outcome varies.",
+              .label = "seed"}),
+        with(shared_row<&SharedControls::ramp>("ramp.preset", S::physics), {.note = "All lanes roll on it."}),
+        with(shared_row<&SharedControls::pose>("release.pose", S::physics),
+             {.radio = {{"vertex", "on a vertex",
+                         "Held on a vertex with the centre straight above it, then let go (as in the experiment)."},
+                        {"face", "on a face", "Set down flat on a face, then let go."}}}),
+        shared_row<&SharedControls::model>("run.model", S::physics),
+        shared_row<&SharedControls::fidelity>("fidelity.preset", S::physics),
+        // --- Advanced: friction and restitution, reset by choosing a material or a ramp
+        with(lane_row<&LaneControls::grain_friction>("fill.material.friction", S::advanced),
+             {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
+        with(lane_row<&LaneControls::grain_restitution>("fill.material.restitution", S::advanced),
+             {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
+        with(shared_row<&SharedControls::ramp_friction>("ramp.friction", S::advanced),
+             {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
+        with(shared_row<&SharedControls::ramp_restitution>("ramp.restitution", S::advanced),
+             {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
+    };
+}
+
 double clamp_finite(double v, double lo, double hi) {
     if (std::isnan(v)) return lo;  // a NaN from a typed field: the lowest valid value, never NaN
     return std::clamp(v, lo, hi);
 }
 
-// Clamps to the field's limits (sim/scene_fields.cpp): the panel's fields all have fixed, closed ones.
-double clamp_to_field(std::string_view path, double v) {
-    const SceneField& f = scene_field(path);
-    return clamp_finite(v, f.min, f.max);
-}
-int clamp_to_field(std::string_view path, int v) {
-    const SceneField& f = scene_field(path);
-    return std::clamp(v, static_cast<int>(f.min), static_cast<int>(f.max));
+// A whole number given for a number field or a seed (0.5 for r is a double already; 5 for a seed an int).
+FieldValue as_field_type(const SceneField& f, const FieldValue& v) {
+    const int* whole = std::get_if<int>(&v);
+    if (whole && f.type == FieldType::number) return static_cast<double>(*whole);
+    if (whole && f.type == FieldType::seed && *whole >= 0) return static_cast<std::uint64_t>(*whole);
+    return v;
 }
 
-// The preset's values; throws InputError naming the choices for an unknown name.
-const json& values_of(assets::Kind kind, const std::string& name) { return assets::preset_values(kind, name); }
+// The value as the field allows it: a number clamped to the field's limits (the panel's fields all
+// have fixed, closed ones), a preset's name checked.
+FieldValue checked(const SceneField& f, const FieldValue& given) {
+    FieldValue v = as_field_type(f, given);
+    switch (f.type) {
+        case FieldType::integer:
+            return std::clamp(std::get<int>(v), static_cast<int>(f.min), static_cast<int>(f.max));
+        case FieldType::number: return clamp_finite(std::get<double>(v), f.min, f.max);
+        case FieldType::preset:
+            assets::preset_values(*f.kind, std::get<std::string>(v));  // throws for an unknown name
+            return v;
+        case FieldType::optional_number:
+        case FieldType::seed:  // every 64-bit seed is one the core accepts: nothing to clamp
+        case FieldType::choice: break;
+    }
+    return v;
+}
+
+// A preset's value for a field, as the field's type.
+FieldValue preset_value(const SceneField& f, const json& v) {
+    if (f.type == FieldType::integer) return v.get<int>();
+    if (f.type == FieldType::number) return v.get<double>();
+    throw std::logic_error(fmt::format("a preset sets control '{}', which is not a number", f.path));
+}
+
+// "fill.material.friction" -> "/fill/material/friction".
+json::json_pointer pointer_to(std::string_view path) {
+    std::string p = "/" + std::string(path);
+    std::replace(p.begin(), p.end(), '.', '/');
+    return json::json_pointer(p);
+}
+
+json json_of(const FieldValue& value) {
+    return std::visit(
+        [](const auto& v) -> json {
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, std::optional<double>>) return v ? json(*v) : json(nullptr);
+            else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model>) return to_string(v);
+            else return v;
+        },
+        value);
+}
 
 }  // namespace
 
-void set_polygon(LaneControls& c, const std::string& preset) {
-    const json& v = values_of(assets::Kind::polygon, preset);
-    c.polygon = preset;
-    c.sides = clamp_to_field("shell.sides", v.at("sides").get<int>());
-}
-void set_sides(LaneControls& c, int sides) { c.sides = clamp_to_field("shell.sides", sides); }
-void set_fill_ratio(LaneControls& c, double ratio) { c.fill_ratio = clamp_to_field("fill.ratio", ratio); }
-void set_material(LaneControls& c, const std::string& preset) {
-    const json& v = values_of(assets::Kind::material, preset);
-    c.material = preset;
-    // Through the Advanced sliders' setters: the preset's values get the sliders' clamping.
-    set_grain_friction(c, v.at("friction").get<double>());
-    set_grain_restitution(c, v.at("restitution").get<double>());
-}
-void set_grain_friction(LaneControls& c, double f) { c.grain_friction = clamp_to_field("fill.material.friction", f); }
-void set_grain_restitution(LaneControls& c, double e) {
-    c.grain_restitution = clamp_to_field("fill.material.restitution", e);
+const std::vector<ControlRow>& control_rows() {
+    static const std::vector<ControlRow> rows = make_rows();
+    return rows;
 }
 
-void set_ramp(SharedControls& c, const std::string& preset) {
-    const json& v = values_of(assets::Kind::ramp, preset);
-    c.ramp = preset;
-    set_ramp_friction(c, v.at("friction").get<double>());
-    set_ramp_restitution(c, v.at("restitution").get<double>());
-}
-void set_angle_deg(SharedControls& c, double a) { c.angle_deg = clamp_to_field("ramp.angle_deg", a); }
-void set_ramp_friction(SharedControls& c, double f) { c.ramp_friction = clamp_to_field("ramp.friction", f); }
-void set_ramp_restitution(SharedControls& c, double e) {
-    c.ramp_restitution = clamp_to_field("ramp.restitution", e);
-}
-void set_release_pose(SharedControls& c, ReleasePose pose) { c.pose = pose; }
-void set_model(SharedControls& c, Model model) { c.model = model; }
-void set_fidelity(SharedControls& c, const std::string& preset) {
-    values_of(assets::Kind::fidelity, preset);  // checks the name
-    c.fidelity = preset;
+const ControlRow& control_row(std::string_view path) {
+    for (const ControlRow& r : control_rows())
+        if (r.path == path) return r;
+    throw std::logic_error(fmt::format("'{}' has no panel control", path));
 }
 
-// Every 64-bit seed is one the core accepts (run.seed: 0 to 2^64-1): nothing to clamp.
-void set_seed(SharedControls& c, std::uint64_t seed) { c.seed = seed; }
-
-LaneControls lane_controls_from(const Scene& s) {
-    LaneControls c;
-    c.polygon = s.shell.preset;
-    c.sides = s.shell.sides;
-    c.fill_ratio = s.fill.ratio;
-    c.material = s.fill.material.preset;
-    c.grain_friction = s.fill.material.friction;
-    c.grain_restitution = s.fill.material.restitution;
-    return c;
+std::string_view control_label(const ControlRow& row) {
+    const std::string_view label = scene_field(row.path).label;
+    return label.empty() ? row.label : label;
 }
 
-SharedControls shared_controls_from(const Scene& s) {
-    SharedControls c;
-    c.ramp = s.ramp.preset;
-    c.angle_deg = s.ramp.angle_deg;
-    c.ramp_friction = s.ramp.friction;
-    c.ramp_restitution = s.ramp.restitution;
-    c.pose = s.release.pose;
-    c.model = s.run.model;
-    c.fidelity = s.fidelity.preset;
-    c.seed = s.run.seed;
-    return c;
+FieldValue control_value(const ControlRow& row, const LaneControls& lane, const SharedControls& shared) {
+    return row.get(lane, shared);
 }
+
+void set_control(LaneControls& lane, SharedControls& shared, std::string_view path, const FieldValue& value) {
+    const ControlRow& row = control_row(path);
+    const SceneField& f = scene_field(path);
+    row.put(lane, shared, checked(f, value));
+    if (f.type != FieldType::preset) return;
+    // The preset's values for the controls of its section, clamped as typed ones are.
+    const std::string_view section = section_of(path);
+    const json& values = assets::preset_values(*f.kind, std::get<std::string>(value));
+    for (const ControlRow& other : control_rows()) {
+        if (other.scope != row.scope || section_of(other.path) != section) continue;
+        const auto it = values.find(std::string(key_of(other.path)));
+        if (it != values.end()) set_control(lane, shared, other.path, preset_value(scene_field(other.path), *it));
+    }
+}
+
+void set_control(LaneControls& lane, std::string_view path, const FieldValue& value) {
+    if (control_row(path).scope != Scope::lane) throw std::logic_error(fmt::format("'{}' is not a lane's control", path));
+    SharedControls unused;
+    set_control(lane, unused, path, value);
+}
+
+void set_control(SharedControls& shared, std::string_view path, const FieldValue& value) {
+    if (control_row(path).scope != Scope::shared)
+        throw std::logic_error(fmt::format("'{}' is not a control all lanes share", path));
+    LaneControls unused;
+    set_control(unused, shared, path, value);
+}
+
+namespace {
+template <class Controls>
+Controls controls_from(const Scene& s, Scope scope) {
+    LaneControls lane;
+    SharedControls shared;
+    for (const ControlRow& r : control_rows())
+        if (r.scope == scope) r.put(lane, shared, scene_field(r.path).access.get(s));
+    if constexpr (std::is_same_v<Controls, LaneControls>) return lane;
+    else return shared;
+}
+}  // namespace
+
+LaneControls lane_controls_from(const Scene& s) { return controls_from<LaneControls>(s, Scope::lane); }
+SharedControls shared_controls_from(const Scene& s) { return controls_from<SharedControls>(s, Scope::shared); }
 
 json controls_layer(const LaneControls& lane, const SharedControls& shared) {
-    // A preset name only when there is one: a scene file with a custom section has none, and its
-    // values then stay as the base document gave them.
-    auto with_preset = [](const std::string& preset) {
-        json j = json::object();
-        if (!preset.empty()) j["preset"] = preset;
-        return j;
-    };
     json doc = json::object();
-    json shell = with_preset(lane.polygon);
-    shell["sides"] = lane.sides;
-    doc["shell"] = shell;
-    json material = with_preset(lane.material);
-    material["friction"] = lane.grain_friction;
-    material["restitution"] = lane.grain_restitution;
-    doc["fill"] = json{{"ratio", lane.fill_ratio}, {"material", material}};
-    json ramp = with_preset(shared.ramp);
-    ramp["angle_deg"] = shared.angle_deg;
-    ramp["friction"] = shared.ramp_friction;
-    ramp["restitution"] = shared.ramp_restitution;
-    doc["ramp"] = ramp;
-    doc["release"] = json{{"pose", to_string(shared.pose)}};
-    if (!shared.fidelity.empty()) doc["fidelity"] = json{{"preset", shared.fidelity}};
-    doc["run"] = json{{"model", to_string(shared.model)}, {"seed", shared.seed}};
+    // In the scene table's order, so each section's preset comes before the values over it.
+    for (const SceneField& f : scene_fields()) {
+        const auto row = std::find_if(control_rows().begin(), control_rows().end(),
+                                      [&](const ControlRow& r) { return r.path == f.path; });
+        if (row == control_rows().end()) continue;
+        const FieldValue v = row->get(lane, shared);
+        // A preset name only when there is one: a scene file with a custom section has none, and its
+        // values then stay as the base document gave them.
+        if (const auto* name = std::get_if<std::string>(&v); name && name->empty()) continue;
+        doc[pointer_to(f.path)] = json_of(v);
+    }
     return doc;
 }
 
@@ -141,11 +250,6 @@ std::string join(const std::vector<std::string>& v) {
     return s;
 }
 }  // namespace
-
-ReleasePose release_pose_from(const std::string& name) {
-    if (auto pose = release_pose_named(name)) return *pose;
-    throw InputError(fmt::format("release pose '{}' is unknown (allowed: {})", name, join(release_pose_names())));
-}
 
 Model model_from(const std::string& name) {
     // The window offers the everyday models: the 3D reference takes a minute of CPU a run.

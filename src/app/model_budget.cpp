@@ -9,7 +9,7 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/fill_plan.h"
-#include "sim/model_choice.h"
+#include "sim/model_registry.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll::app {
@@ -47,22 +47,15 @@ BudgetFigures load_figures() {
 // Engine steps per simulated second.
 double engine_hz(const Scene& s) { return s.fidelity.step_hz * s.fidelity.substeps; }
 
-// Whether the lane may step grains: the grain model, or auto where it chooses grains at the start or
-// may hand over to them later (model_choice.h: a full shell's free rigid body can, where it meets a
-// contact it does not model; an empty shell has none to step).
-bool steps_grains(const Scene& s) {
-    if (s.fill.ratio <= 0.0) return false;
-    if (s.run.model == Model::grains) return true;
-    if (s.run.model != Model::automatic) return false;
-    const ModelChoice c = choose_model(s);
-    return c.model == Model::grains || c.then == Model::grains;
+// The grains a lane may step: none for a model without grains or an empty shell; for auto, those of the
+// model it may hand over to (the registry's may_step_grains).
+double grains_of(const Scene& s, double packing) {
+    return may_step_grains(s) ? packing * estimated_grain_count(s) : 0.0;
 }
-
-double grains_of(const Scene& s, double packing) { return steps_grains(s) ? packing * estimated_grain_count(s) : 0.0; }
 
 // A level only coarsens: a scene already at a coarser step than the level's keeps its own.
 Scene apply_level(const Scene& scene, const BudgetLevel& l) {
-    if (!steps_grains(scene)) return scene;
+    if (!may_step_grains(scene)) return scene;
     Scene s = with_coarser_grains(scene, l.grain_scale);
     if (!l.fidelity.empty()) {
         const Scene coarser = at_fidelity_preset(s, l.fidelity);
@@ -120,7 +113,7 @@ BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, 
 
 }  // namespace
 
-BudgetChoice suggest_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
+BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
                            bool measured) {
     BudgetChoice c = estimate(scenes, f, -1, cost_per_grain_step, measured);
     if (c.fits) return c;
@@ -135,7 +128,7 @@ BudgetChoice suggest_model(const std::vector<Scene>& scenes, const BudgetFigures
     return c;
 }
 
-BudgetChoice picked_model(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
+BudgetChoice picked_level(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
                           double cost_per_grain_step, bool measured) {
     if (level < -1 || level >= static_cast<int>(f.levels.size()))
         throw InputError(fmt::format("model level {}: out of range (allowed: -1 to {})", level, f.levels.size() - 1));

@@ -67,11 +67,11 @@ double grain_steps_per_engine_step(double grains, double cost_exponent);
 // The offer: the scenes as asked if they fit the budget, else the first level that fits, else the
 // cheapest level (then `fits` is false). A level that would make a scene invalid (grains too large
 // for its shell) is passed over. Only ever shown: the window steps what the user picked.
-BudgetChoice suggest_model(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
+BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
                            bool measured);
 // The model the user picked: `level` -1 (the scenes as asked) or an index into f.levels (throws
 // InputError for an index out of range, or a level whose grains do not fit a lane's shell).
-BudgetChoice picked_model(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
+BudgetChoice picked_level(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
                           double cost_per_grain_step, bool measured);
 
 // A level's short key, for --coarser: "1.5x", "2x", "2x-draft".

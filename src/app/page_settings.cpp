@@ -184,11 +184,11 @@ PageSettings parse_window_flags(const std::vector<std::pair<std::string, std::st
 void apply_page_settings(const PageSettings& page, SandboxState& state) {
     if (page.preset) load_preset(state, *page.preset);
     LaneControls& lane = state.lanes.at(static_cast<size_t>(state.selected_lane)).controls;
-    if (page.sides) set_sides(lane, *page.sides);
-    if (page.fill_ratio) set_fill_ratio(lane, *page.fill_ratio);
-    if (page.material) set_material(lane, *page.material);
-    if (page.angle_deg) set_angle_deg(state.shared, *page.angle_deg);
-    if (page.seed) set_seed(state.shared, *page.seed);
+    if (page.sides) set_control(lane, "shell.sides", *page.sides);
+    if (page.fill_ratio) set_control(lane, "fill.ratio", *page.fill_ratio);
+    if (page.material) set_control(lane, "fill.material.preset", *page.material);
+    if (page.angle_deg) set_control(state.shared, "ramp.angle_deg", *page.angle_deg);
+    if (page.seed) set_control(state.shared, "run.seed", *page.seed);
     if (page.paused) state.playing = false;
     scenes_for(state);  // a combination out of range (too many grains) is refused here, named
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/overlay.h"
 #include "render/ticks.h"
 
 namespace polyroll::app {
@@ -37,13 +38,9 @@ PlotRange speed_range(const std::vector<const Measurements*>& lanes) {
             hi = std::max(hi, s.speed_m_s);
         }
     }
-    PlotRange r;
-    r.t_max_s = growing_time_axis_s(t);
-    const render::AxisRange y =
-        growing_value_axis(lo, hi, render::kSpeedAxisFloor_m_s, render::kSpeedAxisFloorBelow_m_s);
-    r.y_min = y.lo;
-    r.y_max = y.hi;
-    return r;
+    // The frames' speed plot's axes (render/overlay.h).
+    const render::PlotAxes a = render::growing_speed_axes(t, lo, hi);
+    return {a.time_max_s, a.speed_min_m_s, a.speed_max_m_s};
 }
 
 PlotRange energy_range(const Measurements& m) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "render/overlay.h"
+#include "sim/model_registry.h"
 #include "sim/scene_names.h"
 
 namespace polyroll::app {
@@ -23,16 +24,32 @@ std::string behaviour_label(Behaviour b) {
     return "unknown";
 }
 
-std::string model_label(const Scene& scene, const ModelChoice* choice) {
-    if (!choice) return to_string(scene.run.model);
-    if (!choice->then) return "auto: " + to_string(choice->model);
+namespace {
+
+// The model row in parts: "auto: " or "", the model running now, and since when once it took over.
+struct ModelLabel {
+    std::string prefix;
+    Model running;
+    std::string name;   // the model's name, or "free body" for the rigid body free to hop
+    std::string since;  // " from 0.41 s", or "" for the model the run started with
+};
+
+ModelLabel model_label_parts(const Scene& scene, const ModelChoice* choice) {
+    if (!choice) return {"", scene.run.model, to_string(scene.run.model), ""};
     // Say which model runs now, and since when: the rigid body on the ramp, then free to fly from
     // lift-off, then Box2D where the free body meets a contact it does not model.
-    if (choice->hand_over_time_s)
-        return fmt::format("auto: {} from {:.2f} s", to_string(*choice->then), *choice->hand_over_time_s);
-    if (choice->lift_off_time_s)
-        return fmt::format("auto: free body from {:.2f} s", *choice->lift_off_time_s);  // the rigid body, free to hop
-    return fmt::format("auto: {}", to_string(choice->model));
+    if (choice->then && choice->hand_over_time_s)
+        return {"auto: ", *choice->then, to_string(*choice->then), fmt::format(" from {:.2f} s", *choice->hand_over_time_s)};
+    if (choice->then && choice->lift_off_time_s)
+        return {"auto: ", choice->model, "free body", fmt::format(" from {:.2f} s", *choice->lift_off_time_s)};
+    return {"auto: ", choice->model, to_string(choice->model), ""};
+}
+
+}  // namespace
+
+std::string model_label(const Scene& scene, const ModelChoice* choice) {
+    const ModelLabel l = model_label_parts(scene, choice);
+    return l.prefix + l.name + l.since;
 }
 
 LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s, const ModelChoice* choice) {
@@ -59,11 +76,12 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
     return r;
 }
 
-std::string budget_model_label(const std::string& model_label, const BudgetLevel& level) {
-    // The level names the grains ("grains 1.5x larger"): said once, after auto's prefix if any.
-    if (model_label == "grains") return level_label(level);
-    if (model_label == "auto: grains") return "auto: " + level_label(level);
-    return model_label + ", " + level_label(level);
+std::string budget_model_label(const Scene& scene, const ModelChoice* choice, const BudgetLevel& level) {
+    const ModelLabel l = model_label_parts(scene, choice);
+    // The level names the grains ("grains 1.5x larger"): said once, in place of the name of a model
+    // with grains that has run from the start, after auto's prefix if any.
+    if (l.since.empty() && model_traits(l.running).has_grains) return l.prefix + level_label(level);
+    return model_label(scene, choice) + ", " + level_label(level);
 }
 
 std::string budget_status(const BudgetLevel& level) {

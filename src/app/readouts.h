@@ -39,8 +39,9 @@ LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_
 std::string model_label(const Scene& scene, const ModelChoice* choice);
 
 // The model entry of a lane the physics budget made cheaper: "grains 2x larger, draft step" for
-// the grain model, "auto: grains, grains 2x larger" otherwise.
-std::string budget_model_label(const std::string& model_label, const BudgetLevel& level);
+// the grain model, "auto: grains 2x larger" for auto's grains, "auto: grains from 0.41 s, grains 2x
+// larger" for a lane auto handed to them.
+std::string budget_model_label(const Scene& scene, const ModelChoice* choice, const BudgetLevel& level);
 // The status line's note of a cheaper model the user picked: "Cheaper model, picked in the panel:
 // grains 2x larger".
 std::string budget_status(const BudgetLevel& level);

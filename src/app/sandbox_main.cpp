@@ -52,7 +52,7 @@ constexpr long kMaxFrames = 10'000'000;
 // tooltip or a finished background job shows.
 constexpr double kIdleWaitS = 0.25;
 constexpr long kDefaultBenchFrames = 600;  // 10 s at 60 frames/s: long enough for a stable mean
-constexpr const char* kBenchPreset = "hexagon-large-rice";  // the issue: the largest of the experiment's scenes
+constexpr const char* kBenchPreset = "hexagon-large-rice";  // the largest of the experiment's scenes: the worst case
 
 double now_s() {
     static const SteadyClock::time_point start = SteadyClock::now();
@@ -83,14 +83,20 @@ struct Options {
     bool capture() const { return frames > 0 && !bench; }
 };
 
+// What --size accepts: "WIDTHxHEIGHT, 640..7680 by 480..4320, e.g. 1280x800".
+std::string size_allowed() {
+    return fmt::format("WIDTHxHEIGHT, {}..{} by {}..{}, e.g. {}x{}", kMinWidthPx, kMaxWidthPx, kMinHeightPx,
+                       kMaxHeightPx, kDefaultWidthPx, kDefaultHeightPx);
+}
+
 void check(Options& o) {
     static const std::regex pattern(R"(\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*)");
     std::smatch m;
-    const std::string allowed = "allowed: WIDTHxHEIGHT, 640..7680 by 480..4320, e.g. 1280x800";
+    const std::string allowed = "allowed: " + size_allowed();
     if (!std::regex_match(o.size, m, pattern)) throw InputError(fmt::format("--size {}: not a size ({})", o.size, allowed));
     o.width_px = std::stoi(m[1]);
     o.height_px = std::stoi(m[2]);
-    if (o.width_px < 640 || o.width_px > 7680 || o.height_px < 480 || o.height_px > 4320)
+    if (o.width_px < kMinWidthPx || o.width_px > kMaxWidthPx || o.height_px < kMinHeightPx || o.height_px > kMaxHeightPx)
         throw InputError(fmt::format("--size {}: out of range ({})", o.size, allowed));
     if (o.frames_given && (o.frames < 1 || o.frames > kMaxFrames))
         throw InputError(fmt::format("--frames {}: out of range (allowed: 1 to {})", o.frames, kMaxFrames));
@@ -151,7 +157,8 @@ struct BenchStats {
                    sim, rt_wall, sim / rt_wall, phys > 0 ? sim / phys : 0.0,
                    lanes.all_finished() ? ", then the run ended" : "");
         const bool met = n / wall >= 59.0 && sim / rt_wall >= kKeepingUpShare;
-        // Issue 13's target for every bundled preset under Xvfb: real time at 50 frames/s or more.
+        // The target for every bundled preset under Xvfb (docs/sandbox.md, Speed): real time at 50 frames/s or
+        // more.
         const bool met_50 = n / wall >= 50.0 && sim / rt_wall >= kKeepingUpShare;
         fmt::print("  target       60 frames/s at real time: {}; real time at 50 frames/s or more: {}\n",
                    met ? "met" : "not met", met_50 ? "met" : "not met");
@@ -543,8 +550,7 @@ int sandbox_main(int argc, char** argv) {
     CLI::App cli{"polyroll-sandbox: the interactive sandbox. Pick a polygon, drag the fill slider, and watch it stop "
                  "or roll to the end, with the speed and energy plotted live; race up to four polygons side by side."};
     cli.footer(
-        "Keys: Space play/pause, Right step, R reset, G run to the end, F follow, C grain colours, S screenshot,\n"
-        "E export the run's files, [ and ] slow motion, Home reset the view; drag to pan, scroll to zoom.\n"
+        shortcut_help() + "\n" +
         "Without a display it renders the default scene headless instead (polyroll render) into --out, or\n"
         "runs/default; a folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
         "Examples:\n"
@@ -567,8 +573,11 @@ int sandbox_main(int argc, char** argv) {
                    fmt::format("folder for screenshots (S) and exported runs (E) (default {}); without a display, "
                                "for the headless render's frames (default {})",
                                kDefaultOutDir, kHeadlessOutDir));
-    cli.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x800)");
-    cli.add_option("--ui-scale", o.ui_scale, "size of text and controls, 0.75 to 2.5 (default 1)");
+    cli.add_option("--size", o.size,
+                   fmt::format("window size WIDTHxHEIGHT (default {}x{})", kDefaultWidthPx, kDefaultHeightPx));
+    cli.add_option("--ui-scale", o.ui_scale,
+                   fmt::format("size of text and controls, {:g} to {:g} (default {:g})", kUiScaleMin, kUiScaleMax,
+                               kDefaultUiScale));
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
     cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
     cli.add_flag("--paused", o.paused, "start paused");
@@ -617,7 +626,7 @@ int sandbox_main(int argc, char** argv) {
         const std::map<std::string, std::string> allowed = {
             {"--ui-scale", fmt::format("{:g} to {:g}", kUiScaleMin, kUiScaleMax)},
             {"--frames", fmt::format("1 to {}", kMaxFrames)},
-            {"--size", "WIDTHxHEIGHT, 640..7680 by 480..4320, e.g. 1280x800"},
+            {"--size", size_allowed()},
             {"--preset", presets_list},
             {"--theme", "projector, dark"},
             {"--color-by", "material, speed"},

@@ -96,9 +96,9 @@ void SandboxPhysics::build_chosen() {
     // The user's pick alone decides the model; a level that does not fit these scenes' shells (the
     // panel offers only those that do) falls back to the scenes as asked rather than refusing them.
     try {
-        choice_ = picked_model(asked_, f, model_level_, cost, measured);
+        choice_ = picked_level(asked_, f, model_level_, cost, measured);
     } catch (const InputError&) {
-        choice_ = picked_model(asked_, f, -1, cost, measured);
+        choice_ = picked_level(asked_, f, -1, cost, measured);
     }
     update_offer();
     lanes_.rebuild(apply_choice(asked_, f, choice_));
@@ -109,7 +109,7 @@ void SandboxPhysics::update_offer() {
     // A capture (fixed frames) uses the asset's cost only, so it shows the same offer on any machine.
     const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
     const BudgetFigures& f = budget_figures();
-    offer_ = suggest_model(asked_, f, measured ? measured_cost_ : f.physics_s_per_grain_step, measured);
+    offer_ = offered_level(asked_, f, measured ? measured_cost_ : f.physics_s_per_grain_step, measured);
 }
 
 void SandboxPhysics::measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps) {

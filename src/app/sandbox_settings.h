@@ -15,9 +15,9 @@ namespace polyroll::app {
 inline constexpr int kSidesSliderMax = 24;  // 3 to 24 sides on the slider, up to 64 typed
 // The experiment ran 5-25 degrees; above about 15 the polygons hop.
 inline constexpr double kAngleSliderMaxDeg = 45.0;
-inline constexpr int kMaxLanes = 4;  // the issue: up to four polygons racing
+inline constexpr int kMaxLanes = 4;  // up to four polygons race: more lanes would be too narrow to read
 
-// --- Transport. Slow motion halves the rate down to 1/16 (the issue's range).
+// --- Transport. Slow motion halves the rate down to 1/16: slow enough to watch one impact.
 inline constexpr std::array<int, 5> kSlowMotionDivisors = {1, 2, 4, 8, 16};
 
 // The Step button advances this much simulated time: one frame of real-time playback (a single 1 ms
@@ -30,8 +30,8 @@ inline constexpr double kFrameRateCapHz = 60.0;
 // simulated time owes, but spends at most this much wall time on them, so a slow machine slows the
 // simulation down (and the window says so) instead of freezing the UI. The steps run on a second
 // thread while the frame is drawn, so the budget may fill most of a 60 frames/s frame (16.7 ms),
-// less the panel's own ~2 ms. Measured with --bench on the 2-core machine (docs/sandbox.md), 14 ms
-// against 10 ms: the large rice scene 0.16x against 0.13x real time, 47 against 52 frames/s.
+// less the panel's own ~2 ms: 14 ms buys the heavy scenes more simulated time than 10 ms for a few
+// frames per second (docs/sandbox.md, Speed, has the measurements).
 inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
 // The physics budget (app/model_budget.h, assets/sandbox-budget.json) measures a scene's cost per
 // grain step over each this-much wall time of real-time play (a rate window, kRateWindowS) and
@@ -56,6 +56,8 @@ inline constexpr double kKeepingUpShare = 0.95;
 
 // --- Window and theme.
 inline constexpr int kDefaultWidthPx = 1280, kDefaultHeightPx = 800;  // a projector's 1280x800
+// The window sizes --size accepts: from a small laptop's to an 8K screen's.
+inline constexpr int kMinWidthPx = 640, kMaxWidthPx = 7680, kMinHeightPx = 480, kMaxHeightPx = 4320;
 inline constexpr float kBaseFontPx = 18.0f;    // DejaVu Sans at UI scale 1: readable from the back row
 inline constexpr float kUiScaleMin = 0.75f, kUiScaleMax = 2.5f, kDefaultUiScale = 1.0f;
 inline constexpr float kPanelWidthPx = 400.0f;     // the control panel, at UI scale 1

@@ -1,7 +1,21 @@
 // The sandbox's ImGui panels: see sandbox_ui.h.
+//
+// Index of this file (search for "[SECTION]" to jump between them), as Dear ImGui's demo does:
+// - Helpers: colours, tooltips, rows of buttons, the layout report
+// - Keyboard shortcuts: the table (keys, labels, tooltips and --help all read it)
+// - Widgets: preset combo, slider with its value beside the knob, tooltips and clamp notes
+// - Controls bound to the scene-field table: one widget per row of control_rows() (controls.h)
+// - Panel parts: headings, preset buttons, the model, sections of rows, budget, view
+// - Plots: a card with title, legend, axes, traces and markers
+// - Layout: where the panel, the scene and the readouts strip go       (ui_layout)
+// - Control panel window: title, transport, presets, lanes, controls   (draw_control_panel)
+// - Readouts and plots window: the table, the speed and energy plots   (draw_readouts_and_plots)
+// - Status band over the scene                                          (draw_status)
+// - Keyboard shortcuts: reading the keys, and the help                 (read_shortcuts, shortcut_help)
 #include "app/sandbox_ui.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -22,6 +36,7 @@
 #include "app/scene_view.h"
 #include "app/slider_text.h"
 #include "render/colour.h"
+#include "render/overlay.h"
 #include "render/ticks.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
@@ -34,11 +49,12 @@ namespace polyroll::app {
 
 namespace {
 
+// [SECTION] Helpers: colours, tooltips, rows of buttons, the layout report
 ImU32 im_colour(render::Rgba c) { return ImGui::ColorConvertFloat4ToU32({c.r, c.g, c.b, c.a}); }
 ImVec4 im_vec(render::Rgba c) { return {c.r, c.g, c.b, c.a}; }
 
-const ImVec4 kErrorColour{0.75f, 0.05f, 0.05f, 1.0f};
-const ImVec4 kWarnColour{0.70f, 0.35f, 0.0f, 1.0f};
+const ImVec4 kErrorColour = im_vec(render::palette::error_text);
+const ImVec4 kWarnColour = im_vec(render::palette::warning_text);
 
 // A colour for text on the panels: as given on the projector theme's pale panels; on the dark
 // theme mixed halfway to white, so the lane colours, warnings and errors stay readable there too
@@ -56,6 +72,39 @@ void tip(const std::string& text) {
     ImGui::TextUnformatted(text.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
+}
+
+// [SECTION] Keyboard shortcuts: the table
+// The keyboard shortcuts, one row each: what the key does, its keys (GLFW's codes; the second 0 for
+// none), whether holding it repeats, the key's name in the panel's labels and tooltips and in
+// --help, and what it does in --help. read_shortcuts, the panel and shortcut_help all read it.
+enum class Key { play, step, reset, run_to_end, follow, colours, screenshot, export_run, slower, faster, reset_view };
+struct Shortcut {
+    Key key;
+    int code, other_code;
+    bool repeat;
+    const char* name;
+    const char* what;
+};
+constexpr std::array<Shortcut, 11> kShortcuts = {{
+    {Key::play, GLFW_KEY_SPACE, 0, false, "Space", "play/pause"},
+    {Key::step, GLFW_KEY_RIGHT, GLFW_KEY_PERIOD, true, "Right arrow", "step"},
+    {Key::reset, GLFW_KEY_R, 0, false, "R", "reset"},
+    {Key::run_to_end, GLFW_KEY_G, GLFW_KEY_END, false, "G", "run to the end"},
+    {Key::follow, GLFW_KEY_F, 0, false, "F", "follow"},
+    {Key::colours, GLFW_KEY_C, 0, false, "C", "grain colours"},
+    {Key::screenshot, GLFW_KEY_S, 0, false, "S", "screenshot"},
+    {Key::export_run, GLFW_KEY_E, 0, false, "E", "export the run's files"},
+    {Key::slower, GLFW_KEY_LEFT_BRACKET, 0, false, "[", "slower"},
+    {Key::faster, GLFW_KEY_RIGHT_BRACKET, 0, false, "]", "faster"},
+    {Key::reset_view, GLFW_KEY_HOME, 0, false, "Home", "reset the view"},
+}};
+
+// The name of the key doing `key`: "Space".
+const char* key_of(Key key) {
+    for (const Shortcut& k : kShortcuts)
+        if (k.key == key) return k.name;
+    return "";
 }
 
 // A button's width for its label at the current font.
@@ -81,6 +130,7 @@ void record_window(UiLayoutReport* report, const char* name) {
                                 w->DC.CursorMaxPos.y});
 }
 
+// [SECTION] Widgets: preset combo, slider with its value beside the knob, tooltips and clamp notes
 std::string preset_description(assets::Kind kind, const std::string& name) {
     try {
         return assets::preset_entry(kind, name).value("description", name);
@@ -171,42 +221,99 @@ void note_clamping(const SceneField& f, double typed) {
 bool panel_high_contrast = true;
 
 // The clamp note under the control of field `f`, if it is about that field.
-void clamp_note_here(const SceneField& f, bool high_contrast) {
+void clamp_note_here(const SceneField& f) {
     if (last_clamp_note.empty() || last_clamp_field != f.path) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, high_contrast && panel_high_contrast));
+    ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, panel_high_contrast));
     ImGui::TextWrapped("%s", last_clamp_note.c_str());
     ImGui::PopStyleColor();
 }
 
-// The panel's preset combos and sliders edit a copy of the value and hand an edit to the control's
-// setter (controls.h), which checks the name or clamps the number: the panel never writes a value
-// the scene would refuse. Each is labelled by its field's row (sim/scene_fields.cpp), shows its
-// tooltip and returns true when the user changed the value.
-template <class Controls>
-bool preset_control(const SceneField& f, Controls& c, std::string value, void (*set)(Controls&, const std::string&),
-                    const std::string& panel_note) {
-    const bool edited = preset_combo(std::string(f.label).c_str(), *f.kind, value);
-    if (edited) set(c, value);
-    tip(field_tip(f, panel_note));
+// [SECTION] Controls bound to the scene-field table: one widget per row of control_rows()
+// The panel's controls are controls.h's rows. Each edits a copy of the value and hands an edit to
+// set_control, which checks the name or clamps the number: the panel never writes a value the scene
+// would refuse. Each is labelled by its field's row (sim/scene_fields.cpp), shows its tooltip and
+// returns true when the user changed the value.
+struct Edit {
+    LaneControls& lane;
+    SharedControls& shared;
+};
+
+// What the panel adds to the field's tooltip: the row's note, and how to pass the slider's end.
+std::string panel_note(const ControlRow& row, const SceneField& f) {
+    if (!row.slider_max) return std::string(row.note);
+    const std::string unit = f.unit.empty() ? std::string() : " " + std::string(f.unit);
+    const std::string more = fmt::format("Ctrl+click to type more than {:g}{}.", *row.slider_max, unit);
+    return row.note.empty() ? more : std::string(row.note) + " " + more;
+}
+
+// A combo over the field's presets.
+bool preset_control(const ControlRow& row, const SceneField& f, Edit e) {
+    std::string value = std::get<std::string>(row.get(e.lane, e.shared));
+    const bool edited = preset_combo(std::string(control_label(row)).c_str(), *f.kind, value);
+    if (edited) set_control(e.lane, e.shared, row.path, value);
+    tip(field_tip(f, panel_note(row, f)));
     return edited;
 }
 
-// A slider over the field's limits, or up to `slider_max` (Ctrl+click types up to the limit).
-template <class Controls>
-bool slider_control(const SceneField& f, Controls& c, double value, const char* format,
-                    void (*set)(Controls&, double), const std::string& panel_note,
-                    std::optional<double> slider_max = std::nullopt) {
-    const bool edited =
-        slider_double(std::string(f.label).c_str(), value, f.min, slider_max.value_or(f.max), format);
-    if (edited) {
-        set(c, value);
-        note_clamping(f, value);
+// A slider over the field's limits, or up to the row's slider_max (Ctrl+click types up to the limit).
+bool slider_control(const ControlRow& row, const SceneField& f, Edit e) {
+    const std::string label(control_label(row));
+    const std::string format(row.format);
+    const double hi = row.slider_max.value_or(f.max);
+    bool edited = false;
+    if (f.type == FieldType::integer) {
+        int n = std::get<int>(row.get(e.lane, e.shared));
+        edited = knob_slider(label.c_str(), ImGuiDataType_S32, n, static_cast<int>(f.min), static_cast<int>(hi),
+                             format.c_str());
+        if (edited) {
+            set_control(e.lane, e.shared, row.path, n);
+            note_clamping(f, n);
+        }
+    } else {
+        double v = std::get<double>(row.get(e.lane, e.shared));
+        edited = slider_double(label.c_str(), v, f.min, hi, format.c_str());
+        if (edited) {
+            set_control(e.lane, e.shared, row.path, v);
+            note_clamping(f, v);
+        }
     }
-    tip(field_tip(f, panel_note));
-    clamp_note_here(f, true);
+    tip(field_tip(f, panel_note(row, f)));
+    clamp_note_here(f);
     return edited;
 }
 
+// A seed typed, or stepped by one.
+bool seed_control(const ControlRow& row, const SceneField& f, Edit e) {
+    std::uint64_t seed = std::get<std::uint64_t>(row.get(e.lane, e.shared));
+    const std::uint64_t one = 1;
+    const bool edited =
+        ImGui::InputScalar(std::string(control_label(row)).c_str(), ImGuiDataType_U64, &seed, &one, nullptr, "%llu");
+    if (edited) set_control(e.lane, e.shared, row.path, seed);
+    tip(field_tip(f, panel_note(row, f)));
+    return edited;
+}
+
+// A choice as the row's radio buttons, after the label, wrapping when the panel is narrow.
+bool radio_control(const ControlRow& row, const SceneField& f, Edit e) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(std::string(control_label(row)).c_str());
+    const float radio_extra = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
+    const FieldValue current = row.get(e.lane, e.shared);
+    bool edited = false;
+    for (const RadioOption& o : row.radio) {
+        const std::string text(o.text);
+        const std::optional<FieldValue> value = f.choice_named(o.name);
+        same_line_if_fits(radio_extra + ImGui::CalcTextSize(text.c_str()).x);
+        if (ImGui::RadioButton(text.c_str(), value == current) && value) {
+            set_control(e.lane, e.shared, row.path, *value);
+            edited = true;
+        }
+        tip(std::string(o.tip));
+    }
+    return edited;
+}
+
+// [SECTION] Panel parts: headings, preset buttons, the model, sections of rows, budget, view
 void heading(const char* text) {
     ImGui::Spacing();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -285,43 +392,6 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
     }
 }
 
-void lane_controls(SandboxState& s, UiRequests& req) {
-    LaneControls& c = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
-    bool changed = preset_control(scene_field("shell.preset"), c, c.polygon, set_polygon,
-                                  "This lane's shell; n below can change its number of sides.");
-    const SceneField& sides = scene_field("shell.sides");
-    int n = c.sides;
-    if (knob_slider(std::string(sides.label).c_str(), ImGuiDataType_S32, n, static_cast<int>(sides.min), kSidesSliderMax,
-                    "%d")) {
-        set_sides(c, n);
-        note_clamping(sides, n);
-        changed = true;
-    }
-    tip(field_tip(sides, fmt::format("Ctrl+click to type more than {}.", kSidesSliderMax)));
-    clamp_note_here(sides, s.high_contrast);
-    changed |= slider_control(scene_field("fill.ratio"), c, c.fill_ratio, "%.2f", set_fill_ratio, "");
-    changed |= preset_control(scene_field("fill.material.preset"), c, c.material, set_material,
-                              "Friction and restitution can be changed under Advanced.");
-    if (changed) req.controls_changed = true;
-}
-
-void shared_controls(SandboxState& s, UiRequests& req) {
-    SharedControls& c = s.shared;
-    if (slider_control(scene_field("ramp.angle_deg"), c, c.angle_deg, "%.1f\u00B0", set_angle_deg,
-                       fmt::format("All lanes. Ctrl+click to type more than {:g} degrees.", kAngleSliderMaxDeg),
-                       kAngleSliderMaxDeg))
-        req.controls_changed = true;
-    // The seed: the same seed gives the same run, here, on the page and with polyroll run --seed.
-    std::uint64_t seed = c.seed;
-    const std::uint64_t one = 1;
-    if (ImGui::InputScalar("seed", ImGuiDataType_U64, &seed, &one, nullptr, "%llu")) {
-        set_seed(c, seed);
-        req.controls_changed = true;
-    }
-    tip("The grain packing's seed, all lanes: the same seed gives the same run (as polyroll run --seed and the "
-        "page's ?seed= do); another seed, another packing of the same fill, to see how much the outcome varies.");
-}
-
 // A combo over an enumeration's names (sim/scene_names.h); true when the choice changed.
 bool names_combo(const char* label, const std::vector<std::string>& names, int& index) {
     return ImGui::Combo(
@@ -333,53 +403,45 @@ bool names_combo(const char* label, const std::vector<std::string>& names, int& 
         const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
 }
 
-void physics_controls(SandboxState& s, UiRequests& req) {
-    SharedControls& c = s.shared;
-    bool changed = preset_control(scene_field("ramp.preset"), c, c.ramp, set_ramp,
-                                  "All lanes roll on it.");
-    const SceneField& pose = scene_field("release.pose");
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted(std::string(pose.label).c_str());
-    const float radio_extra = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
-    same_line_if_fits(radio_extra + ImGui::CalcTextSize("on a vertex").x);
-    if (ImGui::RadioButton("on a vertex", c.pose == ReleasePose::vertex)) {
-        set_release_pose(c, ReleasePose::vertex);
-        changed = true;
-    }
-    tip("Held on a vertex with the centre straight above it, then let go (as in the experiment).");
-    same_line_if_fits(radio_extra + ImGui::CalcTextSize("on a face").x);
-    if (ImGui::RadioButton("on a face", c.pose == ReleasePose::face)) {
-        set_release_pose(c, ReleasePose::face);
-        changed = true;
-    }
-    tip("Set down flat on a face, then let go.");
-    const SceneField& model = scene_field("run.model");
+// The model's combo, drawn by hand: it offers the window's models only (window_model_names), and its
+// tooltip describes them.
+bool model_control(const ControlRow& row, Edit e) {
+    const SceneField& model = scene_field(row.path);
     const std::vector<std::string>& models = window_model_names();
-    int m = static_cast<int>(std::find(models.begin(), models.end(), to_string(c.model)) - models.begin());
+    const std::string current = to_string(std::get<Model>(row.get(e.lane, e.shared)));
+    int m = static_cast<int>(std::find(models.begin(), models.end(), current) - models.begin());
+    bool changed = false;
     if (names_combo(std::string(model.label).c_str(), models, m)) {
-        set_model(c, model_from(models[static_cast<size_t>(m)]));
+        set_control(e.lane, e.shared, row.path, model_from(models[static_cast<size_t>(m)]));
         changed = true;
     }
-    tip(field_tip(model, "segments: the fill as rigid segments that re-level after each impact; rigid: the fill "
-                         "frozen as at release. The reduced models compute a whole run in under a millisecond and "
-                         "draw the shell only; neither runs a curved track. auto: rigid for an empty or a full shell "
-                         "(a free rigid body where it would lift off or slip), grains for a partly filled one or a "
-                         "curved track."));
-    changed |= preset_control(scene_field("fidelity.preset"), c, c.fidelity, set_fidelity, "");
-    if (changed) req.controls_changed = true;
+    tip("Physics: " + model_help(everyday_models()) +
+        ". The reduced models compute a whole run in under a millisecond and draw the shell only.");
+    return changed;
 }
 
-void advanced_controls(SandboxState& s, UiRequests& req) {
-    LaneControls& l = s.lanes[static_cast<size_t>(s.selected_lane)].controls;
-    SharedControls& c = s.shared;
-    bool changed = slider_control(scene_field("fill.material.friction"), l, l.grain_friction, "%.2f",
-                                  set_grain_friction, "This lane. Choosing a material resets it.");
-    changed |= slider_control(scene_field("fill.material.restitution"), l, l.grain_restitution, "%.2f",
-                              set_grain_restitution, "This lane. Choosing a material resets it.");
-    changed |= slider_control(scene_field("ramp.friction"), c, c.ramp_friction, "%.2f", set_ramp_friction,
-                              "All lanes. Choosing a ramp resets it.");
-    changed |= slider_control(scene_field("ramp.restitution"), c, c.ramp_restitution, "%.2f", set_ramp_restitution,
-                              "All lanes. Choosing a ramp resets it.");
+// One control, its widget chosen by its field's type: presets in a combo, numbers on a slider, the
+// seed typed, a choice as the row's radio buttons (the model, the one choice in a combo, by hand).
+bool draw_control(const ControlRow& row, Edit e) {
+    const SceneField& f = scene_field(row.path);
+    switch (f.type) {
+        case FieldType::preset: return preset_control(row, f, e);
+        case FieldType::integer:
+        case FieldType::number: return slider_control(row, f, e);
+        case FieldType::seed: return seed_control(row, f, e);
+        case FieldType::choice: return row.radio.empty() ? model_control(row, e) : radio_control(row, f, e);
+        case FieldType::optional_number: break;  // no control shows one
+    }
+    return false;
+}
+
+// The controls of one section of the panel, in the rows' order (controls.h); a change asks for a
+// rebuild. The lane's controls are the selected lane's.
+void section_controls(PanelSection section, SandboxState& s, UiRequests& req) {
+    const Edit e{s.lanes[static_cast<size_t>(s.selected_lane)].controls, s.shared};
+    bool changed = false;
+    for (const ControlRow& row : control_rows())
+        if (row.section == section) changed |= draw_control(row, e);
     if (changed) req.controls_changed = true;
 }
 
@@ -413,7 +475,8 @@ void budget_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
 }
 
 void view_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
-    ImGui::Checkbox("follow the polygon (F)", &s.follow);
+    const std::string follow = fmt::format("follow the polygon ({})", key_of(Key::follow));
+    ImGui::Checkbox(follow.c_str(), &s.follow);
     tip("On: the camera follows the leading polygon, zoomed in. Off: the whole ramp. Drag to pan, scroll to zoom.");
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted("grains by");
@@ -421,17 +484,18 @@ void view_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
     same_line_if_fits(radio_extra + ImGui::CalcTextSize("material").x);
     if (ImGui::RadioButton("material", s.colouring == render::GrainColouring::material))
         s.colouring = render::GrainColouring::material;
-    tip("Grains coloured by their material (C toggles).");
+    tip(fmt::format("Grains coloured by their material ({} toggles).", key_of(Key::colours)));
     same_line_if_fits(radio_extra + ImGui::CalcTextSize("speed").x);
     if (ImGui::RadioButton("speed", s.colouring == render::GrainColouring::speed))
         s.colouring = render::GrainColouring::speed;
-    tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above (C toggles); the "
+    tip(fmt::format("Grains coloured by speed: dark violet at rest to yellow at {:g} m/s and above ({} toggles); the "
                     "legend is over the scene.",
-                    kDefaultColourSpeedMax_m_s));
+                    kDefaultColourSpeedMax_m_s, key_of(Key::colours)));
     float scale = s.ui_scale;
     if (knob_slider("UI scale", ImGuiDataType_Float, scale, kUiScaleMin, kUiScaleMax, "%.2f\u00D7")) s.ui_scale = scale;
     tip("Size of the panel's text and the scene's labels, for a projector at the back of the room. A window too "
-        "small for the scale asked shows the largest that fits it (a unit of scale needs 800x540 pixels).");
+        "small for the scale asked shows the largest that fits it (a unit of scale needs " +
+        fmt::format("{:g}x{:g} pixels).", kUiScaleWindowWidthPx, kUiScaleWindowHeightPx));
     if (ctx.ui_scale_shown < s.ui_scale) {
         ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
         ImGui::TextWrapped("shown at %.2f\u00D7: the largest this window size fits", ctx.ui_scale_shown);
@@ -439,10 +503,12 @@ void view_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
     }
     ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
     tip("Dark text on pale panels with strong borders; off: ImGui's dark theme.");
-    if (ImGui::Button("reset view (Home)")) req.reset_view = true;
+    const std::string reset_view = fmt::format("reset view ({})", key_of(Key::reset_view));
+    if (ImGui::Button(reset_view.c_str())) req.reset_view = true;
     tip("Undo panning and zooming.");
 }
 
+// [SECTION] Plots: a card with title, legend, axes, traces and markers
 // A plot drawn with ImGui's draw list: axes with readable ticks, traces, markers, a legend.
 struct Trace {
     std::vector<PlotPoint> points;
@@ -464,12 +530,12 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     ImGui::Dummy(size);
     const float fs = ImGui::GetFontSize();
-    const ImU32 text = IM_COL32(20, 22, 26, 255);
-    const ImU32 grid = IM_COL32(205, 208, 215, 255);
-    const ImU32 axis = IM_COL32(60, 62, 66, 255);
+    const ImU32 text = im_colour(render::palette::text);
+    const ImU32 grid = im_colour(render::palette::plot_grid);
+    const ImU32 axis = im_colour(render::palette::plot_axis);
     const float thick = std::max(2.0f, fs * 0.14f);
     const ImVec2 p1{p0.x + size.x, p0.y + size.y};
-    dl->AddRectFilled(p0, p1, IM_COL32(255, 255, 255, 255), 3.0f);
+    dl->AddRectFilled(p0, p1, im_colour(render::palette::plot_card), 3.0f);
     dl->PushClipRect(p0, p1, true);
     // The title, shortened to what fits.
     std::string heading = fmt::format("{}: {} against time (s)", title, unit);
@@ -498,8 +564,10 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
         dl->PopClipRect();
         return;
     }
-    auto X = [&](double t) { return static_cast<float>(a0.x + (t / r.t_max_s) * (a1.x - a0.x)); };
-    auto Y = [&](double v) { return static_cast<float>(a1.y - (v - r.y_min) / (r.y_max - r.y_min) * (a1.y - a0.y)); };
+    // The frames' plot's mapping (render/overlay.h).
+    const render::PlotMapping map{a0.x, a1.x, a0.y, a1.y, r.t_max_s, r.y_min, r.y_max};
+    auto X = [&](double t) { return map.x(t); };
+    auto Y = [&](double v) { return map.y(v); };
     // Ticks: the frames' plot's rules (render/ticks.h), up to five intervals in time and four in
     // value, fewer when a label (about 3.5 em wide, 2 lines tall) would not fit between them.
     const double t_intervals = std::clamp(std::floor((a1.x - a0.x) / (fs * 3.5f)), 1.0f, 5.0f);
@@ -541,6 +609,7 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
 
 }  // namespace
 
+// [SECTION] Layout: where the panel, the scene and the readouts strip go
 UiLayout ui_layout(float width, float height, float ui_scale) {
     UiLayout L;
     L.width = width;
@@ -549,6 +618,97 @@ UiLayout ui_layout(float width, float height, float ui_scale) {
     L.plots_h = std::round(kPlotsHeightShare * height);
     return L;
 }
+
+// [SECTION] Control panel window: title, transport, presets, lanes, controls, save
+namespace {
+
+// The widest label of the panel's controls: every control's frame ends where its label's room begins,
+// so no label runs off the panel's edge (ImGui's default, 65% of the width, leaves too little at a
+// large UI scale).
+float panel_label_width() {
+    float w = std::max(ImGui::CalcTextSize("slow motion").x, ImGui::CalcTextSize("UI scale").x);
+    for (const ControlRow& row : control_rows())
+        if (row.radio.empty()) w = std::max(w, ImGui::CalcTextSize(std::string(control_label(row)).c_str()).x);
+    return w;
+}
+
+// Play, step, reset, run to the end and slow motion. After the end, the play button says what it
+// does then: the run starts again.
+void transport_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
+    const char* play = ctx.run_over ? "\u25B6 Replay" : s.playing ? "\u275A\u275A Pause" : "\u25B6 Play";
+    if (ImGui::Button(play)) req.toggle_play = true;
+    tip(ctx.run_over ? fmt::format("The run has ended: start it again from release ({}).", key_of(Key::play))
+                     : fmt::format("Play or pause the simulation ({}).", key_of(Key::play)));
+    same_line_if_fits(button_w("Step"));
+    if (ImGui::Button("Step")) req.step = true;
+    tip(fmt::format("Advance {:.3f} s of simulated time while paused ({}).", kSingleStepS, key_of(Key::step)));
+    same_line_if_fits(button_w("Reset"));
+    if (ImGui::Button("Reset")) req.reset = true;
+    tip(fmt::format("Rebuild the scene from the controls and start again from release ({}).", key_of(Key::reset)));
+    same_line_if_fits(button_w("Run to end"));
+    if (ImGui::Button("Run to end")) req.run_to_end = true;
+    tip(fmt::format("Compute the rest of the run as fast as possible without drawing it, then show the end ({}).",
+                    key_of(Key::run_to_end)));
+    std::vector<std::string> slow_labels;
+    slow_labels.reserve(std::size(kSlowMotionDivisors));
+    for (int d : kSlowMotionDivisors) slow_labels.push_back(d == 1 ? "1\u00D7 (real time)" : fmt::format("1/{}\u00D7", d));
+    if (ImGui::BeginCombo("slow motion", slow_labels[static_cast<size_t>(s.slow_index)].c_str())) {
+        for (size_t i = 0; i < slow_labels.size(); ++i)
+            if (ImGui::Selectable(slow_labels[i].c_str(), static_cast<int>(i) == s.slow_index))
+                s.slow_index = static_cast<int>(i);
+        ImGui::EndCombo();
+    }
+    tip(fmt::format("Simulated time runs at this share of real time: 1\u00D7 is real time, 1/16\u00D7 sixteen times "
+                    "slower ({} and {} change it).",
+                    key_of(Key::slower), key_of(Key::faster)));
+}
+
+// One tab per lane, in its colour (the selected one is the lane the controls edit), and the tab adding
+// a lane.
+void lane_tabs(SandboxState& s, UiRequests& req) {
+    if (!ImGui::BeginTabBar("lanes")) return;
+    for (size_t i = 0; i < s.lanes.size(); ++i) {
+        const std::string name = fmt::format("Lane {}", i + 1);
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(im_vec(lane_colour(i)), s.high_contrast));
+        const bool open = ImGui::BeginTabItem(name.c_str());
+        ImGui::PopStyleColor();
+        if (open) {
+            s.selected_lane = static_cast<int>(i);
+            ImGui::EndTabItem();
+        }
+    }
+    if (static_cast<int>(s.lanes.size()) < kMaxLanes) {
+        if (ImGui::TabItemButton("+", ImGuiTabItemFlags_Trailing)) {
+            if (add_lane(s)) req.controls_changed = true;
+        }
+        tip("Add a lane: a copy of this one, on its own parallel ramp, started together with the others.");
+    }
+    ImGui::EndTabBar();
+}
+
+void save_controls(UiRequests& req) {
+    const std::string screenshot = fmt::format("Screenshot ({})", key_of(Key::screenshot));
+    if (ImGui::Button(screenshot.c_str())) req.screenshot = true;
+    tip("Save the window as a PNG; where it went is said over the scene.");
+    const std::string export_run = fmt::format("Export run ({})", key_of(Key::export_run));
+    same_line_if_fits(button_w(export_run.c_str()));
+    if (ImGui::Button(export_run.c_str())) req.export_run = true;
+    tip("Write the current run's summary.json, trajectory.csv and impacts.csv (the files polyroll run writes), "
+        "one folder per lane; where they went is said over the scene.");
+}
+
+// Whether a change restarts at once, and a note while changes wait for Reset.
+void restart_controls(SandboxState& s) {
+    ImGui::Checkbox("restart on change", &s.restart_on_change);
+    tip("On: every change rebuilds the scene and starts again (a slider when let go). Off: changes wait for Reset.");
+    if (s.changes_pending && !s.restart_on_change) {
+        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
+        ImGui::TextWrapped("controls changed: Reset applies them");
+        ImGui::PopStyleColor();
+    }
+}
+
+}  // namespace
 
 void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L, UiRequests& req,
                         UiLayoutReport* report) {
@@ -559,65 +719,17 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
     panel_high_contrast = s.high_contrast;
-    // Every control's frame ends where its label's room begins, so no label runs off the panel's edge
-    // (ImGui's default, 65% of the width, leaves too little at a large UI scale).
-    float label_w = 0.0f;
-    for (const char* l : {"slow motion", "polygon", "n (sides)", "r (fill)", "material", "\u03B8 (angle)", "seed",
-                          "ramp", "model", "fidelity", "grain restitution", "UI scale"})
-        label_w = std::max(label_w, ImGui::CalcTextSize(l).x);
-    ImGui::PushItemWidth(-(label_w + ImGui::GetStyle().ItemInnerSpacing.x + 2.0f));
+    ImGui::PushItemWidth(-(panel_label_width() + ImGui::GetStyle().ItemInnerSpacing.x + 2.0f));
     if (ctx.large_font) ImGui::PushFont(ctx.large_font);
     ImGui::TextUnformatted("polyroll sandbox");
     if (ctx.large_font) ImGui::PopFont();
-
-    // Transport. After the end, the play button says what it does then: the run starts again.
-    const char* play = ctx.run_over ? "\u25B6 Replay" : s.playing ? "\u275A\u275A Pause" : "\u25B6 Play";
-    if (ImGui::Button(play)) req.toggle_play = true;
-    tip(ctx.run_over ? "The run has ended: start it again from release (Space)." : "Play or pause the simulation (Space).");
-    same_line_if_fits(button_w("Step"));
-    if (ImGui::Button("Step")) req.step = true;
-    tip(fmt::format("Advance {:.3f} s of simulated time while paused (Right arrow).", kSingleStepS));
-    same_line_if_fits(button_w("Reset"));
-    if (ImGui::Button("Reset")) req.reset = true;
-    tip("Rebuild the scene from the controls and start again from release (R).");
-    same_line_if_fits(button_w("Run to end"));
-    if (ImGui::Button("Run to end")) req.run_to_end = true;
-    tip("Compute the rest of the run as fast as possible without drawing it, then show the end (G).");
-    std::vector<std::string> slow_labels;
-    slow_labels.reserve(std::size(kSlowMotionDivisors));
-    for (int d : kSlowMotionDivisors) slow_labels.push_back(d == 1 ? "1\u00D7 (real time)" : fmt::format("1/{}\u00D7", d));
-    if (ImGui::BeginCombo("slow motion", slow_labels[static_cast<size_t>(s.slow_index)].c_str())) {
-        for (size_t i = 0; i < slow_labels.size(); ++i)
-            if (ImGui::Selectable(slow_labels[i].c_str(), static_cast<int>(i) == s.slow_index))
-                s.slow_index = static_cast<int>(i);
-        ImGui::EndCombo();
-    }
-    tip("Simulated time runs at this share of real time: 1\u00D7 is real time, 1/16\u00D7 sixteen times slower "
-        "([ and ] change it).");
+    transport_controls(s, ctx, req);
 
     if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) preset_buttons(s, req);
 
-    heading("Lanes (up to 4 race side by side)");
-    if (ImGui::BeginTabBar("lanes")) {
-        for (size_t i = 0; i < s.lanes.size(); ++i) {
-            const std::string name = fmt::format("Lane {}", i + 1);
-            ImGui::PushStyleColor(ImGuiCol_Text, on_panel(im_vec(lane_colour(i)), s.high_contrast));
-            const bool open = ImGui::BeginTabItem(name.c_str());
-            ImGui::PopStyleColor();
-            if (open) {
-                s.selected_lane = static_cast<int>(i);
-                ImGui::EndTabItem();
-            }
-        }
-        if (static_cast<int>(s.lanes.size()) < kMaxLanes) {
-            if (ImGui::TabItemButton("+", ImGuiTabItemFlags_Trailing)) {
-                if (add_lane(s)) req.controls_changed = true;
-            }
-            tip("Add a lane: a copy of this one, on its own parallel ramp, started together with the others.");
-        }
-        ImGui::EndTabBar();
-    }
-    lane_controls(s, req);
+    heading(fmt::format("Lanes (up to {} race side by side)", kMaxLanes).c_str());
+    lane_tabs(s, req);
+    section_controls(PanelSection::lane, s, req);
     if (s.lanes.size() > 1) {
         if (ImGui::Button("remove this lane")) {
             if (remove_lane(s, s.selected_lane)) req.controls_changed = true;
@@ -625,35 +737,187 @@ void draw_control_panel(SandboxState& s, const UiContext& ctx, const UiLayout& L
         tip("Take this lane out of the race.");
     }
     heading("Ramp and physics (all lanes)");
-    shared_controls(s, req);
-    physics_controls(s, req);
+    section_controls(PanelSection::ramp, s, req);
+    section_controls(PanelSection::physics, s, req);
     budget_controls(s, ctx, req);
 
-    if (ImGui::CollapsingHeader("Advanced")) advanced_controls(s, req);
+    if (ImGui::CollapsingHeader("Advanced")) section_controls(PanelSection::advanced, s, req);
     tip("Grain and ramp friction and restitution.");
     if (ImGui::CollapsingHeader("View")) view_controls(s, ctx, req);
-    if (ImGui::CollapsingHeader("Save")) {
-        if (ImGui::Button("Screenshot (S)")) req.screenshot = true;
-        tip("Save the window as a PNG; where it went is said over the scene.");
-        same_line_if_fits(button_w("Export run (E)"));
-        if (ImGui::Button("Export run (E)")) req.export_run = true;
-        tip("Write the current run's summary.json, trajectory.csv and impacts.csv (the files polyroll run writes), "
-            "one folder per lane; where they went is said over the scene.");
-    }
+    if (ImGui::CollapsingHeader("Save")) save_controls(req);
     ImGui::Spacing();
-    ImGui::Checkbox("restart on change", &s.restart_on_change);
-    tip("On: every change rebuilds the scene and starts again (a slider when let go). Off: changes wait for Reset.");
-    if (s.changes_pending && !s.restart_on_change) {
-        ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-        ImGui::TextWrapped("controls changed: Reset applies them");
-        ImGui::PopStyleColor();
-    }
+    restart_controls(s);
     // Room under the last control, so that scrolled to the bottom it is whole above the window's edge.
     ImGui::Dummy({1.0f, ImGui::GetFrameHeight()});
     ImGui::PopItemWidth();
     record_window(report, "controls");
     ImGui::End();
 }
+
+// [SECTION] Readouts and plots window: the table, the speed plot, the energy plot
+namespace {
+
+// The readouts table's rows: the label, the lane's entry, what it is (the label's tooltip).
+struct ReadoutRow {
+    const char* label;
+    std::string LaneReadout::*field;
+    const char* what;
+};
+const std::vector<ReadoutRow>& readout_rows() {
+    static const std::vector<ReadoutRow> rows = {
+        {"polygon", &LaneReadout::polygon, "The number of sides n."},
+        {"fill", &LaneReadout::fill, "The fill ratio r and the grains."},
+        {"position", &LaneReadout::position, "The lid centre's distance down the ramp from release, m."},
+        {"speed", &LaneReadout::speed, "The lid centre's speed along the ramp, m/s (negative rocking back)."},
+        {"face impacts", &LaneReadout::impacts, "Faces landed so far."},
+        {"behaviour", &LaneReadout::behaviour,
+         "What the run did, once known: stopped at its first impact, stopped (after rolling), or rolled to the end."},
+        {"distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended)."},
+        {"terminal v", &LaneReadout::terminal,
+         "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end."},
+        {"model", &LaneReadout::model,
+         "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty or a "
+         "full shell, going on as a free rigid body where it would lift off or slip; grains for a partly "
+         "filled one or a curved track. Hover a lane's entry for its reason."},
+    };
+    return rows;
+}
+
+// Every lane's readouts; a lane the budget made cheaper says so in its model entry.
+std::vector<LaneReadout> lane_readouts(const UiContext& ctx) {
+    const LaneSet& lanes = *ctx.lanes;
+    std::vector<LaneReadout> r;
+    for (size_t i = 0; i < lanes.size(); ++i)
+        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s(),
+                                 lanes.lane(i).model_choice()));
+    if (ctx.budget && ctx.budget->reduced())
+        for (size_t i = 0; i < lanes.size(); ++i)
+            if (lanes.lane(i).grains() > 0)
+                r[i].model = budget_model_label(lanes.lane(i).scene(), lanes.lane(i).model_choice(),
+                                                budget_figures().levels.at(static_cast<size_t>(ctx.budget->level)));
+    return r;
+}
+
+// How the readouts strip is shared between the table and the plots.
+struct StripLayout {
+    float table_w = 0, plot_w = 0, tab_h = 0;
+    bool table_tab = false;   // the table in a tab of its own, as wide as the strip
+    bool table_fits = false;  // every entry whole on one line
+    bool tabbed = false;      // one plot at a time, chosen by tabs
+    bool racing = false;      // several lanes
+};
+
+// The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
+// kReadoutTableMaxShare of the width; past that its cells wrap rather than cut their text, and the
+// plot keeps the rest (at a large UI scale it would otherwise shrink to a thumbnail).
+StripLayout strip_layout(const std::vector<LaneReadout>& r, ImVec2 avail) {
+    const float gap = ImGui::GetStyle().ItemSpacing.x;
+    const float fs = ImGui::GetFontSize();
+    const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
+    float needed_w = 0;
+    for (const ReadoutRow& row : readout_rows()) needed_w = std::max(needed_w, ImGui::CalcTextSize(row.label).x);
+    needed_w += cell_pad;
+    for (const LaneReadout& lr : r) {
+        float w = fs * 2.0f;
+        // The model entry wraps in its cell ("auto: free body from 0.48 s" would set the column's width
+        // alone): the table is as wide as the other entries, or as "auto: free body" (two lines at most).
+        for (const ReadoutRow& row : readout_rows())
+            if (row.field != &LaneReadout::model) w = std::max(w, ImGui::CalcTextSize((lr.*row.field).c_str()).x);
+        w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize("auto: free body").x));
+        needed_w += w + cell_pad;
+    }
+    StripLayout S;
+    // A table that needs more than its share of the strip wraps its cells there, as long as the plot
+    // beside it keeps kMinPlotWidthEm; past that (a large UI scale, a narrow window) it gets a tab of
+    // its own, as wide as the strip, beside the plots' tabs: its cells would otherwise wrap letter by
+    // letter, or the plot shrink to a thumbnail.
+    const float share_w = avail.x * kReadoutTableMaxShare;
+    S.table_tab = needed_w > share_w && avail.x - share_w - gap < fs * kMinPlotWidthEm;
+    S.table_fits = needed_w <= (S.table_tab ? avail.x : share_w);
+    S.table_w = S.table_tab ? avail.x : std::min(needed_w, share_w);
+    // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
+    // so the readout columns and the plot both stay wide enough to read.
+    S.racing = r.size() > 1;
+    // Tabs also when two plots side by side would be narrower than kMinPlotWidthEm each (a large UI
+    // scale or a small window): one readable plot rather than two slivers.
+    S.tabbed = S.table_tab || S.racing || (avail.x - S.table_w - 2 * gap) / 2.0f < fs * kMinPlotWidthEm;
+    S.plot_w = S.table_tab  ? avail.x
+               : S.tabbed ? avail.x - S.table_w - gap
+                          : (avail.x - S.table_w - 2 * gap) / 2.0f;
+    S.tab_h = ImGui::GetFrameHeightWithSpacing();
+    return S;
+}
+
+// Readouts: one column per lane (the time is the status line's: the lanes started together).
+void readout_table(const SandboxState& s, const UiContext& ctx, const std::vector<LaneReadout>& r,
+                   const StripLayout& S, float height, UiLayoutReport* report) {
+    ImGui::BeginChild("table", {S.table_w, height});
+    const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
+                               (S.table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
+    if (ImGui::BeginTable("readouts", static_cast<int>(r.size()) + 1, tf)) {
+        if (S.racing) {
+            ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted("lane");
+            for (size_t i = 0; i < r.size(); ++i) {
+                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                if (ctx.large_font) ImGui::PushFont(ctx.large_font);
+                ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
+                if (ctx.large_font) ImGui::PopFont();
+            }
+        }
+        for (const ReadoutRow& row : readout_rows()) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(row.label);
+            tip(row.what);
+            const bool model = row.field == &LaneReadout::model;
+            for (size_t i = 0; i < r.size(); ++i) {
+                ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
+                if (S.table_fits && !model) ImGui::TextUnformatted((r[i].*row.field).c_str());
+                else ImGui::TextWrapped("%s", (r[i].*row.field).c_str());
+                // auto's reason under the pointer, on the lane's model entry.
+                if (model && !r[i].model_reason.empty()) tip(r[i].model_reason);
+            }
+        }
+        ImGui::EndTable();
+    }
+    record_window(report, "table");
+    ImGui::EndChild();
+}
+
+// The lid centre's speed in every lane, each in its lane's colour, face impacts marked.
+void speed_plot(const std::vector<const Measurements*>& all, const StripLayout& S, float height,
+                UiLayoutReport* report) {
+    const size_t max_points = static_cast<size_t>(std::max(50.0f, S.plot_w));
+    std::vector<Trace> traces;
+    std::vector<Markers> markers;
+    for (size_t i = 0; i < all.size(); ++i) {
+        traces.push_back({series(*all[i], Series::speed, max_points), im_colour(lane_colour(i)),
+                          S.racing ? fmt::format("lane {}", i + 1) : std::string()});
+        markers.push_back({impact_markers(*all[i]), im_colour(lane_colour(i))});
+    }
+    draw_plot("Speed", "m/s", speed_range(all), traces, markers, {S.plot_w, height});
+    if (report)
+        report->plots.push_back({"speed", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                                 ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
+    tip("The lid centre's speed along the ramp against time; dots mark face impacts.");
+}
+
+// The energies of the selected lane.
+void energy_plot(const Measurements& m, size_t lane, const StripLayout& S, float height) {
+    const size_t max_points = static_cast<size_t>(std::max(50.0f, S.plot_w));
+    const std::vector<Trace> energy = {
+        {series(m, Series::kinetic, max_points), im_colour(render::palette::energy_kinetic), "kinetic"},
+        {series(m, Series::potential, max_points), im_colour(render::palette::energy_potential), "potential"},
+        {series(m, Series::dissipated, max_points), im_colour(render::palette::energy_dissipated), "dissipated"}};
+    const std::string title = S.racing ? fmt::format("Energy, lane {}", lane + 1) : std::string("Energy");
+    draw_plot(title.c_str(), "J", energy_range(m), energy, {}, {S.plot_w, height});
+    tip("Kinetic energy of shell and grains, potential energy relative to release, and the energy dissipated so "
+        "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
+}
+
+}  // namespace
 
 void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
     ImGui::SetNextWindowPos({L.panel_w, L.height - L.plots_h});
@@ -670,155 +934,34 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
         return;
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float gap = ImGui::GetStyle().ItemSpacing.x;
-    const float fs = ImGui::GetFontSize();
-    std::vector<LaneReadout> r;
-    for (size_t i = 0; i < lanes.size(); ++i)
-        r.push_back(lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), lanes.lane(i).time_s(),
-                                 lanes.lane(i).model_choice()));
-    // A lane the budget made cheaper says so in its model entry.
-    if (ctx.budget && ctx.budget->reduced())
-        for (size_t i = 0; i < lanes.size(); ++i)
-            if (lanes.lane(i).grains() > 0)
-                r[i].model = budget_model_label(r[i].model,
-                                                budget_figures().levels.at(static_cast<size_t>(ctx.budget->level)));
-    // The table as wide as its longest entries (every lane's "stopped at 1st impact" whole), up to
-    // kReadoutTableMaxShare of the width; past that its cells wrap rather than cut their text, and the
-    // plot keeps the rest (at a large UI scale it would otherwise shrink to a thumbnail).
-    const std::vector<std::string> labels = {"polygon", "fill", "position", "speed", "face impacts",
-                                             "behaviour", "distance", "terminal v", "model"};
-    const float cell_pad = 2.0f * ImGui::GetStyle().CellPadding.x + 2.0f;
-    float needed_w = 0;
-    for (const std::string& l : labels) needed_w = std::max(needed_w, ImGui::CalcTextSize(l.c_str()).x);
-    needed_w += cell_pad;
-    for (const LaneReadout& lr : r) {
-        float w = fs * 2.0f;
-        // The model entry wraps in its cell ("auto: free body from 0.48 s" would set the column's width
-        // alone): the table is as wide as the other entries, or as "auto: free body" (two lines at most).
-        for (const std::string* f : {&lr.polygon, &lr.fill, &lr.position, &lr.speed, &lr.impacts, &lr.behaviour,
-                                     &lr.distance, &lr.terminal})
-            w = std::max(w, ImGui::CalcTextSize(f->c_str()).x);
-        w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize("auto: free body").x));
-        needed_w += w + cell_pad;
-    }
-    // A table that needs more than its share of the strip wraps its cells there, as long as the plot
-    // beside it keeps kMinPlotWidthEm; past that (a large UI scale, a narrow window) it gets a tab of
-    // its own, as wide as the strip, beside the plots' tabs: its cells would otherwise wrap letter by
-    // letter, or the plot shrink to a thumbnail.
-    const float share_w = avail.x * kReadoutTableMaxShare;
-    const bool table_tab = needed_w > share_w && avail.x - share_w - gap < fs * kMinPlotWidthEm;
-    const bool table_fits = needed_w <= (table_tab ? avail.x : share_w);
-    const float table_w = table_tab ? avail.x : std::min(needed_w, share_w);
-    // One lane: the speed and energy plots side by side. Several: one plot at a time, chosen by tabs,
-    // so the readout columns and the plot both stay wide enough to read.
-    const bool racing = lanes.size() > 1;
-    // Tabs also when two plots side by side would be narrower than kMinPlotWidthEm each (a large UI
-    // scale or a small window): one readable plot rather than two slivers.
-    const bool tabbed = table_tab || racing || (avail.x - table_w - 2 * gap) / 2.0f < fs * kMinPlotWidthEm;
-    const float plot_w = table_tab ? avail.x : tabbed ? avail.x - table_w - gap : (avail.x - table_w - 2 * gap) / 2.0f;
-    const float tab_h = ImGui::GetFrameHeightWithSpacing();
-
-    // Readouts: one column per lane (the time is the status line's: the lanes started together).
-    auto table = [&](float height) {
-        ImGui::BeginChild("table", {table_w, height});
-        const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
-                                   (table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
-        if (ImGui::BeginTable("readouts", static_cast<int>(lanes.size()) + 1, tf)) {
-            if (racing) {
-                ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
-                ImGui::TableSetColumnIndex(0);
-                ImGui::TextUnformatted("lane");
-                for (size_t i = 0; i < lanes.size(); ++i) {
-                    ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                    if (ctx.large_font) ImGui::PushFont(ctx.large_font);
-                    ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%zu", i + 1);
-                    if (ctx.large_font) ImGui::PopFont();
-                }
-            }
-            auto row = [&](const char* label, std::string LaneReadout::*field, const char* what) {
-                ImGui::TableNextRow();
-                ImGui::TableSetColumnIndex(0);
-                ImGui::TextUnformatted(label);
-                tip(what);
-                for (size_t i = 0; i < lanes.size(); ++i) {
-                    ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
-                    if (table_fits && field != &LaneReadout::model) ImGui::TextUnformatted((r[i].*field).c_str());
-                    else ImGui::TextWrapped("%s", (r[i].*field).c_str());
-                    // auto's reason under the pointer, on the lane's model entry.
-                    if (field == &LaneReadout::model && !r[i].model_reason.empty()) tip(r[i].model_reason);
-                }
-            };
-            row("polygon", &LaneReadout::polygon, "The number of sides n.");
-            row("fill", &LaneReadout::fill, "The fill ratio r and the grains.");
-            row("position", &LaneReadout::position, "The lid centre's distance down the ramp from release, m.");
-            row("speed", &LaneReadout::speed, "The lid centre's speed along the ramp, m/s (negative rocking back).");
-            row("face impacts", &LaneReadout::impacts, "Faces landed so far.");
-            row("behaviour", &LaneReadout::behaviour, "What the run did, once known: stopped at its first impact, stopped "
-                                                      "(after rolling), or rolled to the end.");
-            row("distance", &LaneReadout::distance, "Distance rolled, release to stop or end, m (once the run ended).");
-            row("terminal v", &LaneReadout::terminal,
-                "Terminal velocity, m/s: the mean speed over the last full turn, for a run that rolled to the end.");
-            row("model", &LaneReadout::model,
-                "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty or a "
-                "full shell, going on as a free rigid body where it would lift off or slip; grains for a partly "
-                "filled one or a curved track. Hover a lane's entry for its reason.");
-            ImGui::EndTable();
-        }
-        record_window(report, "table");
-        ImGui::EndChild();
-    };
-
+    const std::vector<LaneReadout> r = lane_readouts(ctx);
+    const StripLayout S = strip_layout(r, avail);
     std::vector<const Measurements*> all;
     for (size_t i = 0; i < lanes.size(); ++i) all.push_back(&lanes.lane(i).measured());
-    const size_t max_points = static_cast<size_t>(std::max(50.0f, plot_w));
-    auto speed_plot = [&](float height) {
-        std::vector<Trace> traces;
-        std::vector<Markers> markers;
-        for (size_t i = 0; i < lanes.size(); ++i) {
-            traces.push_back({series(*all[i], Series::speed, max_points), im_colour(lane_colour(i)),
-                              racing ? fmt::format("lane {}", i + 1) : std::string()});
-            markers.push_back({impact_markers(*all[i]), im_colour(lane_colour(i))});
-        }
-        draw_plot("Speed", "m/s", speed_range(all), traces, markers, {plot_w, height});
-        if (report)
-            report->plots.push_back({"speed", ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
-                                     ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
-        tip("The lid centre's speed along the ramp against time; dots mark face impacts.");
-    };
     const size_t sel = std::min(static_cast<size_t>(std::max(0, s.selected_lane)), lanes.size() - 1);
-    auto energy_plot = [&](float height) {
-        const Measurements& m = *all[sel];
-        const std::vector<Trace> energy = {
-            {series(m, Series::kinetic, max_points), IM_COL32(200, 40, 40, 255), "kinetic"},
-            {series(m, Series::potential, max_points), IM_COL32(30, 100, 200, 255), "potential"},
-            {series(m, Series::dissipated, max_points), IM_COL32(70, 70, 70, 255), "dissipated"}};
-        const std::string title = racing ? fmt::format("Energy, lane {}", sel + 1) : std::string("Energy");
-        draw_plot(title.c_str(), "J", energy_range(m), energy, {}, {plot_w, height});
-        tip("Kinetic energy of shell and grains, potential energy relative to release, and the energy dissipated so "
-            "far (in impacts and friction), J. With several lanes: the lane selected in the panel.");
-    };
-    if (!table_tab) {
-        table(avail.y);
+    if (!S.table_tab) {
+        readout_table(s, ctx, r, S, avail.y, report);
         ImGui::SameLine();
     }
-    if (!tabbed) {
-        speed_plot(avail.y);
+    if (!S.tabbed) {
+        speed_plot(all, S, avail.y, report);
         ImGui::SameLine();
-        energy_plot(avail.y);
+        energy_plot(*all[sel], sel, S, avail.y);
     } else {
         ImGui::BeginGroup();
         if (ImGui::BeginTabBar("plots")) {
-            if (table_tab && ImGui::BeginTabItem("readouts")) {
-                table(avail.y - tab_h);
+            if (S.table_tab && ImGui::BeginTabItem("readouts")) {
+                readout_table(s, ctx, r, S, avail.y - S.tab_h, report);
                 ImGui::EndTabItem();
             }
-            if (ImGui::BeginTabItem(racing ? "speed, all lanes" : "speed")) {
-                speed_plot(avail.y - tab_h);
+            if (ImGui::BeginTabItem(S.racing ? "speed, all lanes" : "speed")) {
+                speed_plot(all, S, avail.y - S.tab_h, report);
                 ImGui::EndTabItem();
             }
-            const std::string energy_tab = racing ? fmt::format("energy, lane {}###energy", sel + 1) : "energy###energy";
+            const std::string energy_tab =
+                S.racing ? fmt::format("energy, lane {}###energy", sel + 1) : "energy###energy";
             if (ImGui::BeginTabItem(energy_tab.c_str())) {
-                energy_plot(avail.y - tab_h);
+                energy_plot(*all[sel], sel, S, avail.y - S.tab_h);
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();
@@ -829,6 +972,7 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
     ImGui::End();
 }
 
+// [SECTION] Status band over the scene
 float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
     const LaneSet& lanes = *ctx.lanes;
     const int divisor = kSlowMotionDivisors[static_cast<size_t>(s.slow_index)];
@@ -954,22 +1098,57 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
     return height;
 }
 
+// [SECTION] Keyboard shortcuts: reading the keys, and the help
 void read_shortcuts(SandboxState& s, UiRequests& req) {
     if (ImGui::GetIO().WantTextInput) return;
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) req.toggle_play = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) || ImGui::IsKeyPressed(GLFW_KEY_PERIOD)) req.step = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) req.reset = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_G, false) || ImGui::IsKeyPressed(GLFW_KEY_END, false)) req.run_to_end = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) s.follow = !s.follow;
-    if (ImGui::IsKeyPressed(GLFW_KEY_C, false))
-        s.colouring = s.colouring == render::GrainColouring::material ? render::GrainColouring::speed
-                                                                      : render::GrainColouring::material;
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) req.screenshot = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) req.export_run = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) req.reset_view = true;
     const int last = static_cast<int>(kSlowMotionDivisors.size()) - 1;
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET, false)) s.slow_index = std::min(last, s.slow_index + 1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET, false)) s.slow_index = std::max(0, s.slow_index - 1);
+    for (const Shortcut& k : kShortcuts) {
+        const bool pressed =
+            ImGui::IsKeyPressed(k.code, k.repeat) || (k.other_code != 0 && ImGui::IsKeyPressed(k.other_code, k.repeat));
+        if (!pressed) continue;
+        switch (k.key) {
+            case Key::play: req.toggle_play = true; break;
+            case Key::step: req.step = true; break;
+            case Key::reset: req.reset = true; break;
+            case Key::run_to_end: req.run_to_end = true; break;
+            case Key::follow: s.follow = !s.follow; break;
+            case Key::colours:
+                s.colouring = s.colouring == render::GrainColouring::material ? render::GrainColouring::speed
+                                                                              : render::GrainColouring::material;
+                break;
+            case Key::screenshot: req.screenshot = true; break;
+            case Key::export_run: req.export_run = true; break;
+            case Key::slower: s.slow_index = std::min(last, s.slow_index + 1); break;
+            case Key::faster: s.slow_index = std::max(0, s.slow_index - 1); break;
+            case Key::reset_view: req.reset_view = true; break;
+        }
+    }
+}
+
+std::string shortcut_help(size_t width) {
+    std::string text = "Keys:";
+    for (const Shortcut& k : kShortcuts) text += fmt::format(" {} {},", k.name, k.what);
+    text.back() = ';';
+    text += " drag to pan, scroll to zoom.";
+    // Wrapped at spaces into lines of at most `width` characters.
+    std::string out;
+    size_t line = 0;
+    for (size_t start = 0; start < text.size();) {
+        size_t end = text.find(' ', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(start, end - start);
+        if (line > 0 && line + 1 + word.size() > width) {
+            out += '\n';
+            line = 0;
+        } else if (line > 0) {
+            out += ' ';
+            ++line;
+        }
+        out += word;
+        line += word.size();
+        start = end + 1;
+    }
+    return out;
 }
 
 }  // namespace polyroll::app

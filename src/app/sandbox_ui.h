@@ -4,6 +4,7 @@
 // scene. They edit the SandboxState and return requests; the loop carries them out.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,5 +75,9 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
 
 // Keyboard shortcuts (when no text field has the keyboard).
 void read_shortcuts(SandboxState& s, UiRequests& req);
+
+// The keyboard shortcuts for --help, wrapped into lines of at most `width` characters: "Keys: Space
+// play/pause, ...". The same table as read_shortcuts and the panel's labels and tooltips.
+std::string shortcut_help(size_t width = 100);
 
 }  // namespace polyroll::app

@@ -28,7 +28,7 @@ public:
     void render_ui();
     void swap();
     // Sleeps until an input event arrives or `timeout_s` passes: the loop calls it when nothing
-    // moves (run ended, paused), so an idle window costs no CPU (issue 16 row 7).
+    // moves (run ended, paused), so an idle window costs no CPU.
     void wait_events(double timeout_s) const;
 
     void framebuffer_size(int& width_px, int& height_px) const;

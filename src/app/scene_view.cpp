@@ -25,8 +25,8 @@ namespace {
 // The close-up: bottom left of the view, under the ramp, following one lane's polygon, framed and
 // marked in the lane's colour; the main view marks where it looks.
 // Its top is kept below the lowest ramp (with its body and labels) where that ramp passes over the
-// inset, so with three or four lanes the inset no longer hides the start of the lower lanes; it
-// shrinks down to a quarter of the view's height for that, and past it overlaps as before.
+// inset, so with three or four lanes the inset does not hide the start of the lower lanes; it
+// shrinks down to a quarter of the view's height for that, and past that it overlaps them.
 void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camera& main_cam, const Snapshot& lowest,
                         const Camera& lowest_cam, const SceneViewOptions& o, const WorldStyle& st,
                         const FontAtlas& font, DrawList& dl, SceneViewBoxes* boxes) {
@@ -52,11 +52,7 @@ void draw_lane_close_up(const Snapshot& s, size_t lane, bool racing, const Camer
 
 }  // namespace
 
-Rgba lane_colour(size_t lane) {
-    // Saturated and far apart in hue, readable on the light background and on a projector.
-    static constexpr Rgba colours[] = {rgb8(200, 40, 40), rgb8(30, 100, 200), rgb8(20, 140, 60), rgb8(200, 120, 0)};
-    return colours[lane % 4];
-}
+Rgba lane_colour(size_t lane) { return palette::lanes[lane % palette::lanes.size()]; }
 
 DrawList build_scene_view(const std::vector<Snapshot>& lanes, const SceneViewOptions& o,
                           const FontAtlas& font, SceneViewBoxes* boxes) {

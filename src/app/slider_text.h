@@ -1,4 +1,4 @@
-// Where a slider's value is written: beside its knob, never under it (issue 15 item 4). ImGui 1.86
+// Where a slider's value is written: beside its knob, never under it, so it stays readable. ImGui 1.86
 // centres the value in the frame, so the knob covers it whenever the value sits mid-range; the
 // sandbox hides that text and draws the value at the x this returns. GL-free, so the tests check it.
 #pragma once

@@ -13,6 +13,7 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
+#include "sim/scene_matrices.h"
 #include "sim/models/reduced_models.h"
 #include "sim/scene_names.h"
 #include "sim/scene_validate.h"
@@ -43,22 +44,12 @@ std::string speed(const std::optional<double>& v) { return v ? fmt::format("{:.3
 
 }  // namespace
 
-Scene auto_bench_shell(const Scene& base, int sides, double angle_deg) {
-    Scene s = base;
-    s.fill.ratio = 0.0;
-    s.shell.sides = sides;
-    s.ramp.angle_deg = angle_deg;
-    return s;
-}
-
 void bench_auto(const Scene& base, int repeats) {
-    for (int sides : kAutoBenchSides) {
-        for (double angle : kAutoBenchAnglesDeg) {
-            try {
-                validate_scene(auto_bench_shell(base, sides, angle));
-            } catch (const InputError& e) {
-                throw InputError(fmt::format("bench --auto: {} (each of its 16 empty shells must fit --tilt)", e.what()));
-            }
+    for (const auto& [sides, angle] : scenes::auto_shells()) {
+        try {
+            validate_scene(scenes::empty_shell(base, sides, angle));
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("bench --auto: {} (each of its 16 empty shells must fit --tilt)", e.what()));
         }
     }
     fmt::print("\nauto against grains on empty shells ({} fidelity for grains; reference: one grain run at the\n"
@@ -68,42 +59,40 @@ void bench_auto(const Scene& base, int repeats) {
                "n", "deg", "auto_s", "grains_s", "speedup", "free", "box2d", "hops", "mu_need", "Vt_auto", "Vt_rigid", "Vt_grain",
                "Vt_ref", "Vt_fine", "a-g", "a-ref", "g-ref", "a-fine", "g-fine", "behaviour (auto / grains / reference)");
     double auto_total = 0.0, grains_total = 0.0;
-    for (int sides : kAutoBenchSides) {
-        for (double angle : kAutoBenchAnglesDeg) {
-            Scene s = auto_bench_shell(base, sides, angle);
-            s.run.model = Model::automatic;
-            const Timed a = time_runs(s, repeats);
-            s.run.model = Model::grains;
-            const Timed g = time_runs(s, repeats);
-            const RunResult ref = run_scene(at_fidelity_preset(s, "reference"));
-            const RunResult finest = run_scene(at_finest_box2d(s));
-            s.run.model = Model::rigid;
-            const RunResult rigid = run_scene(s);
-            // The rigid model run on past lift-off: on how many of its faces the normal force it needs
-            // turns negative (where a hand-back from Box2D would hand the shell over again at once).
-            const models::RollingRun roll =
-                models::roll(models::rolling_body(s), models::FillMotion::frozen, models::rolling_track(s));
-            auto_total += a.best_s;
-            grains_total += g.best_s;
-            const auto& c = a.result.model_choice;
-            const std::string free_from = c && c->lift_off_time_s ? fmt::format("{:.3f}", *c->lift_off_time_s) : "-";
-            const std::string handover = c && c->hand_over_time_s ? fmt::format("{:.3f}", *c->hand_over_time_s) : "-";
-            const auto& va = a.result.measured.terminal_velocity_m_s;
-            const auto& vg = g.result.measured.terminal_velocity_m_s;
-            const auto& vr = ref.measured.terminal_velocity_m_s;
-            const auto& vf = finest.measured.terminal_velocity_m_s;
-            const auto& vrig = rigid.measured.terminal_velocity_m_s;
-            const std::string hops =
-                fmt::format("{}/{}", roll.hop_pivots, std::max<size_t>(1, roll.measured.impacts.size()));
-            const std::string mu = fmt::format("{:.2f}/{:.2f}", roll.max_friction_share, roll.max_impact_friction_share);
-            fmt::print("{:>3} {:>5g} {:>9.5f} {:>9.5f} {:>7.1f}x {:>6} {:>6} {:>7} {:>12} {:>8} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>6} "
-                       "{:>6} {:>6}  {} / {} / {}\n",
-                       sides, angle, a.best_s, g.best_s, g.best_s / a.best_s, free_from, handover, hops, mu, speed(va),
-                       speed(vrig), speed(vg), speed(vr), speed(vf), percent_off(va, vg), percent_off(va, vr),
-                       percent_off(vg, vr), percent_off(va, vf), percent_off(vg, vf), to_string(a.result.measured.behaviour),
-                       to_string(g.result.measured.behaviour), to_string(ref.measured.behaviour));
-            std::fflush(stdout);
-        }
+    for (const auto& [sides, angle] : scenes::auto_shells()) {
+        Scene s = scenes::empty_shell(base, sides, angle);
+        s.run.model = Model::automatic;
+        const Timed a = time_runs(s, repeats);
+        s.run.model = Model::grains;
+        const Timed g = time_runs(s, repeats);
+        const RunResult ref = run_scene(at_fidelity_preset(s, "reference"));
+        const RunResult finest = run_scene(at_finest_box2d(s));
+        s.run.model = Model::rigid;
+        const RunResult rigid = run_scene(s);
+        // The rigid model run on past lift-off: on how many of its faces the normal force it needs
+        // turns negative (where a hand-back from Box2D would hand the shell over again at once).
+        const models::RollingRun roll =
+            models::roll(models::rolling_body(s), models::FillMotion::frozen, models::rolling_track(s));
+        auto_total += a.best_s;
+        grains_total += g.best_s;
+        const auto& c = a.result.model_choice;
+        const std::string free_from = c && c->lift_off_time_s ? fmt::format("{:.3f}", *c->lift_off_time_s) : "-";
+        const std::string handover = c && c->hand_over_time_s ? fmt::format("{:.3f}", *c->hand_over_time_s) : "-";
+        const auto& va = a.result.measured.terminal_velocity_m_s;
+        const auto& vg = g.result.measured.terminal_velocity_m_s;
+        const auto& vr = ref.measured.terminal_velocity_m_s;
+        const auto& vf = finest.measured.terminal_velocity_m_s;
+        const auto& vrig = rigid.measured.terminal_velocity_m_s;
+        const std::string hops =
+            fmt::format("{}/{}", roll.hop_pivots, std::max<size_t>(1, roll.measured.impacts.size()));
+        const std::string mu = fmt::format("{:.2f}/{:.2f}", roll.max_friction_share, roll.max_impact_friction_share);
+        fmt::print("{:>3} {:>5g} {:>9.5f} {:>9.5f} {:>7.1f}x {:>6} {:>6} {:>7} {:>12} {:>8} {:>8} {:>8} {:>8} {:>8} {:>6} {:>6} {:>6} "
+                   "{:>6} {:>6}  {} / {} / {}\n",
+                   sides, angle, a.best_s, g.best_s, g.best_s / a.best_s, free_from, handover, hops, mu, speed(va),
+                   speed(vrig), speed(vg), speed(vr), speed(vf), percent_off(va, vg), percent_off(va, vr),
+                   percent_off(vg, vr), percent_off(va, vf), percent_off(vg, vf), to_string(a.result.measured.behaviour),
+                   to_string(g.result.measured.behaviour), to_string(ref.measured.behaviour));
+        std::fflush(stdout);
     }
     fmt::print("all 16: auto {:.4f} s, grains {:.4f} s, {:.1f}x. free: when the rigid model, at the step before\n"
                "lift-off, handed the shell to the free rigid body (s); box2d: when that handed it to Box2D (s);\n"

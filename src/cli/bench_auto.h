@@ -1,22 +1,13 @@
 // `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells it was adopted on
-// (n = 6, 8, 10, 18 at 5, 10, 20, 30 degrees): wall time, speed-up, hand-over and how far apart the
+// (scenes::auto_shells(), sim/scene_matrices.h): wall time, speed-up, hand-over and how far apart the
 // two runs end, with the rigid model alone and one grain run at the reference preset as yardsticks,
 // and what the rigid model's rolling needs (faces that would hop, friction). A benchmark prints;
 // tests/test_auto_model.cpp asserts.
 #pragma once
 
-#include <array>
-
 #include "sim/scene.h"
 
 namespace polyroll::cli {
-
-// The empty shells the auto model was first measured on: these side counts on ramps at these angles.
-inline constexpr std::array<int, 4> kAutoBenchSides{6, 8, 10, 18};
-inline constexpr std::array<double, 4> kAutoBenchAnglesDeg{5.0, 10.0, 20.0, 30.0};
-
-// `base` emptied (fill ratio 0), with `sides` sides, on a ramp of `angle_deg`: one of the 16 shells.
-Scene auto_bench_shell(const Scene& base, int sides, double angle_deg);
 
 // `base`: the scene the empty shells are made from (its fill ratio is set to 0, sides and angle vary).
 // Every shell is checked before anything runs: a --tilt that fits the base shell may not fit the

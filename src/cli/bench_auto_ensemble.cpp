@@ -12,6 +12,7 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
+#include "sim/scene_matrices.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll::cli {
@@ -57,39 +58,37 @@ void bench_auto_ensemble(const Scene& base, int members) {
                "g-fine", "nearer");
     int auto_within = 0, grains_within = 0, auto_nearer = 0, compared = 0;
     constexpr double kWithin = 0.02;  // auto's agreement bound, 2%
-    for (int sides : kAutoBenchSides) {
-        for (double angle : kAutoBenchAnglesDeg) {
-            Spread a, g, f;
-            Scene s = auto_bench_shell(base, sides, angle);
-            s.release.tilt_deg = base.release.tilt_deg + 0.001 * (members - 1);
-            try {
-                validate_scene(s);  // the largest tilt; a --tilt fit for the base shell may not fit this one
-            } catch (const InputError& e) {
-                fmt::print("{:>3} {:>5g}  skipped: {}\n", sides, angle, e.what());
-                continue;
-            }
-            for (int k = 0; k < members; ++k) {
-                s.release.tilt_deg = base.release.tilt_deg + 0.001 * k;
-                s.run.model = Model::automatic;
-                a.add(run_scene(s).measured.terminal_velocity_m_s);
-                s.run.model = Model::grains;
-                g.add(run_scene(s).measured.terminal_velocity_m_s);
-                f.add(run_scene(at_finest_box2d(s)).measured.terminal_velocity_m_s);
-            }
-            const std::optional<double> a_off = mean_off(a, f), g_off = mean_off(g, f);
-            std::string nearer = "-";
-            if (a_off && g_off) {
-                const bool auto_is = std::fabs(*a_off) <= std::fabs(*g_off);
-                nearer = auto_is ? "auto" : "grains";
-                auto_nearer += auto_is ? 1 : 0;
-                auto_within += std::fabs(*a_off) <= kWithin ? 1 : 0;
-                grains_within += std::fabs(*g_off) <= kWithin ? 1 : 0;
-                ++compared;
-            }
-            fmt::print("{:>3} {:>5g} {:>24} {:>24} {:>24} {:>7} {:>7}  {}\n", sides, angle, a.text(), g.text(), f.text(),
-                       percent(a_off), percent(g_off), nearer);
-            std::fflush(stdout);
+    for (const auto& [sides, angle] : scenes::auto_shells()) {
+        Spread a, g, f;
+        Scene s = scenes::empty_shell(base, sides, angle);
+        s.release.tilt_deg = base.release.tilt_deg + 0.001 * (members - 1);
+        try {
+            validate_scene(s);  // the largest tilt; a --tilt fit for the base shell may not fit this one
+        } catch (const InputError& e) {
+            fmt::print("{:>3} {:>5g}  skipped: {}\n", sides, angle, e.what());
+            continue;
         }
+        for (int k = 0; k < members; ++k) {
+            s.release.tilt_deg = base.release.tilt_deg + 0.001 * k;
+            s.run.model = Model::automatic;
+            a.add(run_scene(s).measured.terminal_velocity_m_s);
+            s.run.model = Model::grains;
+            g.add(run_scene(s).measured.terminal_velocity_m_s);
+            f.add(run_scene(at_finest_box2d(s)).measured.terminal_velocity_m_s);
+        }
+        const std::optional<double> a_off = mean_off(a, f), g_off = mean_off(g, f);
+        std::string nearer = "-";
+        if (a_off && g_off) {
+            const bool auto_is = std::fabs(*a_off) <= std::fabs(*g_off);
+            nearer = auto_is ? "auto" : "grains";
+            auto_nearer += auto_is ? 1 : 0;
+            auto_within += std::fabs(*a_off) <= kWithin ? 1 : 0;
+            grains_within += std::fabs(*g_off) <= kWithin ? 1 : 0;
+            ++compared;
+        }
+        fmt::print("{:>3} {:>5g} {:>24} {:>24} {:>24} {:>7} {:>7}  {}\n", sides, angle, a.text(), g.text(), f.text(),
+                   percent(a_off), percent(g_off), nearer);
+        std::fflush(stdout);
     }
     fmt::print("of the {} that reach the end: auto's mean within 2% of the finest Box2D's in {}, grains' in {};\n"
                "auto's the nearer in {}. grains: --model grains at the scene's fidelity; fine: Box2D at 80,000\n"

@@ -15,6 +15,7 @@
 #include "cli/observation_flags.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/json_path.h"
 #include "sim/scene_json.h"
 #include "sweep/calibration.h"
 #include "sweep/grid_values.h"
@@ -121,17 +122,8 @@ json calibrated_scene(const sweep::CalibrationSetup& s, const sweep::Evaluation&
         "calibration.json beside this file.",
         values_text(s, best.values), s.file.origin, s.file.observations.size(), s.seeds, before.objective,
         best.objective, best.agreeing, best.checks, before.agreeing, command);
-    auto put = [&](const std::string& path, const json& v) {
-        json* node = &doc;
-        std::size_t start = 0;
-        for (std::size_t dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
-            node = &(*node)[path.substr(start, dot - start)];
-            start = dot + 1;
-        }
-        (*node)[path.substr(start)] = v;
-    };
-    for (const auto& [f, v] : s.overrides) put(f, v);
-    for (std::size_t i = 0; i < s.params.size(); ++i) put(s.params[i].path, best.values[i]);
+    for (const auto& [f, v] : s.overrides) node_at(doc, f) = v;
+    for (std::size_t i = 0; i < s.params.size(); ++i) node_at(doc, s.params[i].path) = best.values[i];
     return doc;
 }
 
@@ -142,16 +134,18 @@ json evaluation_json(const sweep::CalibrationSetup& s, const sweep::Evaluation& 
                 {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"runs", e.runs}, {"failed", e.failed}};
 }
 
-int run(const CalibrateArgs& a) {
+// --max-evals and --algorithm, checked before anything is read.
+void check_search_flags(const CalibrateArgs& a) {
     if (a.max_evals < 0 || a.max_evals > kMaxEvaluations)
         throw InputError(fmt::format("--max-evals {} is out of range (allowed: 0 to {})", a.max_evals, kMaxEvaluations));
     const auto& algorithms = sweep::calibration_algorithms();
     if (std::find(algorithms.begin(), algorithms.end(), a.algorithm) == algorithms.end())
         throw InputError(fmt::format("--algorithm {}: unknown (allowed: sbplx, bobyqa, cobyla, neldermead)", a.algorithm));
+}
 
-    std::optional<std::pair<int, int>> shard;
-    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
-
+// The calibration the flags ask for: observations, fields with their bounds and starts, every corner
+// of the bounds checked as a scene of every observation before anything is written.
+sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
     sweep::CalibrationSetup setup;
     setup.file = sweep::read_observations(a.observations);
     setup.seeds = a.seeds;
@@ -174,9 +168,14 @@ int run(const CalibrateArgs& a) {
         for (const auto& p : setup.params) o.emplace_back(p.path, upper ? p.hi : p.lo);
         sweep::make_validation_plan(setup.file, 1, o);
     }
+    return setup;
+}
 
+// The output folder made ready: resumed when it holds this calibration, refused when it holds another
+// (unless --force), and the calibration's first files written.
+void start_folder(const CalibrateArgs& a, const sweep::CalibrationSetup& setup, const json& setup_doc, bool sharded,
+                  const std::string& command) {
     const fs::path dir = a.out;
-    const json setup_doc = setup_json(setup);
     std::error_code ec;
     bool resume = false;
     if (fs::exists(dir / "calibration.json", ec)) {
@@ -195,13 +194,76 @@ int run(const CalibrateArgs& a) {
             for (const char* name : kCalibrationFiles) fs::remove_all(dir / name);
     }
     // The shards of one calibration start side by side: a folder holding another shard's first files is theirs.
-    if (!resume) prepare_output_dir(dir, a.force || shard.has_value());
-    const std::string command = command_text(a);
+    if (!resume) prepare_output_dir(dir, a.force || sharded);
     write_file_atomic(dir / "observations.json", setup.file.doc.dump(2) + "\n");
     write_file_atomic(dir / "calibration.json",
                       json{{"format", "polyroll-calibration-1"}, {"status", "running"}, {"command", command},
                            {"setup", setup_doc}}
                               .dump(1) + "\n");
+}
+
+// calibration.json done, the calibrated scene and the best evaluation's scorecard.
+void write_outcome(const fs::path& dir, const sweep::CalibrationSetup& setup, const json& setup_doc,
+                   const sweep::CalibrationOutcome& outcome, const std::string& command) {
+    const sweep::Evaluation& before = outcome.evaluations.front();
+    const sweep::Evaluation& best = outcome.evaluations[outcome.best];
+    json params = json::array();
+    for (std::size_t i = 0; i < setup.params.size(); ++i) {
+        const auto& p = setup.params[i];
+        params.push_back(json{{"field", p.path}, {"from", p.lo}, {"to", p.hi}, {"bounds_from", p.bounds_from},
+                              {"start", p.start}, {"start_from", p.start_from}, {"best", best.values[i]}});
+    }
+    json evaluations = json::array();
+    for (const auto& e : outcome.evaluations) evaluations.push_back(evaluation_json(setup, e));
+    const json doc = {{"format", "polyroll-calibration-1"},
+                      {"status", "done"},
+                      {"command", command},
+                      {"setup", setup_doc},
+                      {"params", params},
+                      {"objective", "sum over every check of its miss squared, in tolerances (docs/calibrate.md)"},
+                      {"objective_before", before.objective},
+                      {"objective_after", best.objective},
+                      {"checks_agreeing_before", before.agreeing},
+                      {"checks_agreeing_after", best.agreeing},
+                      {"checks", best.checks},
+                      {"best_evaluation", best.number},
+                      {"evaluations_run", outcome.evaluations.size()},
+                      {"stop_reason", outcome.stop_reason},
+                      {"evaluations", evaluations}};
+    write_file_atomic(dir / "calibration.json", doc.dump(1) + "\n");
+    write_file_atomic(dir / "calibrated-scene.json", calibrated_scene(setup, best, before, command).dump(2) + "\n");
+    const json about = {{"observations_file", setup.file.origin}, {"seeds", setup.seeds},
+                        {"calibrated", evaluation_json(setup, best)["values"]}};
+    write_file_atomic(dir / "scorecard.csv", sweep::scorecard_csv(best.scores));
+    write_file_atomic(dir / "scorecard.json", sweep::scorecard_json(best.scores, about).dump(1) + "\n");
+}
+
+// The closing summary on stdout: the fitted values, the objective before and after, where the files are.
+void print_outcome(const fs::path& dir, const sweep::CalibrationSetup& setup, const sweep::CalibrationOutcome& outcome,
+                   std::size_t runs_in_folder) {
+    const sweep::Evaluation& before = outcome.evaluations.front();
+    const sweep::Evaluation& best = outcome.evaluations[outcome.best];
+    fmt::print("polyroll calibrate: {} evaluations ({}), {} runs in the folder\n", outcome.evaluations.size(),
+               outcome.stop_reason, runs_in_folder);
+    for (std::size_t i = 0; i < setup.params.size(); ++i)
+        fmt::print("  {:<32} {:.6g} (start {:.6g}, bounds {:g} to {:g})\n", setup.params[i].path, best.values[i],
+                   setup.params[i].start, setup.params[i].lo, setup.params[i].hi);
+    fmt::print("  objective          {:.4g} before, {:.4g} after (#{}); checks agreeing {} before, {} after, of {}\n",
+               before.objective, best.objective, best.number, before.agreeing, best.agreeing, best.checks);
+    fmt::print("  calibrated scene   {}\n", (dir / "calibrated-scene.json").string());
+    fmt::print("  details            {}  {}  {}\n", (dir / "calibration.json").string(),
+               (dir / "evaluations.csv").string(), (dir / "scorecard.csv").string());
+}
+
+int run(const CalibrateArgs& a) {
+    check_search_flags(a);
+    std::optional<std::pair<int, int>> shard;
+    if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
+    const sweep::CalibrationSetup setup = setup_of(a);
+    const fs::path dir = a.out;
+    const json setup_doc = setup_json(setup);
+    const std::string command = command_text(a);
+    start_folder(a, setup, setup_doc, shard.has_value(), command);
 
     // Ctrl-C at any moment, during a candidate's sweep or between two, stops at the next sweep.
     const InterruptScope interrupt_scope("polyroll calibrate");
@@ -239,49 +301,8 @@ int run(const CalibrateArgs& a) {
                    seen.size());
         return kExitInterrupted;
     }
-    const sweep::Evaluation& before = outcome.evaluations.front();
-    const sweep::Evaluation& best = outcome.evaluations[outcome.best];
-
-    json params = json::array();
-    for (std::size_t i = 0; i < setup.params.size(); ++i) {
-        const auto& p = setup.params[i];
-        params.push_back(json{{"field", p.path}, {"from", p.lo}, {"to", p.hi}, {"bounds_from", p.bounds_from},
-                              {"start", p.start}, {"start_from", p.start_from}, {"best", best.values[i]}});
-    }
-    json evaluations = json::array();
-    for (const auto& e : outcome.evaluations) evaluations.push_back(evaluation_json(setup, e));
-    const json doc = {{"format", "polyroll-calibration-1"},
-                      {"status", "done"},
-                      {"command", command},
-                      {"setup", setup_doc},
-                      {"params", params},
-                      {"objective", "sum over every check of its miss squared, in tolerances (docs/calibrate.md)"},
-                      {"objective_before", before.objective},
-                      {"objective_after", best.objective},
-                      {"checks_agreeing_before", before.agreeing},
-                      {"checks_agreeing_after", best.agreeing},
-                      {"checks", best.checks},
-                      {"best_evaluation", best.number},
-                      {"evaluations_run", outcome.evaluations.size()},
-                      {"stop_reason", outcome.stop_reason},
-                      {"evaluations", evaluations}};
-    write_file_atomic(dir / "calibration.json", doc.dump(1) + "\n");
-    write_file_atomic(dir / "calibrated-scene.json", calibrated_scene(setup, best, before, command).dump(2) + "\n");
-    const json about = {{"observations_file", setup.file.origin}, {"seeds", setup.seeds},
-                        {"calibrated", evaluation_json(setup, best)["values"]}};
-    write_file_atomic(dir / "scorecard.csv", sweep::scorecard_csv(best.scores));
-    write_file_atomic(dir / "scorecard.json", sweep::scorecard_json(best.scores, about).dump(1) + "\n");
-
-    fmt::print("polyroll calibrate: {} evaluations ({}), {} runs in the folder\n", outcome.evaluations.size(),
-               outcome.stop_reason, runs.plan().runs.size());
-    for (std::size_t i = 0; i < setup.params.size(); ++i)
-        fmt::print("  {:<32} {:.6g} (start {:.6g}, bounds {:g} to {:g})\n", setup.params[i].path, best.values[i],
-                   setup.params[i].start, setup.params[i].lo, setup.params[i].hi);
-    fmt::print("  objective          {:.4g} before, {:.4g} after (#{}); checks agreeing {} before, {} after, of {}\n",
-               before.objective, best.objective, best.number, before.agreeing, best.agreeing, best.checks);
-    fmt::print("  calibrated scene   {}\n", (dir / "calibrated-scene.json").string());
-    fmt::print("  details            {}  {}  {}\n", (dir / "calibration.json").string(),
-               (dir / "evaluations.csv").string(), (dir / "scorecard.csv").string());
+    write_outcome(dir, setup, setup_doc, outcome, command);
+    print_outcome(dir, setup, outcome, runs.plan().runs.size());
     return kExitOk;
 }
 

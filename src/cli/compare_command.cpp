@@ -1,5 +1,5 @@
-// polyroll compare: one scene with each model (grains, segments, rigid), side by side: what each
-// level of modelling predicts and what it costs. With --out, the three runs' files and a combined
+// polyroll compare: one scene with each everyday model of the registry, side by side: what each
+// level of modelling predicts and what it costs. With --out, each run's files and a combined
 // speed-versus-time CSV.
 #include <cmath>
 #include <filesystem>
@@ -133,10 +133,12 @@ int compare(const CompareOptions& o) {
     }
     if (o.json) print_json(runs, o.out);
     else print_table(runs);
-    if (!o.out.empty() && !o.json)
-        fmt::print("files: {0}/{{grains,segments,rigid}}/summary.json, trajectory.csv, impacts.csv; "
-                   "{0}/speed_vs_time.csv\n",
-                   o.out);
+    if (!o.out.empty() && !o.json) {
+        std::vector<Model> ran;
+        for (const RunResult& r : runs) ran.push_back(r.scene.run.model);
+        fmt::print("files: {0}/{{{1}}}/summary.json, trajectory.csv, impacts.csv; {0}/speed_vs_time.csv\n", o.out,
+                   model_list(ran, ","));
+    }
     for (const RunResult& r : runs) {
         if (r.measured.behaviour == Behaviour::diverged) {
             fmt::print(stderr, "polyroll: the {} run diverged {}\n", to_string(r.scene.run.model),
@@ -151,21 +153,23 @@ int compare(const CompareOptions& o) {
 
 Action add_compare_command(CLI::App& app) {
     auto opts = std::make_shared<CompareOptions>();
+    const std::string models = model_list(everyday_models());
     CLI::App* sub = app.add_subcommand(
-        "compare", "run one scene with the grain simulation and both reduced models (segments, rigid), side by side");
-    sub->footer(
+        "compare", fmt::format("run one scene with every model ({}), side by side", models));
+    sub->footer(fmt::format(
         "Examples:\n"
         "  polyroll compare\n"
         "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
         "  polyroll compare --json > compare.json\n"
         "  polyroll compare --angle 14 --dem3d      # and the 3D reference\n"
-        "Every model runs (grains, segments, rigid); a --scene file's run.model is not used.\n"
-        "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.");
+        "Every model runs ({}); a --scene file's run.model is not used.\n"
+        "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.",
+        models));
     // No --model: compare runs every model, so the flag would be listed and ignored.
     opts->scene.add_to(*sub, {"run.model"});
     sub->add_option("--out", opts->out,
-                    "folder for grains/, segments/ and rigid/ (each summary.json, trajectory.csv, impacts.csv) "
-                    "and speed_vs_time.csv")
+                    fmt::format("folder for {}/ (each summary.json, trajectory.csv, impacts.csv) and speed_vs_time.csv",
+                                model_list(everyday_models(), "/, ")))
         ->group("Output");
     sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
     sub->add_flag("--json", opts->json, "print the table as JSON (the scene, then one object per model) instead")

@@ -11,6 +11,7 @@
 #include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/model_registry.h"
 #include "sim/scene_json.h"
 #include "sweep/observations.h"
 #include "sweep/results_table.h"
@@ -33,7 +34,12 @@ struct FiguresArgs {
 
 enum class FolderKind { sweep, run, compare };
 
-const char* const kCompareModels[] = {"grains", "segments", "rigid"};
+// The runs of a compare folder: the models `polyroll compare` always runs (model_registry.h).
+std::vector<std::string> compare_models() {
+    std::vector<std::string> names;
+    for (Model m : everyday_models()) names.push_back(to_string(m));
+    return names;
+}
 
 bool is_run_folder(const fs::path& dir) {
     return fs::is_regular_file(dir / "summary.json") && fs::is_regular_file(dir / "trajectory.csv") &&
@@ -45,13 +51,13 @@ FolderKind folder_kind(const std::string& folder) {
     const fs::path dir = folder;
     if (fs::is_regular_file(dir / "plan.json")) return FolderKind::sweep;
     if (is_run_folder(dir)) return FolderKind::run;
-    if (std::all_of(std::begin(kCompareModels), std::end(kCompareModels),
-                    [&](const char* m) { return is_run_folder(dir / m); }))
+    const std::vector<std::string> models = compare_models();
+    if (std::all_of(models.begin(), models.end(), [&](const std::string& m) { return is_run_folder(dir / m); }))
         return FolderKind::compare;
     throw InputError(fmt::format("'{}' is not a sweep, run or compare folder (allowed: a folder with plan.json from "
                                  "polyroll sweep --out, summary.json, trajectory.csv and impacts.csv from polyroll run "
-                                 "--out, or grains/, segments/ and rigid/ from polyroll compare --out)",
-                                 folder));
+                                 "--out, or {}/ from polyroll compare --out)",
+                                 folder, model_list(everyday_models(), "/, ")));
 }
 
 // "png", "svg" or both, comma-separated; InputError naming the value otherwise.
@@ -195,7 +201,7 @@ int run_figures(const FiguresArgs& a, FolderKind kind) {
         std::vector<std::string> args = {kind == FolderKind::run ? "run" : "compare", a.out, "--format", a.format};
         if (kind == FolderKind::run) args.push_back(a.folder);
         else
-            for (const char* m : kCompareModels) args.push_back((fs::path(a.folder) / m).string());
+            for (const std::string& m : compare_models()) args.push_back((fs::path(a.folder) / m).string());
         const int code = figures::run_figures_script(args);
         if (code != 0) throw std::runtime_error(fmt::format("the figure script failed (exit code {})", code));
     } catch (...) {

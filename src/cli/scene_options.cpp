@@ -8,6 +8,7 @@
 #include <system_error>
 #include <type_traits>
 
+#include "sim/json_path.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
@@ -24,17 +25,9 @@ std::string default_note(const SceneField& f) {
             return json::object();
         }
     }();
-    // "a.b.c" -> defaults["a"]["b"]["c"]; a preset field is the section's "preset" key.
-    const json* node = &defaults;
-    const std::string path(f.path);
-    for (std::size_t start = 0; start <= path.size();) {
-        const std::size_t dot = std::min(path.find('.', start), path.size());
-        const std::string key = path.substr(start, dot - start);
-        if (!node->is_object() || !node->contains(key)) return "";
-        node = &node->at(key);
-        start = dot + 1;
-    }
-    if (node->is_null() || node->is_object()) return "";
+    // A preset field is the section's "preset" key.
+    const json* node = find_at(defaults, f.path);
+    if (node == nullptr || node->is_null() || node->is_object()) return "";
     return " (default: " + sweep::value_text(*node) + ")";
 }
 
@@ -89,14 +82,7 @@ Scene SceneOptions::resolve() const {
     for (const Flag& f : flags_) {
         if (f.option->count() == 0) continue;
         cli.field_labels.emplace_back(f.field, f.option->get_name());
-        // "a.b.c" -> doc["a"]["b"]["c"]
-        json* node = &cli.doc;
-        size_t start = 0;
-        for (size_t dot = f.field.find('.'); dot != std::string::npos; dot = f.field.find('.', start)) {
-            node = &(*node)[f.field.substr(start, dot - start)];
-            start = dot + 1;
-        }
-        (*node)[f.field.substr(start)] = f.value();
+        node_at(cli.doc, f.field) = f.value();
     }
     layers.push_back(cli);
     return resolve_scene(layers);

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "sim/sample_clock.h"
+
 namespace polyroll::render {
 
 struct FrameSchedule {
@@ -15,9 +17,7 @@ struct FrameSchedule {
 
     double frames_per_sim_s() const { return fps * slow; }
     // The step whose state frame k (0-based) shows.
-    long step_for_frame(long k) const {
-        return static_cast<long>(std::ceil(static_cast<double>(k) * step_hz / frames_per_sim_s() - 1e-9));
-    }
+    long step_for_frame(long k) const { return first_step_at(k, step_hz, frames_per_sim_s()); }
     // How many frames a run that ends at `end_step` gives, before the hold.
     long run_frames(long end_step) const {
         return static_cast<long>(std::floor((static_cast<double>(end_step) + 1e-9) * frames_per_sim_s() / step_hz)) + 1;

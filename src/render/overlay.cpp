@@ -120,12 +120,17 @@ PlotAxes plot_axes(const Snapshot& s, const FrameOptions& o) {
         v_lo = std::min(v_lo, p.speed_m_s);
         v_hi = std::max(v_hi, p.speed_m_s);
     }
-    // Not fixed: grown as the window's plots grow (ticks.h).
-    const AxisRange v = growing_value_axis(v_lo, v_hi, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
-    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : growing_time_axis_s(t_hi);
-    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : v.hi;
-    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : v.lo;
+    // Not fixed: grown as the window's plots grow.
+    const PlotAxes grown = growing_speed_axes(t_hi, v_lo, v_hi);
+    a.time_max_s = o.plot_time_max_s ? *o.plot_time_max_s : grown.time_max_s;
+    a.speed_max_m_s = o.plot_speed_max_m_s ? *o.plot_speed_max_m_s : grown.speed_max_m_s;
+    a.speed_min_m_s = o.plot_speed_min_m_s ? *o.plot_speed_min_m_s : grown.speed_min_m_s;
     return a;
+}
+
+PlotAxes growing_speed_axes(double t_hi_s, double v_lo_m_s, double v_hi_m_s) {
+    const AxisRange v = growing_value_axis(v_lo_m_s, v_hi_m_s, kSpeedAxisFloor_m_s, kSpeedAxisFloorBelow_m_s);
+    return {growing_time_axis_s(t_hi_s), v.lo, v.hi};
 }
 
 void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
@@ -141,12 +146,9 @@ void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, c
     const float left = r.x + 62.0f * u, right = r.x + r.width - 34.0f * u;
     const float top = r.y + pad + font.line_height(L.label) + 10.0f * u;
     const float bottom = r.y + r.height - 32.0f * u;
-    const double v_span = std::max(ax.speed_max_m_s - ax.speed_min_m_s, 1e-9);
-    auto X = [&](double t) { return left + static_cast<float>(t / ax.time_max_s) * (right - left); };
-    auto Y = [&](double v) {
-        const double c = std::clamp(v, ax.speed_min_m_s, ax.speed_max_m_s);
-        return bottom - static_cast<float>((c - ax.speed_min_m_s) / v_span) * (bottom - top);
-    };
+    const PlotMapping map{left, right, top, bottom, ax.time_max_s, ax.speed_min_m_s, ax.speed_max_m_s};
+    auto X = [&](double t) { return map.x(t); };
+    auto Y = [&](double v) { return map.y(v); };
     const float thin = std::max(1.0f, 1.2f * u);
     // Grid and tick labels: about four intervals on the speed axis, five on the time axis.
     const AxisTicks v_ticks = axis_ticks(ax.speed_min_m_s, ax.speed_max_m_s, 4.0);

@@ -4,13 +4,18 @@
 #include <cmath>
 
 #include "sim/model_registry.h"
-#include "sim/models/hopping_run.h"
-#include "sim/models/reduced_run.h"
+#include "sim/models/free_body_run.h"
 #include "sim/ramp_profile.h"
 
 namespace polyroll {
 
 bool fill_is_solid(const Scene& scene) { return scene.fill.ratio >= 1.0; }
+
+// The rule below in a line; its reasons are in each branch.
+const char* auto_rule_description() {
+    return "the cheapest model the scene needs: rigid for an empty or a full shell, going on as a free rigid body "
+           "where it would lift off or slip; grains for a partly filled one or a curved track";
+}
 
 ModelChoice choose_model(const Scene& scene) {
     ModelChoice c;
@@ -48,14 +53,11 @@ AutoRun::AutoRun(const Scene& scene) : scene_(scene), choice_(choose_model(scene
     Scene first = scene;
     first.run.model = choice_.model;
     if (choice_.model == Model::rigid && choice_.then) {
-        // The rigid model computes its whole run at once, so the lift-off time is known from the start.
-        // Computed only up to lift-off: past it the rigid model means nothing (and a shell that would
-        // hop can rock ever faster in it, costing a second of integration for nothing).
-        auto rigid = std::make_unique<models::ReducedRun>(first, models::FillMotion::frozen, true);
-        const RunResult whole = rigid->result();
+        // Computed whole at once up to where it stops holding, so the lift-off time is known from the start.
+        run_ = start_run_while_valid(first);
+        const RunResult whole = run_->result();
         if (whole.model_invalid_time_s)
             lift_off_step_ = static_cast<long>(std::floor(*whole.model_invalid_time_s * scene.fidelity.step_hz));
-        run_ = std::move(rigid);
     } else {
         run_ = start_run(first);
     }
@@ -65,7 +67,7 @@ AutoRun::AutoRun(const Scene& scene) : scene_(scene), choice_(choose_model(scene
 void AutoRun::hand_over_if_due() {
     // The rigid run was computed up to lift-off only (it may end there): hand over at that step.
     if (stage_ == Stage::first && lift_off_step_ >= 0 && run_->steps() >= lift_off_step_) {
-        auto flying = std::make_unique<models::HoppingRun>(scene_, run_->hand_over());
+        auto flying = continue_as_free_body(scene_, run_->hand_over());
         choice_.lift_off_time_s = flying->time_s();
         if (flying->hand_over_step()) {
             hand_over_step_ = *flying->hand_over_step();

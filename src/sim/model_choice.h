@@ -16,7 +16,7 @@ struct ModelChoice {
     std::string reason;
     // For an empty shell: the tracker step before the rigid model's shell would lift off or slip (the
     // friction its rolling needs above the ramp's coefficient), from which
-    // the free rigid body (models/hopping_polygon.h) carries it on, flying, landing on vertices,
+    // the free rigid body (models/free_body.h) carries it on, flying, landing on vertices,
     // rolling and sliding.
     std::optional<double> lift_off_time_s;
     // When the hand-over to `then` happened (a tracker step), if it did, and why; empty when the
@@ -34,5 +34,7 @@ bool fill_is_solid(const Scene& scene);
 
 // The cheapest model the scene requires (scene.run.model is ignored): see auto_run.cpp.
 ModelChoice choose_model(const Scene& scene);
+// choose_model's rule in a line, for --model's help and the window's tooltip (model_help).
+const char* auto_rule_description();
 
 }  // namespace polyroll

@@ -1,6 +1,7 @@
 // The model registry: see model_registry.h.
 #include "sim/model_registry.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -10,6 +11,8 @@
 #include "sim/dem3d/dem3d_run.h"
 #endif
 #include "sim/errors.h"
+#include "sim/model_choice.h"
+#include "sim/models/free_body_run.h"
 #include "sim/models/reduced_run.h"
 #include "sim/scene_json.h"
 #include "sim/simulation.h"
@@ -22,6 +25,8 @@ struct ModelRow {
     ModelTraits traits;
     std::unique_ptr<ModelRun> (*start)(const Scene& scene);
     std::unique_ptr<ModelRun> (*carry_on)(const Scene& scene, const HandOver& from);  // null: cannot
+    // A run computed only while the model holds, for auto's first stage; null: none.
+    std::unique_ptr<ModelRun> (*start_while_valid)(const Scene& scene);
 };
 
 std::unique_ptr<ModelRun> start_grains(const Scene& s) { return std::make_unique<Simulation>(s); }
@@ -34,6 +39,12 @@ std::unique_ptr<ModelRun> start_segments(const Scene& s) {
 std::unique_ptr<ModelRun> start_rigid(const Scene& s) {
     return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen);
 }
+// The rigid model computes its whole run at once, so where it stops holding (lift-off or slip) is
+// known from the start; computed only up to there: past it the model means nothing (and a shell that
+// would hop can rock ever faster in it, costing a second of integration for nothing).
+std::unique_ptr<ModelRun> start_rigid_while_valid(const Scene& s) {
+    return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen, true);
+}
 std::unique_ptr<ModelRun> start_dem3d([[maybe_unused]] const Scene& s) {
 #ifdef __EMSCRIPTEN__
     throw InputError("--model dem3d runs Yade as a separate program, which a web page cannot: use polyroll run "
@@ -43,13 +54,54 @@ std::unique_ptr<ModelRun> start_dem3d([[maybe_unused]] const Scene& s) {
 #endif
 }
 
+// Every trait named in every row (the compiler checks none is left out), in ModelTraits' order.
 const std::vector<ModelRow>& rows() {
     static const std::vector<ModelRow> table = {
-        {{Model::grains, true, true, "", true, true, true}, start_grains, carry_on_grains},
-        {{Model::segments, false, false, "segments re-levelled at each impact", false, true, false}, start_segments,
-         nullptr},
-        {{Model::rigid, false, false, "a frozen rigid body", false, true, false}, start_rigid, nullptr},
-        {{Model::dem3d, false, true, "", false, false, true}, start_dem3d, nullptr},
+        {{.model = Model::grains,
+          .description = "Box2D simulates the shell and every grain",
+          .engine = true,
+          .has_grains = true,
+          .fill_description = "",
+          .continues_hand_over = true,
+          .everyday = true,
+          .follows_curved_track = true,
+          .cost = RunCost::engine_bodies,
+          .auto_may_pick = true},
+         start_grains, carry_on_grains, nullptr},
+        {{.model = Model::segments,
+          .description = "the experimenters' reduced model with the fill as rigid segments that re-level after "
+                         "each impact",
+          .engine = false,
+          .has_grains = false,
+          .fill_description = "segments re-levelled at each impact",
+          .continues_hand_over = false,
+          .everyday = true,
+          .follows_curved_track = false,
+          .cost = RunCost::computed_whole,
+          .auto_may_pick = false},
+         start_segments, nullptr, nullptr},
+        {{.model = Model::rigid,
+          .description = "the experimenters' reduced model with the fill frozen as at release",
+          .engine = false,
+          .has_grains = false,
+          .fill_description = "a frozen rigid body",
+          .continues_hand_over = false,
+          .everyday = true,
+          .follows_curved_track = false,
+          .cost = RunCost::computed_whole,
+          .auto_may_pick = true},
+         start_rigid, nullptr, start_rigid_while_valid},
+        {{.model = Model::dem3d,
+          .description = "the 3D reference: Yade simulates the shell and every grain in 3D, about a minute a run",
+          .engine = false,
+          .has_grains = true,
+          .fill_description = "",
+          .continues_hand_over = false,
+          .everyday = false,
+          .follows_curved_track = true,
+          .cost = RunCost::yade_grains,
+          .auto_may_pick = false},
+         start_dem3d, nullptr, nullptr},
     };
     return table;
 }
@@ -93,6 +145,36 @@ const std::vector<std::string>& window_model_names() {
 
 Model reference_model() { return all_models().front(); }
 
+std::string model_list(const std::vector<Model>& models, const char* separator) {
+    std::string list;
+    for (Model m : models) list += (list.empty() ? "" : separator) + to_string(m);
+    return list;
+}
+
+std::string model_help(const std::vector<Model>& models) {
+    std::string help;
+    for (Model m : models) {
+        const ModelTraits& t = model_traits(m);
+        // The reduced models' closed forms assume one slope: said here, where a user picks a model.
+        help += fmt::format("{} ({}{}), ", to_string(m), t.description,
+                            t.follows_curved_track ? "" : "; straight ramps only");
+    }
+    return help + fmt::format("or {} ({})", to_string(Model::automatic), auto_rule_description());
+}
+
+std::vector<Model> models_a_run_may_use(const Scene& scene) {
+    if (scene.run.model != Model::automatic) return {scene.run.model};
+    const ModelChoice c = choose_model(scene);
+    if (c.then) return {c.model, *c.then};
+    return {c.model};
+}
+
+bool may_step_grains(const Scene& scene) {
+    if (scene.fill.ratio <= 0.0) return false;
+    const std::vector<Model> models = models_a_run_may_use(scene);
+    return std::any_of(models.begin(), models.end(), [](Model m) { return model_traits(m).has_grains; });
+}
+
 const ModelTraits& model_traits(Model model) { return row(model).traits; }
 
 std::unique_ptr<ModelRun> start_run(const Scene& scene) {
@@ -106,6 +188,17 @@ std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from)
     if (!r.carry_on)
         throw InputError(fmt::format("the {} model cannot carry on a run another model began", to_string(scene.run.model)));
     return r.carry_on(scene, from);
+}
+
+std::unique_ptr<ModelRun> start_run_while_valid(const Scene& scene) {
+    const ModelRow& r = row(scene.run.model);
+    if (!r.start_while_valid)
+        throw InputError(fmt::format("the {} model has no run that ends where it stops holding", to_string(scene.run.model)));
+    return r.start_while_valid(scene);
+}
+
+std::unique_ptr<models::FreeBodyRun> continue_as_free_body(const Scene& scene, const HandOver& from) {
+    return std::make_unique<models::FreeBodyRun>(scene, from);
 }
 
 RunResult run_scene(const Scene& scene) {

@@ -1,6 +1,8 @@
-// The models a scene can run with, one row each: what it is called in the run printout, what its
-// files hold, and how to start it or continue another model's run with it. The only place that asks
-// which model a scene names; everything else starts runs here and reads the traits.
+// The models a scene can run with, one row each: what it computes, what it is called in the run
+// printout, what its files hold, what it costs, which commands show it, and how to start it or
+// continue another model's run with it. The only place that asks which model a scene names;
+// everything else starts runs here and reads the traits. A new model is a row here and its own files
+// (and its name in scene_names.cpp's table).
 #pragma once
 
 #include <memory>
@@ -13,22 +15,41 @@
 
 namespace polyroll {
 
+namespace models {
+class FreeBodyRun;
+}
+
+// How a run's wall time grows with the scene: the bound a sweep states before it starts
+// (sweep/run_cost.h) computes it per class.
+enum class RunCost {
+    engine_bodies,   // Box2D: the shell and its grains x engine steps x a cost per body-step
+    computed_whole,  // a few equations integrated at once: the process start dominates
+    yade_grains,     // the 3D reference: its grains x DEM steps x Yade's cost per grain-step, plus Yade's start
+};
+
 struct ModelTraits {
     Model model = Model::grains;
+    // What it computes, in a few words: --model's help and the window's model tooltip list it
+    // (model_help).
+    std::string description;
     // Box2D computes it: the fidelity (step, iterations) means something, and summary.json has an
     // "engine" block with the engine's units and step.
     bool engine = false;
-    bool has_grains = false;  // the fill as grains; otherwise as a continuum without grains
+    bool has_grains = false;  // steps the fill grain by grain; otherwise as a continuum without grains
     // What the run printout says the fill is, for a model without grains ("" for grains).
     std::string fill_description;
     // Can carry on a run another model began (continue_run).
     bool continues_hand_over = false;
-    // Cheap enough to run beside the others whenever a command runs them all (compare, bench's model
-    // rows) and to offer in the window; false for the 3D reference, a minute of CPU a run.
+    // Cheap enough to run beside the others whenever a command runs them all (compare and the figures
+    // of its folder, bench's model rows) and to offer in the window; false for the 3D reference, a
+    // minute of CPU a run.
     bool everyday = true;
     // Runs a curved track (ramp.curvature_deg_per_m, ramp_profile.h): the engines turn gravity with
     // the shell; the reduced models' closed forms assume one slope and refuse such a scene.
     bool follows_curved_track = false;
+    RunCost cost = RunCost::computed_whole;
+    // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it.
+    bool auto_may_pick = false;
 };
 
 // Every model, in the order `compare` and `bench` list them: the grain simulation first, the
@@ -40,16 +61,36 @@ const std::vector<Model>& everyday_models();
 const std::vector<std::string>& window_model_names();
 // The grain simulation: the reference the reduced models are compared with and timed against.
 Model reference_model();
+// The names of `models`, joined: "grains, segments, rigid".
+std::string model_list(const std::vector<Model>& models, const char* separator = ", ");
+// What each of `models` computes, then auto's rule: "grains (Box2D simulates the shell and every
+// grain), segments (...), ... or auto (the cheapest model the scene needs: ...)". --model's help lists
+// every model, the window's tooltip the models it offers.
+std::string model_help(const std::vector<Model>& models);
+// The models a run of the scene may use, in order: the one it names, or for auto the one its choice
+// starts with and the one it may hand over to.
+std::vector<Model> models_a_run_may_use(const Scene& scene);
+// Whether a run of the scene may step grains one by one: it has a fill and one of its models has
+// grains (ModelTraits::has_grains). What the window's physics budget counts.
+bool may_step_grains(const Scene& scene);
 // Throws InputError for Model::automatic, which is a rule, not a model: ask the result (model_that_ran).
 const ModelTraits& model_traits(Model model);
 
 // Builds (for grains: pours and settles) a run of the scene's model; the scene must be validated.
-// For Model::automatic, an AutoRun (auto_run.h) of the model choose_model picks.
+// For Model::automatic, an AutoRun (auto_run.h) of the models choose_model picks.
 std::unique_ptr<ModelRun> start_run(const Scene& scene);
 
 // Continues with the scene's model the run `from` was handed over from (ModelRun::hand_over).
 // Throws InputError if that model cannot take a run over.
 std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from);
+
+// auto's stages (auto_run.h), started here like every other run.
+// The scene's model computed only while it holds: its result's model_invalid_time_s says until when.
+// Throws InputError for a model without that mode.
+std::unique_ptr<ModelRun> start_run_while_valid(const Scene& scene);
+// The free rigid body (models/free_body_run.h): the rigid model's shell carried on from `from`, free to
+// leave the ramp and to slide on it. The scene's fill is empty or full (fill_is_solid).
+std::unique_ptr<models::FreeBodyRun> continue_as_free_body(const Scene& scene, const HandOver& from);
 
 // Runs a validated scene to its end with its model, and times it (wall_time_s).
 RunResult run_scene(const Scene& scene);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "sim/geometry.h"
+#include "sim/model_registry.h"
 #include "sim/scene_names.h"
 #include "sim/shell_properties.h"
 
@@ -89,6 +90,13 @@ double max_ramp_curvature_deg_per_m(const Scene& s) {
 double min_ramp_curvature_deg_per_m(const Scene& s) { return -max_ramp_curvature_deg_per_m(s); }
 // A trajectory row is written at a tracker step: no more rows than steps.
 double max_sample_hz(const Scene& s) { return s.fidelity.step_hz; }
+
+// --model's help: every model's description from the registry, then auto's rule; kept for the
+// table's lifetime, which holds it as a view.
+std::string_view model_field_help() {
+    static const std::string help = "physics: " + model_help(all_models());
+    return help;
+}
 
 std::vector<SceneField> make_table() {
     using assets::Kind;
@@ -206,9 +214,7 @@ std::vector<SceneField> make_table() {
         // --- run
         Row("run.model", T::choice, member<&Scene::run, &RunParams::model>())
             .choices<model_names, model_named>().flag("--model", 1).label("model")
-            .help("physics: grains (Box2D simulates the shell and every grain), one of the experimenters' reduced "
-                  "models, or auto (the cheapest model the scene needs: rigid for an empty or a full shell, going on as a "
-                  "free rigid body where it would lift off or slip; grains for a partly filled one or a curved track)"),
+            .help(model_field_help()),
         Row("run.seed", T::seed, member<&Scene::run, &RunParams::seed>())
             .flag("--seed").help("random seed for the grain packing"),
         Row("run.time_limit_s", T::number, member<&Scene::run, &RunParams::time_limit_s>())

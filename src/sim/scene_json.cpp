@@ -15,6 +15,7 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/json_path.h"
 #include "sim/message_text.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_names.h"
@@ -353,15 +354,8 @@ Scene resolve_scene(const std::vector<SceneLayer>& layers) {
 nlohmann::ordered_json scene_to_json(const Scene& s) {
     json j = json::object();
     for (const SceneField& f : scene_fields()) {
-        // "a.b.c" -> j["a"]["b"]["c"]; sections appear in the table's order.
-        json* node = &j;
-        const std::string_view sec = section_of(f.path);
-        size_t start = 0;
-        for (size_t dot = sec.find('.'); start <= sec.size(); dot = sec.find('.', start)) {
-            if (dot == std::string_view::npos) dot = sec.size();
-            node = &(*node)[std::string(sec.substr(start, dot - start))];
-            start = dot + 1;
-        }
+        // Sections appear in the table's order.
+        json* node = &node_at(j, section_of(f.path));
         const std::string key(key_of(f.path));
         std::visit(
             [&](const auto& v) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "sim/ramp_profile.h"
+#include "sim/sample_clock.h"
 
 namespace polyroll {
 
@@ -86,8 +87,7 @@ void Tracker::continue_from(const HandOver& from) {
     start_angle_rad_ = from.release.angle_rad;
     landed_vertex_ = from.landed_vertex;
     samples_taken_ = static_cast<long>(m_.trajectory.size());
-    next_sample_step_ = static_cast<long>(
-        std::ceil(static_cast<double>(samples_taken_) * w_.scene.fidelity.step_hz / w_.scene.run.sample_hz - 1e-9));
+    next_sample_step_ = first_step_at(samples_taken_, w_.scene.fidelity.step_hz, w_.scene.run.sample_hz);
     // The potential is booked from the release the first model saw: offset so that it reads now what
     // that model read (the fill's mass may be spread differently in the two models).
     const double t = static_cast<double>(from.steps) * step_dt_s_;
@@ -260,8 +260,7 @@ bool Tracker::observe(long step) {
     if (step >= next_sample_step_) {
         m_.trajectory.push_back(now_);
         ++samples_taken_;
-        next_sample_step_ = static_cast<long>(
-            std::ceil(samples_taken_ * w_.scene.fidelity.step_hz / w_.scene.run.sample_hz - 1e-9));
+        next_sample_step_ = first_step_at(samples_taken_, w_.scene.fidelity.step_hz, w_.scene.run.sample_hz);
         if (!w_.grains.empty() && !check_grains(t)) return false;
     }
 

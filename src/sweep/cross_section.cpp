@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "sim/assets.h"
+#include "sim/scene_matrices.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {
@@ -21,14 +22,6 @@ using json = nlohmann::ordered_json;
 // The air track, as the experiment rolled its small polygons: a whole-ramp 3D run of the hexagon a
 // quarter full costs about 40 CPU-seconds, so the matrix takes about half an hour on two cores.
 const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"fill", {{"material", "bb"}}}, {"ramp", {{"preset", "air-track"}}}};
-// Angles around each shell's thresholds, as a first 3D prototype found them (the hexagon a quarter
-// full: first impact at 17 deg, rolling from 18; the octagon 0.375 full: a few faces at 12-13,
-// rolling from 14), reaching a few degrees either side for the other fills.
-const std::vector<std::pair<std::string, std::vector<double>>> kShells = {
-    {"hexagon-small", {14, 16, 17, 18, 19, 20, 22}},
-    {"octagon-small", {9, 11, 12, 13, 14, 15, 17}},
-};
-const std::vector<double> kFills = {0.25, 0.375, 0.5};
 const std::vector<std::string> kModels = {"grains", "dem3d"};
 const std::vector<unsigned> kSeeds = {1, 2};
 
@@ -114,8 +107,8 @@ SweepPlan cross_section_plan() {
     plan.base = kBase;
     plan.fields = {"shell.preset", "fill.ratio", "ramp.angle_deg", "run.model", "run.seed"};
     plan.flags = plan.fields;
-    for (const auto& [shell, angles] : kShells)
-        for (double r : kFills)
+    for (const auto& [shell, angles] : scenes::cross_section_shells())
+        for (double r : scenes::cross_section_fill_ratios())
             for (double a : angles)
                 for (const std::string& model : kModels)
                     for (unsigned seed : kSeeds)

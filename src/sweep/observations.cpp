@@ -13,6 +13,7 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/json_path.h"
 #include "sim/message_text.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
@@ -341,83 +342,99 @@ ObservationFile only_observations(const ObservationFile& file, const std::vector
     return out;
 }
 
-ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
-                                   const std::vector<std::pair<std::string, json>>& overrides) {
-    // Every observation's points first, with their place; then one plan over the union of their fields.
-    struct Point {
-        json fields;  // path -> value, without the seed
-        RunPlace place;
-    };
-    std::vector<Point> points;
-    std::vector<std::string> order;  // fields in order of first use
-    auto use = [&](const std::string& f) {
-        if (std::find(order.begin(), order.end(), f) == order.end()) order.push_back(f);
-    };
-    for (std::size_t oi = 0; oi < file.observations.size(); ++oi) {
-        const Observation& ob = file.observations[oi];
-        const Where w{file.origin, ob.id};
-        // A field set on the command line that an observation varies itself: the user's value is what
-        // is refused, by the field they set, not the observation file.
-        for (const auto& [f, v] : overrides) {
-            const bool own_angles = f == "ramp.angle_deg" && ob.angle_range_deg;
-            const auto grid = std::find_if(ob.grid.begin(), ob.grid.end(), [&f = f](const auto& g) { return g.first == f; });
-            if (grid == ob.grid.end() && !own_angles) continue;
-            throw InputError(fmt::format(
-                "{} = {} set on the command line: observation '{}' of {} varies it itself ({}) (allowed: a field "
-                "none of the observations run varies; --only picks the observations)",
-                f, printable_line(v.dump()), ob.id, file.origin,
-                own_angles ? "its angles_deg" : "grid " + printable_line(json(grid->second).dump())));
+namespace {
+
+using Overrides = std::vector<std::pair<std::string, json>>;
+
+// One run of a validation before the plan numbers it: its fields and where it belongs.
+struct ValidationPoint {
+    json fields;  // path -> value, without the seed
+    RunPlace place;
+};
+
+// A field set on the command line that an observation varies itself: the user's value is what is
+// refused, by the field they set, not the observation file.
+void refuse_overrides_varied_by(const ObservationFile& file, const Observation& ob, const Overrides& overrides) {
+    for (const auto& [f, v] : overrides) {
+        const bool own_angles = f == "ramp.angle_deg" && ob.angle_range_deg;
+        const auto grid = std::find_if(ob.grid.begin(), ob.grid.end(), [&f = f](const auto& g) { return g.first == f; });
+        if (grid == ob.grid.end() && !own_angles) continue;
+        throw InputError(fmt::format(
+            "{} = {} set on the command line: observation '{}' of {} varies it itself ({}) (allowed: a field "
+            "none of the observations run varies; --only picks the observations)",
+            f, printable_line(v.dump()), ob.id, file.origin,
+            own_angles ? "its angles_deg" : "grid " + printable_line(json(grid->second).dump())));
+    }
+}
+
+// One combination of an observation's grid values, the command line's fields on top.
+struct GridPoint {
+    json fields;
+    std::string label, label_without_angle;
+};
+
+// The observation's grid combinations, the first axis varying slowest.
+std::vector<GridPoint> grid_points(const Observation& ob, const Overrides& overrides) {
+    std::vector<std::size_t> digit(ob.grid.size(), 0);
+    std::size_t combos = 1;
+    for (const auto& g : ob.grid) combos *= g.second.size();
+    std::vector<GridPoint> out;
+    for (std::size_t c = 0; c < combos; ++c) {
+        GridPoint gp{ob.scene, "", ""};
+        for (std::size_t a = 0; a < ob.grid.size(); ++a) {
+            gp.fields[ob.grid[a].first] = ob.grid[a].second[digit[a]];
+            const std::string part = ob.grid[a].first + "=" + value_text(ob.grid[a].second[digit[a]]);
+            gp.label += (gp.label.empty() ? "" : " ") + part;
+            if (ob.grid[a].first != "ramp.angle_deg")
+                gp.label_without_angle += (gp.label_without_angle.empty() ? "" : " ") + part;
         }
-        // Grid combinations, the first axis varying slowest.
-        std::vector<std::size_t> digit(ob.grid.size(), 0);
-        std::size_t combos = 1;
-        for (const auto& g : ob.grid) combos *= g.second.size();
-        const std::vector<double> angles = ob.angle_range_deg ? ob.angles_deg : std::vector<double>{0.0};
-        for (std::size_t c = 0; c < combos; ++c) {
-            json point = ob.scene;
-            std::string label, label_without_angle;
-            for (std::size_t a = 0; a < ob.grid.size(); ++a) {
-                point[ob.grid[a].first] = ob.grid[a].second[digit[a]];
-                const std::string part = ob.grid[a].first + "=" + value_text(ob.grid[a].second[digit[a]]);
-                label += (label.empty() ? "" : " ") + part;
-                if (ob.grid[a].first != "ramp.angle_deg")
-                    label_without_angle += (label_without_angle.empty() ? "" : " ") + part;
-            }
-            for (const auto& [f, v] : overrides) point[f] = v;
-            for (double angle : angles) {
-                json p = point;
-                if (ob.angle_range_deg) p["ramp.angle_deg"] = angle;
-                // Resolved now, so a bad value fails before anything is written.
-                try {
-                    SceneLayer layer{json::object(), "the observation", {}};
-                    for (const auto& [f, v] : overrides) layer.field_labels.emplace_back(f, "the command line");
-                    for (const auto& [f, v] : p.items()) {
-                        json* node = &layer.doc;
-                        std::size_t start = 0;
-                        for (std::size_t dot = f.find('.'); dot != std::string::npos; dot = f.find('.', start)) {
-                            node = &(*node)[f.substr(start, dot - start)];
-                            start = dot + 1;
-                        }
-                        (*node)[f.substr(start)] = v;
-                    }
-                    resolve_scene({layer});
-                } catch (const InputError& e) {
-                    throw InputError(fmt::format("{}: observation '{}'{}: {}", file.origin, ob.id,
-                                                 label.empty() ? "" : " at " + label, e.what()));
-                }
-                for (const auto& [f, v] : p.items()) use(f);
-                for (int s = 1; s <= seeds; ++s) {
-                    RunPlace place{oi, 0, ob.angle_range_deg ? angle : 0.0, static_cast<std::uint64_t>(s), label,
-                                   label_without_angle};
-                    points.push_back({p, place});
-                }
-            }
-            for (std::size_t a = ob.grid.size(); a-- > 0;) {
-                if (++digit[a] < ob.grid[a].second.size()) break;
-                digit[a] = 0;
-            }
+        for (const auto& [f, v] : overrides) gp.fields[f] = v;
+        out.push_back(gp);
+        for (std::size_t a = ob.grid.size(); a-- > 0;) {
+            if (++digit[a] < ob.grid[a].second.size()) break;
+            digit[a] = 0;
         }
     }
+    return out;
+}
+
+// A point resolved as a scene now, so a bad value fails before anything is written.
+void check_resolves(const ObservationFile& file, const Observation& ob, const std::string& label, const json& fields,
+                    const Overrides& overrides) {
+    try {
+        SceneLayer layer{json::object(), "the observation", {}};
+        for (const auto& [f, v] : overrides) layer.field_labels.emplace_back(f, "the command line");
+        for (const auto& [f, v] : fields.items()) node_at(layer.doc, f) = v;
+        resolve_scene({layer});
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: observation '{}'{}: {}", file.origin, ob.id,
+                                     label.empty() ? "" : " at " + label, e.what()));
+    }
+}
+
+// Observation `oi`'s runs: each grid point at each of its angles (if it has a range), each seed.
+std::vector<ValidationPoint> observation_points(const ObservationFile& file, std::size_t oi, int seeds,
+                                                const Overrides& overrides) {
+    const Observation& ob = file.observations[oi];
+    refuse_overrides_varied_by(file, ob, overrides);
+    const std::vector<double> angles = ob.angle_range_deg ? ob.angles_deg : std::vector<double>{0.0};
+    std::vector<ValidationPoint> out;
+    for (const GridPoint& gp : grid_points(ob, overrides)) {
+        for (double angle : angles) {
+            json p = gp.fields;
+            if (ob.angle_range_deg) p["ramp.angle_deg"] = angle;
+            check_resolves(file, ob, gp.label, p, overrides);
+            for (int s = 1; s <= seeds; ++s)
+                out.push_back({p, RunPlace{oi, 0, ob.angle_range_deg ? angle : 0.0, static_cast<std::uint64_t>(s),
+                                           gp.label, gp.label_without_angle}});
+        }
+    }
+    return out;
+}
+
+// One plan over the union of the points' fields (in order of first use, the angle last, then the
+// seed), each distinct point one run; each point's place names its run.
+ValidationPlan plan_of(std::vector<ValidationPoint>& points, std::vector<std::string> order) {
     ValidationPlan vp;
     vp.plan.base = json::object();
     std::stable_partition(order.begin(), order.end(), [](const std::string& f) { return f != "ramp.angle_deg"; });
@@ -425,7 +442,7 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
     vp.plan.fields = order;
     vp.plan.flags = order;
     std::map<std::string, std::size_t> planned;  // a point's text -> its run
-    for (Point& p : points) {
+    for (ValidationPoint& p : points) {
         p.fields["run.seed"] = p.place.seed;
         json ordered = json::object();
         for (const std::string& f : order)
@@ -440,6 +457,22 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
         vp.places.push_back(p.place);
     }
     return vp;
+}
+
+}  // namespace
+
+ValidationPlan make_validation_plan(const ObservationFile& file, int seeds, const Overrides& overrides) {
+    // Every observation's points first, with their place; then one plan over the union of their fields.
+    std::vector<ValidationPoint> points;
+    std::vector<std::string> order;  // fields in order of first use
+    for (std::size_t oi = 0; oi < file.observations.size(); ++oi) {
+        for (ValidationPoint& p : observation_points(file, oi, seeds, overrides)) {
+            for (const auto& [f, v] : p.fields.items())
+                if (std::find(order.begin(), order.end(), f) == order.end()) order.push_back(f);
+            points.push_back(std::move(p));
+        }
+    }
+    return plan_of(points, std::move(order));
 }
 
 }  // namespace polyroll::sweep

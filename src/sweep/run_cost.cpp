@@ -1,11 +1,11 @@
 // A run's cost before it runs: see run_cost.h.
 #include "sweep/run_cost.h"
 
-#include "sim/dem3d/dem3d_input.h"
 #include <algorithm>
 
 #include <fmt/format.h>
 
+#include "sim/dem3d/dem3d_input.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
 #include "sim/scene_json.h"
@@ -30,15 +30,18 @@ constexpr double kDem3dStartS = 1.5;
 }  // namespace
 
 double max_run_seconds(const Scene& scene) {
-    // auto may hand over to the engine at lift-off: costed as the engine, the bound.
-    const Model model = scene.run.model == Model::automatic ? Model::grains : scene.run.model;
-    if (model == Model::dem3d) {
-        const double steps = (scene.run.settle_time_s + scene.run.time_limit_s) /
-                             (scene.dem3d.contact_time_s * scene.dem3d.time_step_share);
-        return kDem3dStartS + (dem3d::grain_count(scene) + 1.0) * steps * kDem3dGrainStepS;
+    // auto is costed as the last model it may use (the engine, where it may hand over at lift-off): the bound.
+    const ModelTraits& traits = model_traits(models_a_run_may_use(scene).back());
+    switch (traits.cost) {
+        case RunCost::computed_whole: return kReducedRunS;
+        case RunCost::yade_grains: {
+            const double steps = (scene.run.settle_time_s + scene.run.time_limit_s) /
+                                 (scene.dem3d.contact_time_s * scene.dem3d.time_step_share);
+            return kDem3dStartS + (dem3d::grain_count(scene) + 1.0) * steps * kDem3dGrainStepS;
+        }
+        case RunCost::engine_bodies: break;
     }
-    if (!model_traits(model).engine) return kReducedRunS;
-    const double bodies = (model_traits(model).has_grains ? estimated_grain_count(scene) : 0.0) + 1.0;
+    const double bodies = (traits.has_grains ? estimated_grain_count(scene) : 0.0) + 1.0;
     const double steps = (scene.run.settle_time_s + scene.run.time_limit_s) * scene.fidelity.step_hz *
                          static_cast<double>(scene.fidelity.substeps);
     const double iterations =

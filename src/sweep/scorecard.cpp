@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -149,13 +151,14 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
     }
 }
 
-void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, ObservationScore& s) {
-    const auto [lo, hi] = *ob.angle_range_deg;
-    const double tol = ob.angle_tolerance_deg;
-    struct AtAngle {
-        std::size_t runs = 0, shown = 0;
-        std::vector<double> d_shown, d_all;
-    };
+// One angle of a band observation's runs: how many ran and showed the behaviour, their distances.
+struct AtAngle {
+    std::size_t runs = 0, shown = 0;
+    std::vector<double> d_shown, d_all;
+    bool most_show() const { return 2 * shown > runs; }
+};
+
+std::map<double, AtAngle> runs_by_angle(const Observation& ob, const std::vector<ScoredRun>& runs) {
     std::map<double, AtAngle> at;
     for (const ScoredRun& r : runs) {
         AtAngle& a = at[r.angle_deg];
@@ -166,13 +169,14 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
             a.d_shown.push_back(r.distance_m);
         }
     }
+    return at;
+}
+
+json per_angle_json(const std::map<double, AtAngle>& at) {
     json per_angle = json::array();
-    std::vector<double> band;  // angles where most seeds show the behaviour
     for (const auto& [angle, a] : at) {
-        const bool most = 2 * a.shown > a.runs;
-        if (most) band.push_back(angle);
         const Spread d = spread_of(a.d_all), ds = spread_of(a.d_shown);
-        per_angle.push_back(json{{"angle_deg", angle}, {"runs", a.runs}, {"showed", a.shown}, {"in_band", most},
+        per_angle.push_back(json{{"angle_deg", angle}, {"runs", a.runs}, {"showed", a.shown}, {"in_band", a.most_show()},
                                  {"distance_mean_m", d.n ? json(d.mean) : json()},
                                  {"distance_min_m", d.n ? json(d.min) : json()},
                                  {"distance_max_m", d.n ? json(d.max) : json()},
@@ -180,19 +184,32 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
                                  {"shown_distance_min_m", ds.n ? json(ds.min) : json()},
                                  {"shown_distance_max_m", ds.n ? json(ds.max) : json()}});
     }
-    s.details["per_angle"] = per_angle;
+    return per_angle;
+}
+
+// The angles where most seeds show the behaviour, in increasing order.
+std::vector<double> band_of(const std::map<double, AtAngle>& at) {
+    std::vector<double> band;
+    for (const auto& [angle, a] : at)
+        if (a.most_show()) band.push_back(angle);
+    return band;
+}
+
+// The band's first and last angles against the observed range, each within the angle tolerance.
+std::pair<ScoreCheck, ScoreCheck> band_end_checks(const Observation& ob, const std::map<double, AtAngle>& at,
+                                                  const std::vector<double>& band, ObservationScore& s) {
+    const auto [lo, hi] = *ob.angle_range_deg;
+    const double tol = ob.angle_tolerance_deg;
     auto seeds_at = [&](double angle) {
         const AtAngle& a = at.at(angle);
         return fmt::format("{} of {} seeds {}", a.shown, a.runs, ob.behaviour);
     };
-    ScoreCheck start, end, slope;
+    ScoreCheck start, end;
     start.check = "band start";
     end.check = "band end";
     start.unit = end.unit = "deg";
     start.experiment = fmt::format("{} from {:g} deg (+/- {:g})", ob.behaviour, lo, tol);
     end.experiment = fmt::format("{} up to {:g} deg (+/- {:g})", ob.behaviour, hi, tol);
-    slope.check = "D slope";
-    slope.unit = "m/deg";
     if (band.empty()) {
         const std::string none = fmt::format("at no angle from {:g} to {:g} deg do most seeds show {}",
                                              at.empty() ? 0.0 : at.begin()->first, at.empty() ? 0.0 : at.rbegin()->first,
@@ -202,68 +219,85 @@ void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, Obser
         // As far off as the simulated angles reach: worse than any band found among them.
         const double span = at.empty() ? 0.0 : at.rbegin()->first - at.begin()->first;
         start.miss = end.miss = std::max(span / tol, kNothingToCompare);
-    } else {
-        const double b0 = band.front(), b1 = band.back();
-        start.simulation = fmt::format("{:g} deg ({})", b0, seeds_at(b0));
-        end.simulation = fmt::format("{:g} deg ({})", b1, seeds_at(b1));
-        start.difference = b0 - lo;
-        end.difference = b1 - hi;
-        start.miss = (b0 - lo) / tol;
-        end.miss = (b1 - hi) / tol;
-        start.agree = std::abs(b0 - lo) <= tol + 1e-9;
-        end.agree = std::abs(b1 - hi) <= tol + 1e-9;
-        start.by = beyond_text(b0 - lo, tol, "deg", 2);
-        end.by = beyond_text(b1 - hi, tol, "deg", 2);
-        // Angles inside the band where most seeds did not show it.
-        json gaps = json::array();
+        return {start, end};
+    }
+    const double b0 = band.front(), b1 = band.back();
+    start.simulation = fmt::format("{:g} deg ({})", b0, seeds_at(b0));
+    end.simulation = fmt::format("{:g} deg ({})", b1, seeds_at(b1));
+    start.difference = b0 - lo;
+    end.difference = b1 - hi;
+    start.miss = (b0 - lo) / tol;
+    end.miss = (b1 - hi) / tol;
+    start.agree = std::abs(b0 - lo) <= tol + 1e-9;
+    end.agree = std::abs(b1 - hi) <= tol + 1e-9;
+    start.by = beyond_text(b0 - lo, tol, "deg", 2);
+    end.by = beyond_text(b1 - hi, tol, "deg", 2);
+    // Angles inside the band where most seeds did not show it.
+    json gaps = json::array();
+    for (const auto& [angle, a] : at)
+        if (angle > b0 && angle < b1 && !a.most_show()) gaps.push_back(angle);
+    s.details["band_deg"] = json{b0, b1};
+    s.details["gaps_deg"] = gaps;
+    if (!gaps.empty()) end.simulation += fmt::format("; {} angle(s) inside without it", gaps.size());
+    return {start, end};
+}
+
+// The slope of the distance over the band's angles against the paper's line, within its relative tolerance.
+ScoreCheck slope_check(const Observation& ob, const std::map<double, AtAngle>& at, const std::vector<double>& band,
+                       ObservationScore& s) {
+    const LinearFit& f = *ob.linear_fit;
+    ScoreCheck slope;
+    slope.check = "D slope";
+    slope.unit = "m/deg";
+    slope.experiment = fmt::format("{:g} m/deg (+/- {:g}%)", f.slope_m_per_deg, 100 * ob.slope_relative);
+    std::vector<std::pair<double, double>> xy;
+    double max_spread = 0.0, sq = 0.0;
+    if (!band.empty())
         for (const auto& [angle, a] : at)
-            if (angle > b0 && angle < b1 && !(2 * a.shown > a.runs)) gaps.push_back(angle);
-        s.details["band_deg"] = json{b0, b1};
-        s.details["gaps_deg"] = gaps;
-        if (!gaps.empty()) end.simulation += fmt::format("; {} angle(s) inside without it", gaps.size());
-    }
-    if (ob.linear_fit) {
-        const LinearFit& f = *ob.linear_fit;
-        slope.experiment = fmt::format("{:g} m/deg (+/- {:g}%)", f.slope_m_per_deg, 100 * ob.slope_relative);
-        std::vector<std::pair<double, double>> xy;
-        double max_spread = 0.0, sq = 0.0;
-        if (!band.empty())
-            for (const auto& [angle, a] : at)
-                if (angle >= band.front() && angle <= band.back()) {
-                    for (double d : a.d_shown) {
-                        xy.emplace_back(angle, d);
-                        const double e = d - (f.slope_m_per_deg * angle + f.intercept_m);
-                        sq += e * e;
-                    }
-                    if (!a.d_shown.empty())
-                        max_spread = std::max(max_spread, spread_of(a.d_shown).max - spread_of(a.d_shown).min);
+            if (angle >= band.front() && angle <= band.back()) {
+                for (double d : a.d_shown) {
+                    xy.emplace_back(angle, d);
+                    const double e = d - (f.slope_m_per_deg * angle + f.intercept_m);
+                    sq += e * e;
                 }
-        const std::optional<LineFit> fit = fit_line(xy);
-        slope.miss = 1.0 / ob.slope_relative;  // no slope: as far off as a slope of 0
-        if (band.empty()) {
-            slope.simulation = "no band, no slope";
-            slope.by = "no band";
-        } else if (!fit) {
-            slope.simulation = fmt::format("one angle only ({:g} deg): no slope", band.front());
-            slope.by = "one angle only";
-        } else {
-            const double rel = (fit->slope - f.slope_m_per_deg) / std::abs(f.slope_m_per_deg);
-            slope.difference = fit->slope - f.slope_m_per_deg;
-            slope.agree = std::abs(rel) <= ob.slope_relative + 1e-9;
-            slope.miss = rel / ob.slope_relative;
-            slope.simulation = fmt::format("{:.3f} m/deg (R^2 {:.2f}, {} runs; D seed spread up to {:.3f} m at one angle)",
-                                           fit->slope, fit->r_squared, xy.size(), max_spread);
-            slope.by = fmt::format("{:+.3f} m/deg ({:+.0f}%): {}", fit->slope - f.slope_m_per_deg, 100 * rel,
-                                   std::abs(rel) <= ob.slope_relative + 1e-9 ? "within" : "beyond");
-            slope.by += fmt::format(" {:g}%", 100 * ob.slope_relative);
-            s.details["fit"] = json{{"slope_m_per_deg", fit->slope}, {"intercept_m", fit->intercept},
-                                    {"r_squared", fit->r_squared}, {"runs", xy.size()},
-                                    {"rms_from_paper_line_m", std::sqrt(sq / static_cast<double>(xy.size()))}};
-        }
+                if (!a.d_shown.empty())
+                    max_spread = std::max(max_spread, spread_of(a.d_shown).max - spread_of(a.d_shown).min);
+            }
+    const std::optional<LineFit> fit = fit_line(xy);
+    slope.miss = 1.0 / ob.slope_relative;  // no slope: as far off as a slope of 0
+    if (band.empty()) {
+        slope.simulation = "no band, no slope";
+        slope.by = "no band";
+    } else if (!fit) {
+        slope.simulation = fmt::format("one angle only ({:g} deg): no slope", band.front());
+        slope.by = "one angle only";
+    } else {
+        const double rel = (fit->slope - f.slope_m_per_deg) / std::abs(f.slope_m_per_deg);
+        slope.difference = fit->slope - f.slope_m_per_deg;
+        slope.agree = std::abs(rel) <= ob.slope_relative + 1e-9;
+        slope.miss = rel / ob.slope_relative;
+        slope.simulation = fmt::format("{:.3f} m/deg (R^2 {:.2f}, {} runs; D seed spread up to {:.3f} m at one angle)",
+                                       fit->slope, fit->r_squared, xy.size(), max_spread);
+        slope.by = fmt::format("{:+.3f} m/deg ({:+.0f}%): {}", fit->slope - f.slope_m_per_deg, 100 * rel,
+                               std::abs(rel) <= ob.slope_relative + 1e-9 ? "within" : "beyond");
+        slope.by += fmt::format(" {:g}%", 100 * ob.slope_relative);
+        s.details["fit"] = json{{"slope_m_per_deg", fit->slope}, {"intercept_m", fit->intercept},
+                                {"r_squared", fit->r_squared}, {"runs", xy.size()},
+                                {"rms_from_paper_line_m", std::sqrt(sq / static_cast<double>(xy.size()))}};
     }
+    return slope;
+}
+
+void score_band(const Observation& ob, const std::vector<ScoredRun>& runs, ObservationScore& s) {
+    const std::map<double, AtAngle> at = runs_by_angle(ob, runs);
+    const std::vector<double> band = band_of(at);
+    s.details["per_angle"] = per_angle_json(at);
+    const auto [start, end] = band_end_checks(ob, at, band, s);
+    std::optional<ScoreCheck> slope;
+    if (ob.linear_fit) slope = slope_check(ob, at, band, s);
     s.checks.push_back(start);
     s.checks.push_back(end);
-    if (ob.linear_fit) s.checks.push_back(slope);
+    if (slope) s.checks.push_back(*slope);
 }
 
 // A measured number (a lab's own): the mean over the runs that have one, within the tolerance.

@@ -9,6 +9,7 @@
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/json_path.h"
 #include "sim/message_text.h"
 #include "sweep/grid_values.h"
 
@@ -33,19 +34,6 @@ std::uint64_t fnv1a(const std::string& s) {
     h *= 0x94d049bb133111ebull;
     h ^= h >> 31;
     return h;
-}
-
-void set_path(json& doc, const std::string& field, const json& value) {
-    json* node = &doc;
-    std::size_t start = 0;
-    for (std::size_t dot = field.find('.'); dot != std::string::npos; dot = field.find('.', start)) {
-        json& child = (*node)[field.substr(start, dot - start)];
-        // A section given as a preset name ("material": "bb") becomes {"preset": "bb"} to take fields.
-        if (child.is_string()) child = json{{"preset", child}};
-        node = &child;
-        start = dot + 1;
-    }
-    (*node)[field.substr(start)] = value;
 }
 
 void collect_paths(const json& j, const std::string& prefix, std::vector<std::string>& out) {
@@ -121,7 +109,8 @@ std::vector<SceneLayer> run_layers(const SweepPlan& plan, const PlannedRun& run)
     point.origin = "sweep point";
     point.doc = json::object();
     for (const auto& [field, value] : run.point.items()) {
-        set_path(point.doc, field, value);
+        // A section given as a preset name ("material": "bb") becomes {"preset": "bb"} to take fields.
+        node_at(point.doc, field, PresetSections::open) = value;
         const auto it = std::find(plan.fields.begin(), plan.fields.end(), field);
         const std::size_t i = static_cast<std::size_t>(it - plan.fields.begin());
         point.field_labels.emplace_back(field, i < plan.flags.size() ? plan.flags[i] : field);

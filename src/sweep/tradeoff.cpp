@@ -11,6 +11,7 @@
 
 #include "sim/assets.h"
 #include "sim/scene_json.h"
+#include "sim/scene_matrices.h"
 #include "sim/shell_properties.h"
 #include "sweep/grid_values.h"
 
@@ -22,13 +23,8 @@ using json = nlohmann::ordered_json;
 // The scenes' fixed parts: the short wooden ramp keeps the costly reference runs affordable.
 const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"ramp", {{"preset", "wooden"}}},
                     {"run", {{"time_limit_s", 20}}}};
-const std::vector<int> kSides = {6, 18};
-const std::vector<std::pair<double, std::string>> kFills = {{0.0, "bb"}, {0.5, "bb"}, {1.0, "bb"}, {0.5, "rice"},
-                                                            {1.0, "rice"}};
-// 12 degrees: below the rolling band of the filled hexagons; 24: above it (the sweep in
-// docs/sweeps.md). Plus the third behaviour's scene, the half-full BB hexagon at 20 degrees.
-const std::vector<double> kAngles = {12.0, 24.0};
 const std::vector<std::string> kPresets = {"draft", "standard", "precise", "reference"};
+
 // A material preset's grain diameter, as assets/materials.json gives it.
 double diameter_m(const std::string& material) {
     return assets::preset_values(assets::Kind::material, material).at("diameter_m").get<double>();
@@ -75,12 +71,8 @@ SweepPlan tradeoff_plan() {
                    "run.model",       "fidelity.preset",    "fidelity.substeps",    "fill.material.diameter_m",
                    "fill.material.grains_per_disc", "run.seed"};
     plan.flags = plan.fields;
-    std::vector<std::tuple<int, double, std::string, double>> scenes;
-    for (int n : kSides)
-        for (const auto& [r, material] : kFills)
-            for (double a : kAngles) scenes.emplace_back(n, r, material, a);
-    scenes.emplace_back(6, 0.5, "bb", 20.0);
-    for (const auto& [n, r, material, a] : scenes) {
+    const std::vector<scenes::TradeoffScene> matrix = scenes::tradeoff_scenes();
+    for (const auto& [n, r, material, a] : matrix) {
         const json scene = {{"shell.sides", n}, {"fill.ratio", r}, {"fill.material.preset", material},
                             {"ramp.angle_deg", a}};
         auto with = [&](json extra) {
@@ -114,13 +106,37 @@ SweepPlan tradeoff_plan() {
     }
     // --model auto on every scene, after the rest so the earlier runs keep their indices and run ids:
     // its error and cost against the standard preset's.
-    for (const auto& [n, r, material, a] : scenes)
+    for (const auto& [n, r, material, a] : matrix)
         add_run(plan, {{"shell.sides", n}, {"fill.ratio", r}, {"fill.material.preset", material},
                        {"ramp.angle_deg", a}, {"run.model", "auto"}, {"fidelity.preset", "standard"}, {"run.seed", 1u}});
     return plan;
 }
 
-TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
+namespace {
+
+// Which choice a planned point is: model, preset and what differs from the preset's own run.
+Variant variant_of(const json& p) {
+    Variant v;
+    v.model = p.at("run.model");
+    v.preset = p.at("fidelity.preset");
+    if (p.contains("fidelity.substeps")) v.kind = "halved";
+    if (p.contains("fill.material.diameter_m")) {
+        const double k = p.at("fill.material.diameter_m").get<double>() /
+                         diameter_m(p.at("fill.material.preset").get<std::string>());
+        v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
+    }
+    if (p.contains("fill.material.grains_per_disc")) {
+        // Discs k times larger stand for k^2 times the grains.
+        const double k = std::sqrt(p.at("fill.material.grains_per_disc").get<double>() /
+                                   grains_per_disc(p.at("fill.material.preset").get<std::string>()).get<double>());
+        v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
+    }
+    if (p.at("run.seed") != 1) v.kind = "seed " + p.at("run.seed").dump();
+    return v;
+}
+
+// The table's rows with their scenes and choices, each with its scene's outer side length.
+std::vector<Row> read_rows(const SweepPlan& plan, const TableFile& t) {
     std::vector<Row> rows;
     std::map<std::string, double> side_of_scene;
     for (const auto& r : t.rows) {
@@ -130,21 +146,7 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
         row.scene = fmt::format("n = {}, r = {}, {}, {} deg", p.at("shell.sides").dump(), value_text(p.at("fill.ratio")),
                                 p.at("fill.ratio") == 0.0 ? "empty" : p.at("fill.material.preset").get<std::string>(),
                                 value_text(p.at("ramp.angle_deg")));
-        row.v.model = p.at("run.model");
-        row.v.preset = p.at("fidelity.preset");
-        if (p.contains("fidelity.substeps")) row.v.kind = "halved";
-        if (p.contains("fill.material.diameter_m")) {
-            const double k = p.at("fill.material.diameter_m").get<double>() /
-                             diameter_m(p.at("fill.material.preset").get<std::string>());
-            row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
-        }
-        if (p.contains("fill.material.grains_per_disc")) {
-            // Discs k times larger stand for k^2 times the grains.
-            const double k = std::sqrt(p.at("fill.material.grains_per_disc").get<double>() /
-                                       grains_per_disc(p.at("fill.material.preset").get<std::string>()).get<double>());
-            row.v.kind = fmt::format("coarse x{:g}", std::round(k * 10) / 10);
-        }
-        if (p.at("run.seed") != 1) row.v.kind = "seed " + p.at("run.seed").dump();
+        row.v = variant_of(p);
         row.ok = cell(t, r, "status") == "ok";
         row.behaviour = row.ok ? cell(t, r, "behaviour") : "failed";
         row.distance_m = number(cell(t, r, "distance_m"));
@@ -160,33 +162,38 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
         row.side_m = side_of_scene[row.scene];
         rows.push_back(row);
     }
+    return rows;
+}
+
+// Each scene's reference run: grains at the reference preset, seed 1.
+std::map<std::string, const Row*> references(const std::vector<Row>& rows) {
     std::map<std::string, const Row*> reference;
     for (const Row& r : rows)
         if (r.v.model == "grains" && r.v.preset == "reference" && r.v.kind.empty()) reference[r.scene] = &r;
+    return reference;
+}
 
-    struct Totals {
-        Variant v;
-        int runs = 0, compared = 0, wrong = 0, vt_n = 0, failed = 0;
-        double wall = 0, d_err = 0, vt_err = 0;
-    };
+struct Totals {
+    Variant v;
+    int runs = 0, compared = 0, wrong = 0, vt_n = 0, failed = 0;
+    double wall = 0, d_err = 0, vt_err = 0;
+};
+
+// The totals per choice, in order of first appearance.
+struct Tally {
     std::vector<std::string> order;
     std::map<std::string, Totals> totals;
-    std::string md;
-    md += "# Speed against accuracy\n\n";
-    md += "Generated by `polyroll tradeoff` (src/sweep/tradeoff.cpp). Each scene runs with every model and fidelity "
-          "preset and is compared with the reference: the grain simulation at the `reference` preset, seed 1. "
-          "Distance error: |D - D_ref| / max(D_ref, s) with s the outer side length (a stop at the first impact "
-          "moves the lid centre by a fraction of a side); terminal velocity error: |Vt - Vt_ref| / Vt_ref where both "
-          "rolled to the end; behaviour: the share of scenes whose behaviour differs from the reference's. Wall "
-          "time: mean per run, each run on one core (two runs at a time). Pareto front: no other choice (model, "
-          "preset below the reference, coarser grains) is at once cheaper and no less accurate in all three errors.\n\n";
+};
+
+Tally tally_choices(const std::vector<Row>& rows, const std::map<std::string, const Row*>& reference) {
+    Tally out;
     for (const Row& r : rows) {
         const std::string key = r.v.model + "|" + r.v.preset + "|" + r.v.kind;
-        if (!totals.count(key)) {
-            order.push_back(key);
-            totals[key].v = r.v;
+        if (!out.totals.count(key)) {
+            out.order.push_back(key);
+            out.totals[key].v = r.v;
         }
-        Totals& tt = totals[key];
+        Totals& tt = out.totals[key];
         ++tt.runs;
         tt.wall += r.wall_s;
         if (!r.ok) ++tt.failed;
@@ -201,15 +208,19 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
             tt.vt_err += std::fabs(r.vt_m_s - f.vt_m_s) / f.vt_m_s;
         }
     }
-    // The Pareto front over cost and all three errors among the choices a user has: the models, the
-    // presets below the reference (which is the yardstick, error 0 by definition) and coarser grains.
-    // The second seed and the halved step are yardsticks too: the noise floor and the reference's own error.
+    return out;
+}
+
+// The Pareto front over cost and all three errors among the choices a user has: the models, the
+// presets below the reference (which is the yardstick, error 0 by definition) and coarser grains.
+// The second seed and the halved step are yardsticks too: the noise floor and the reference's own error.
+std::vector<bool> pareto_front(const Tally& tally) {
     auto choice = [&](const Variant& v) {
         return v.model != "grains" || (v.preset != "reference" && (v.kind.empty() || v.kind.rfind("coarse", 0) == 0));
     };
     std::vector<std::array<double, 4>> pts;
-    for (const auto& k : order) {
-        const Totals& tt = totals[k];
+    for (const auto& k : tally.order) {
+        const Totals& tt = tally.totals.at(k);
         const bool ok = tt.compared && choice(tt.v);
         pts.push_back({tt.wall / tt.runs, ok ? tt.d_err / tt.compared : INFINITY,
                        ok && tt.vt_n ? tt.vt_err / tt.vt_n : INFINITY,
@@ -228,30 +239,51 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
         }
         return true;
     };
+    std::vector<bool> front;
+    for (std::size_t i = 0; i < pts.size(); ++i) front.push_back(on_front(i));
+    return front;
+}
 
-    md += "## Error against cost, per model and preset\n\n";
+const char* const kMethod =
+    "# Speed against accuracy\n\n"
+    "Generated by `polyroll tradeoff` (src/sweep/tradeoff.cpp). Each scene runs with every model and fidelity "
+    "preset and is compared with the reference: the grain simulation at the `reference` preset, seed 1. "
+    "Distance error: |D - D_ref| / max(D_ref, s) with s the outer side length (a stop at the first impact "
+    "moves the lid centre by a fraction of a side); terminal velocity error: |Vt - Vt_ref| / Vt_ref where both "
+    "rolled to the end; behaviour: the share of scenes whose behaviour differs from the reference's. Wall "
+    "time: mean per run, each run on one core (two runs at a time). Pareto front: no other choice (model, "
+    "preset below the reference, coarser grains) is at once cheaper and no less accurate in all three errors.\n\n";
+
+// The error-against-cost table (markdown) and its points for the figure (CSV).
+TradeoffReport error_table(const Tally& tally) {
+    const std::vector<bool> front = pareto_front(tally);
+    std::string md = "## Error against cost, per model and preset\n\n";
     md += "| model | preset | runs | failed | wall time per run (s) | distance error | terminal velocity error | "
           "wrong behaviour | Pareto front |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     std::string csv = "model,variant,label,runs,wall_time_s,distance_error,velocity_error,behaviour_error,pareto\n";
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        const Totals& tt = totals[order[i]];
+    for (std::size_t i = 0; i < tally.order.size(); ++i) {
+        const Totals& tt = tally.totals.at(tally.order[i]);
         const double d = tt.compared ? tt.d_err / tt.compared : NAN;
         const double vt = tt.vt_n ? tt.vt_err / tt.vt_n : NAN;
         const double wrong = tt.compared ? static_cast<double>(tt.wrong) / tt.compared : NAN;
         const std::string label = tt.v.label();
         md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} ({} of {}) | {} |\n", tt.v.model,
                           tt.v.model == "grains" ? label : "-", tt.runs, tt.failed, fmt::format("{:.2g}", tt.wall / tt.runs),
-                          percent(d), percent(vt), percent(wrong), tt.wrong, tt.compared, on_front(i) ? "yes" : "");
+                          percent(d), percent(vt), percent(wrong), tt.wrong, tt.compared, front[i] ? "yes" : "");
         const std::string variant = tt.v.kind.rfind("coarse", 0) == 0 ? "coarse"
                                     : !tt.v.kind.empty()             ? tt.v.kind
                                     : tt.v.preset == "reference" && tt.v.model == "grains" ? "reference"
                                                                                            : "preset";
         csv += fmt::format("{},{},\"{}\",{},{},{},{},{},{}\n", tt.v.model, variant, label, tt.runs, tt.wall / tt.runs,
                            std::isfinite(d) ? fmt::format("{}", d) : "", std::isfinite(vt) ? fmt::format("{}", vt) : "",
-                           std::isfinite(wrong) ? fmt::format("{}", wrong) : "", on_front(i) ? 1 : 0);
+                           std::isfinite(wrong) ? fmt::format("{}", wrong) : "", front[i] ? 1 : 0);
     }
+    return {md, csv};
+}
 
-    md += "\n## Is the reference converged? (reference against its own time step halved)\n\n";
+// The reference against its own time step halved, and the second seed beside them.
+std::string convergence_table(const std::vector<Row>& rows, const std::map<std::string, const Row*>& reference) {
+    std::string md = "\n## Is the reference converged? (reference against its own time step halved)\n\n";
     md += "| scene | behaviour (ref) | behaviour (dt/2) | D ref (m) | D dt/2 (m) | distance difference | Vt ref (m/s) | "
           "Vt dt/2 (m/s) | seed 2 at standard: behaviour, D (m) |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -274,7 +306,17 @@ TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
                           seed2 ? seed2->behaviour + ", " + fixed(seed2->distance_m, 3) : std::string("-"));
     }
     md += fmt::format("\nThe reference and its halved step agree on the behaviour in {} of {} scenes.\n", agree, scenes);
-    return {md, csv};
+    return md;
+}
+
+}  // namespace
+
+TradeoffReport analyse_tradeoff(const SweepPlan& plan, const TableFile& t) {
+    const std::vector<Row> rows = read_rows(plan, t);
+    const std::map<std::string, const Row*> reference = references(rows);
+    TradeoffReport report = error_table(tally_choices(rows, reference));
+    report.markdown = kMethod + report.markdown + convergence_table(rows, reference);
+    return report;
 }
 
 }  // namespace polyroll::sweep

@@ -1,5 +1,5 @@
-// An empty shell's run after lift-off, revealed step by step: see hopping_run.h.
-#include "sim/models/hopping_run.h"
+// An empty shell's run after lift-off, revealed step by step: see free_body_run.h.
+#include "sim/models/free_body_run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +15,8 @@
 namespace polyroll::models {
 
 namespace {
-HopStart start_from(const HandOver& from, double step_hz) {
-    HopStart s;
+FreeBodyStart start_from(const HandOver& from, double step_hz) {
+    FreeBodyStart s;
     s.time_s = static_cast<double>(from.steps) / step_hz;
     s.state = from.shell;
     s.release = from.release;
@@ -27,7 +27,7 @@ HopStart start_from(const HandOver& from, double step_hz) {
 }
 }  // namespace
 
-HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene), from_(from) {
+FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from) : scene_(scene), from_(from) {
     const ShellProperties sp = shell_properties(scene.shell);
     body_.outer_m = shell_outer_polygon_m(scene.shell);
     body_.mass_kg = sp.mass_kg;
@@ -51,7 +51,7 @@ HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene)
     rules_.sample_hz = scene.run.sample_hz;
     rules_.sample_grid_hz = scene.fidelity.step_hz;
     rules_.rest_speed_m_s = scene.run.rest_speed_m_s;
-    full_ = hop(body_, rules_, start_from(from, scene.fidelity.step_hz));
+    full_ = free_body_motion(body_, rules_, start_from(from, scene.fidelity.step_hz));
     if (full_.unsupported_time_s)
         hand_over_step_ = std::max(from.steps, static_cast<long>(std::floor(*full_.unsupported_time_s * scene.fidelity.step_hz)));
     outer_ = shell_outer_polygon_m(scene.shell);
@@ -62,29 +62,29 @@ HoppingRun::HoppingRun(const Scene& scene, const HandOver& from) : scene_(scene)
     reveal();
 }
 
-const HopRun& HoppingRun::fine() const {
+const FreeBodyMotion& FreeBodyRun::fine() const {
     std::call_once(fine_once_, [this] {
-        HopRules every_step = rules_;
+        FreeBodyRules every_step = rules_;
         every_step.sample_hz = scene_.fidelity.step_hz;
-        HopStart s = start_from(from_, scene_.fidelity.step_hz);
+        FreeBodyStart s = start_from(from_, scene_.fidelity.step_hz);
         s.measured.trajectory.clear();  // row i of the result is step from.steps + 1 + i
         s.first_row = from_.steps + 1;
-        fine_ = hop(body_, every_step, s);
+        fine_ = free_body_motion(body_, every_step, s);
     });
     return fine_;
 }
 
-ShellState HoppingRun::state_now() const {
+ShellState FreeBodyRun::state_now() const {
     if (steps_ <= from_.steps) return from_.shell;
-    const HopRun& f = fine();
+    const FreeBodyMotion& f = fine();
     if (f.states.empty()) return from_.shell;
     const size_t i = std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.states.size() - 1);
     return f.states[i];
 }
 
-TrajectorySample HoppingRun::sample_now() const {
+TrajectorySample FreeBodyRun::sample_now() const {
     if (steps_ > from_.steps) {
-        const HopRun& f = fine();
+        const FreeBodyMotion& f = fine();
         if (!f.measured.trajectory.empty()) {
             const size_t i =
                 std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.measured.trajectory.size() - 1);
@@ -97,11 +97,11 @@ TrajectorySample HoppingRun::sample_now() const {
     return s;
 }
 
-bool HoppingRun::finished() const {
+bool FreeBodyRun::finished() const {
     return !hand_over_step_ && time_s() >= full_.measured.end_time_s - 1e-12;
 }
 
-bool HoppingRun::step() {
+bool FreeBodyRun::step() {
     // Past the hand-over step the run has nothing to show: whoever runs it hands the shell over there.
     if (finished() || (hand_over_step_ && steps_ >= *hand_over_step_)) return false;
     ++steps_;
@@ -109,13 +109,13 @@ bool HoppingRun::step() {
     return !finished();
 }
 
-void HoppingRun::run_to_end() {
+void FreeBodyRun::run_to_end() {
     steps_ = hand_over_step_ ? std::max(steps_, *hand_over_step_)
                              : first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
     reveal();
 }
 
-RunSnapshot HoppingRun::snapshot() const {
+RunSnapshot FreeBodyRun::snapshot() const {
     RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
     s.time_s = finished() ? full_.measured.end_time_s : time_s();
     const ShellState st = state_now();
@@ -125,7 +125,7 @@ RunSnapshot HoppingRun::snapshot() const {
     return s;
 }
 
-RunResult HoppingRun::result() const {
+RunResult FreeBodyRun::result() const {
     RunResult r;
     r.scene = scene_;
     r.shell = shell_properties(scene_.shell);
@@ -137,7 +137,7 @@ RunResult HoppingRun::result() const {
     return r;
 }
 
-HandOver HoppingRun::hand_over() const {
+HandOver FreeBodyRun::hand_over() const {
     HandOver h;
     h.steps = steps_;
     h.shell = state_now();
@@ -152,6 +152,6 @@ HandOver HoppingRun::hand_over() const {
     return h;
 }
 
-void HoppingRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
+void FreeBodyRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 }  // namespace polyroll::models

@@ -1,4 +1,4 @@
-// An empty shell's run after lift-off (hopping_polygon.h) as a ModelRun, carrying on the run another
+// An empty shell's run after lift-off (free_body.h) as a ModelRun, carrying on the run another
 // model handed over: computed whole at once, revealed in the tracker's steps like ReducedRun, so the
 // window, the renderer and a further hand-over to Box2D see it as they see any run.
 #pragma once
@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "sim/model_run.h"
-#include "sim/models/hopping_polygon.h"
+#include "sim/models/free_body.h"
 
 namespace polyroll::models {
 
-class HoppingRun final : public ModelRun {
+class FreeBodyRun final : public ModelRun {
 public:
     // `scene` has no fill (fill.ratio 0); `from` is the state of the model that ran before.
-    HoppingRun(const Scene& scene, const HandOver& from);
+    FreeBodyRun(const Scene& scene, const HandOver& from);
 
     bool step() override;
     bool finished() const override;
@@ -32,25 +32,25 @@ public:
     // it does not model (unsupported_why), if it did.
     std::optional<long> hand_over_step() const { return hand_over_step_; }
     const std::string& unsupported_why() const { return full_.unsupported_why; }
-    const HopRun& run() const { return full_; }
+    const FreeBodyMotion& run() const { return full_; }
 
 private:
     // The state at every tracker step from the hand-over on, computed when first needed (drawing, a
     // hand-over): `polyroll run` never needs it.
-    const HopRun& fine() const;
+    const FreeBodyMotion& fine() const;
     ShellState state_now() const;
     TrajectorySample sample_now() const;
     void reveal();
 
     Scene scene_;
     HandOver from_;
-    HopBody body_;
+    FreeBody body_;
     double fill_mass_kg_ = 0.0;  // a full shell's fill, turning with it (0 for an empty shell)
-    HopRules rules_;
-    HopRun full_;
+    FreeBodyRules rules_;
+    FreeBodyMotion full_;
     std::optional<long> hand_over_step_;
     mutable std::once_flag fine_once_;
-    mutable HopRun fine_;
+    mutable FreeBodyMotion fine_;
     std::vector<geom::Vec2> outer_, inner_;
     Measurements shown_;
     long steps_ = 0;

@@ -1,10 +1,10 @@
-// An empty shell after lift-off, event-driven: see hopping_polygon.h.
+// An empty shell after lift-off, event-driven: see free_body.h.
 //
 // Conventions, those of shell_pose.h and tracker.cpp: the ramp frame has x down the slope and y along
 // its normal, the surface at y = 0; the angle a is counter-clockwise (rolling down turns it
 // negative); vertex j (unwrapped) points straight down at a = pi/n - 2 pi j/n, so the lowest vertex is
 // floor(1 - a n / (2 pi)), and vertex 1 was the pivot at release.
-#include "sim/models/hopping_polygon.h"
+#include "sim/models/free_body.h"
 
 #include <algorithm>
 #include <array>
@@ -93,10 +93,10 @@ double positive_for(double h, double h1, double h2, double h3, double k4, double
     return 0.0;
 }
 
-class Hopper {
+class FreeBodySolver {
 public:
-    Hopper(const HopBody& body, const HopRules& rules, const HopStart& start);
-    HopRun run();
+    FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start);
+    FreeBodyMotion run();
 
 private:
     struct Contact {
@@ -165,7 +165,7 @@ private:
     void finish(Behaviour b);
     void stop_unsupported(const std::string& why);
 
-    const HopRules& rules_;
+    const FreeBodyRules& rules_;
     int n_ = 0;
     double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
     double inv_m_ = 0.0, inv_i_ = 0.0;
@@ -187,10 +187,10 @@ private:
     long next_row_ = 0;
     int chatter_ = 0;  // stretches in a row shorter than kChatterS
     bool running_ = true;
-    HopRun out_;
+    FreeBodyMotion out_;
 };
 
-Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start) : rules_(rules) {
+FreeBodySolver::FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start) : rules_(rules) {
     n_ = static_cast<int>(body.outer_m.size());
     radius_ = geom::length(body.outer_m[0]);
     for (const Vec2& v : body.outer_m) {
@@ -224,7 +224,7 @@ Hopper::Hopper(const HopBody& body, const HopRules& rules, const HopStart& start
     potential_offset_J_ = m_ * rules.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
 }
 
-Hopper::Contact Hopper::contact(const State& s, Phase p, Vec2 r) const {
+FreeBodySolver::Contact FreeBodySolver::contact(const State& s, Phase p, Vec2 r) const {
     Contact c;
     if (p != Phase::flight) {
         const double w2 = s.w * s.w;
@@ -248,7 +248,7 @@ Hopper::Contact Hopper::contact(const State& s, Phase p, Vec2 r) const {
     return c;
 }
 
-void Hopper::project(State& s, Phase p) const {
+void FreeBodySolver::project(State& s, Phase p) const {
     // Puts the contact vertex exactly on the ramp (and at rest on it, sticking) as a stretch on it
     // begins: an event located to a nanosecond leaves it a rounding error off.
     if (p == Phase::flight) return;
@@ -261,12 +261,12 @@ void Hopper::project(State& s, Phase p) const {
     }
 }
 
-State Hopper::flight_at(const State& s, double tau) const {
+State FreeBodySolver::flight_at(const State& s, double tau) const {
     return {s.x + s.vx * tau + 0.5 * gx_ * tau * tau, s.y + s.vy * tau + 0.5 * gy_ * tau * tau, s.a + s.w * tau,
             s.vx + gx_ * tau, s.vy + gy_ * tau, s.w};
 }
 
-double Hopper::event_value(const State& s, Phase p, Event e, Turn t, const Contact* c) const {
+double FreeBodySolver::event_value(const State& s, Phase p, Event e, Turn t, const Contact* c) const {
     constexpr double kNever = 1.0;
     switch (e) {
         case Event::touch:  // a neighbour of the contact vertex meeting the ramp
@@ -287,7 +287,7 @@ double Hopper::event_value(const State& s, Phase p, Event e, Turn t, const Conta
     return kNever;
 }
 
-TrajectorySample Hopper::sample(const State& s, double t) const {
+TrajectorySample FreeBodySolver::sample(const State& s, double t) const {
     TrajectorySample r;
     r.time_s = t;
     r.position_m = s.x - start_x_;
@@ -299,14 +299,14 @@ TrajectorySample Hopper::sample(const State& s, double t) const {
     return r;
 }
 
-double Hopper::sample_time(long row) const {
+double FreeBodySolver::sample_time(long row) const {
     // The tracker's rule (tracker.cpp): the first grid step at or after row / sample_hz.
     return std::ceil(static_cast<double>(row) * rules_.sample_grid_hz / rules_.sample_hz - 1e-9) /
            rules_.sample_grid_hz;
 }
 
 template <class At>
-void Hopper::emit_rows_before(double t_end, At state_at) {
+void FreeBodySolver::emit_rows_before(double t_end, At state_at) {
     for (;;) {
         const double ts = sample_time(next_row_);
         if (ts >= t_end) break;
@@ -318,7 +318,7 @@ void Hopper::emit_rows_before(double t_end, At state_at) {
     }
 }
 
-void Hopper::note_landing(long j, double kinetic_before_J) {
+void FreeBodySolver::note_landing(long j, double kinetic_before_J) {
     if (j <= landed_) return;
     landed_ = j;
     FaceImpact f;
@@ -330,7 +330,7 @@ void Hopper::note_landing(long j, double kinetic_before_J) {
     out_.measured.impacts.push_back(f);
 }
 
-void Hopper::finish(Behaviour b) {
+void FreeBodySolver::finish(Behaviour b) {
     running_ = false;
     Measurements& m = out_.measured;
     m.behaviour = b;
@@ -345,13 +345,13 @@ void Hopper::finish(Behaviour b) {
     if (b == Behaviour::rolled_to_end) set_terminal_velocity_at_end(m, n_, last);
 }
 
-void Hopper::stop_unsupported(const std::string& why) {
+void FreeBodySolver::stop_unsupported(const std::string& why) {
     running_ = false;
     out_.unsupported_time_s = t_;
     out_.unsupported_why = why;
 }
 
-void Hopper::impact(long j) {
+void FreeBodySolver::impact(long j) {
     const double kinetic_before = sample(s_, t_).kinetic_J;
     const Vec2 r = arm(j, s_.a);
     const Vec2 v = vertex_velocity(s_, r);
@@ -386,7 +386,7 @@ void Hopper::impact(long j) {
     settle_on(j);
 }
 
-void Hopper::settle_on(long j) {
+void FreeBodySolver::settle_on(long j) {
     on_ = j;
     const Vec2 r = arm(j, s_.a);
     const double vt = vertex_velocity(s_, r).x;
@@ -415,13 +415,13 @@ void Hopper::settle_on(long j) {
     }
 }
 
-State Hopper::on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const {
+State FreeBodySolver::on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const {
     const Vec2 u = unit_[index(on_)];  // a = phi - beta
     t = {c_phi * u.x + s_phi * u.y, s_phi * u.x - c_phi * u.y};
     return {x, -radius_ * s_phi, a, vx, -w * radius_ * c_phi, w};
 }
 
-State Hopper::stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const {
+State FreeBodySolver::stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const {
     double psi = 0.0, rate = 0.0, sin_psi = 0.0, cos_psi = 0.0;
     ps.psi_and_rate(tau, psi, rate);
     ps.sin_cos_psi(tau, sin_psi, cos_psi);
@@ -432,19 +432,19 @@ State Hopper::stick_state(const PendulumSeries& ps, double psi0, double a0, doub
     return on_vertex(c_phi, s_phi, pivot_x_ - radius_ * c_phi, rate * radius_ * s_phi, a0 + (psi - psi0), rate, t);
 }
 
-State Hopper::slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const {
+State FreeBodySolver::slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const {
     const SlideSeries::Point q = ss.at(tau);
     return on_vertex(q.cos_phi, q.sin_phi, q.x_m, q.vx_m_s, a0 + (q.phi - phi0), q.omega, t);
 }
 
-void Hopper::stick_stretch() {
+void FreeBodySolver::stick_stretch() {
     const double a0 = s_.a, psi0 = psi_of(a0);
     const PendulumSeries ps(psi0, s_.w, pendulum_a_);
     follow(Phase::stick, ps.accurate_step_s(),
            [&](double tau, Turn& t) { return stick_state(ps, psi0, a0, tau, t); });
 }
 
-void Hopper::slide_stretch() {
+void FreeBodySolver::slide_stretch() {
     const double a0 = s_.a, phi0 = beta_[index(on_)] + a0;
     SlideBody b;
     b.radius_m = radius_;
@@ -459,7 +459,7 @@ void Hopper::slide_stretch() {
 }
 
 template <class StateAt>
-void Hopper::follow(Phase p, double span_s, StateAt state_at) {
+void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
     // Each event that holds at a grid point is traced back to where it began, and the earliest wins.
     const double span = std::min(span_s, rules_.time_limit_s - t_);
     Turn turn0;
@@ -523,7 +523,7 @@ void Hopper::follow(Phase p, double span_s, StateAt state_at) {
     after_contact_event(e);
 }
 
-void Hopper::after_contact_event(Event e) {
+void FreeBodySolver::after_contact_event(Event e) {
     switch (e) {
         case Event::touch: {
             // The lower neighbour (the event holds where its height reached zero, to rounding).
@@ -558,7 +558,7 @@ void Hopper::after_contact_event(Event e) {
     }
 }
 
-void Hopper::flight_stretch() {
+void FreeBodySolver::flight_stretch() {
     // The first touch of the ramp by the lowest vertex or a neighbour. Each vertex's height
     // h(tau) = y + vy tau - g cos(theta) tau^2 / 2 + R sin(beta + a + w tau) curves by at most
     // C = g cos(theta) + R w^2, so it stays above h + h' d - C d^2 / 2 over a step d, and its fourth
@@ -639,7 +639,7 @@ void Hopper::flight_stretch() {
     impact(hit);
 }
 
-HopRun Hopper::run() {
+FreeBodyMotion FreeBodySolver::run() {
     // Taken over on the ramp (turning about its lowest vertex) or above it.
     const long j = lowest(s_.a);
     on_ = j;
@@ -679,8 +679,8 @@ HopRun Hopper::run() {
 
 }  // namespace
 
-HopRun hop(const HopBody& body, const HopRules& rules, const HopStart& start) {
-    Hopper h(body, rules, start);
+FreeBodyMotion free_body_motion(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start) {
+    FreeBodySolver h(body, rules, start);
     return h.run();
 }
 

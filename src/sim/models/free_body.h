@@ -27,14 +27,14 @@
 namespace polyroll::models {
 
 // A rigid polygon with its centre of mass at its centre (an empty shell).
-struct HopBody {
+struct FreeBody {
     std::vector<geom::Vec2> outer_m;  // the outline touching the ramp, as shell_outer_polygon_m
     double mass_kg = 0.0;
     double inertia_kg_m2 = 0.0;  // about the centre
 };
 
 // The ramp and the run's rules, in SI units and the ramp frame of shell_pose.h.
-struct HopRules {
+struct FreeBodyRules {
     double angle_deg = 0.0;
     double gravity_m_s2 = 0.0;
     double friction = 0.0;  // the shell-ramp Coulomb coefficient (Box2D: sqrt of the two fixtures')
@@ -46,7 +46,7 @@ struct HopRules {
 };
 
 // Where the run is taken over: the state now and the records so far.
-struct HopStart {
+struct FreeBodyStart {
     double time_s = 0.0;
     ShellState state;
     ShellPose release;               // position and angle are measured from it
@@ -58,7 +58,7 @@ struct HopStart {
     long first_row = -1;
 };
 
-struct HopRun {
+struct FreeBodyMotion {
     Measurements measured;            // the records, continued to the end or to `unsupported_time_s`
     std::vector<ShellState> states;   // the state at each trajectory row added (after the start's rows)
     std::vector<long> landed_vertices;  // the highest vertex landed after each row added
@@ -70,6 +70,6 @@ struct HopRun {
 };
 
 // Runs from `start` to the ramp's end, the time limit, or the first contact it does not model.
-HopRun hop(const HopBody& body, const HopRules& rules, const HopStart& start);
+FreeBodyMotion free_body_motion(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start);
 
 }  // namespace polyroll::models
