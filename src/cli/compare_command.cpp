@@ -135,6 +135,7 @@ int compare(const CompareOptions& o) {
     else print_table(runs);
     if (!o.out.empty() && !o.json) {
         std::vector<Model> ran;
+        ran.reserve(runs.size());
         for (const RunResult& r : runs) ran.push_back(r.scene.run.model);
         fmt::print("files: {0}/{{{1}}}/summary.json, trajectory.csv, impacts.csv; {0}/speed_vs_time.csv\n", o.out,
                    model_list(ran, ","));
