@@ -57,7 +57,16 @@ TEST_CASE("dem3d's input: the 2D models' pose, end and the fill's grain count", 
     CHECK(in["shell"]["outer_vertices_m"].size() == 6);
     CHECK(in["end_centre_x_m"].get<double>() == Approx(s.ramp.length_m - p.outer_circumradius_m));
     CHECK(in["release"]["angle_rad"].get<double>() == Approx(release_pose(s, p).angle_rad));
+    CHECK(in["release"]["tip_rad"].get<double>() == 0.0);
     CHECK(in["dem3d"]["contact_time_s"].get<double>() == Approx(0.001));
+    // The tipped release: poured with the shell flat on its face, then turned by tip_rad onto the vertex.
+    const Scene tipped = test::scene_with({{"release", {{"pose", "tipped"}}}});
+    const json tipped_in = script_input(tipped, 30.0);
+    CHECK(tipped_in["release"]["pose"] == "tipped");
+    CHECK(tipped_in["release"]["angle_rad"].get<double>() == 0.0);
+    CHECK(tipped_in["release"]["centre_m"][1].get<double>() == Approx(p.outer_apothem_m));
+    CHECK(tipped_in["release"]["tip_rad"].get<double>() == Approx(release_pose(tipped, p).angle_rad));
+    CHECK(release_pose(tipped, p).angle_rad == Approx(release_pose(s, p).angle_rad));
     CHECK(grain_count(test::scene_with({{"fill", {{"ratio", 0.0}}}})) == 0);
 }
 

@@ -66,7 +66,7 @@ TEST_CASE("both reduced models timed from the energy integral agree with the ste
                 const Scene s = test::scene_with(
                     {{"shell", {{"sides", n}}}, {"fill", {{"ratio", r}}}, {"ramp", {{"angle_deg", angle}}}});
                 const models::RollingBody body = models::rolling_body(s);
-                const models::RollingTrack track = models::rolling_track(s);
+                const models::RampFrame track = models::ramp_frame(s);
                 const models::RollingRun ref = models::roll(body, motion, track, models::FaceTiming::stepped);
                 const models::RollingRun fast = models::roll(body, motion, track, models::FaceTiming::energy_integral);
                 const Measurements& a = ref.measured;
@@ -113,7 +113,7 @@ TEST_CASE("both reduced models timed from the energy integral agree with the ste
 
 TEST_CASE("the segment model times most faces in one go", "[models][segments]") {
     const Scene s = resolve_scene({});
-    const models::RollingRun run = models::roll(models::rolling_body(s), models::FillMotion::relevel, models::rolling_track(s),
+    const models::RollingRun run = models::roll(models::rolling_body(s), models::FillMotion::relevel, models::ramp_frame(s),
                                                 models::FaceTiming::energy_integral);
     REQUIRE(run.measured.behaviour == Behaviour::rolled_to_end);
     // One arc per face, and the stepper only at the release (which starts at rest).

@@ -130,4 +130,9 @@ inline const std::string kPolyrollExe = POLYROLL_EXE;
 inline CommandResult run_polyroll(const std::string& args) { return run_command(kPolyrollExe + " " + args); }
 #endif
 
+#ifdef POLYROLL_SANDBOX_EXE
+// The polyroll-sandbox program under test.
+inline const std::string kSandboxExe = POLYROLL_SANDBOX_EXE;
+#endif
+
 }  // namespace polyroll::test

@@ -35,8 +35,8 @@ FreeBody body_of(const Scene& s) {
     return {shell_outer_polygon_m(s.shell), sp.mass_kg, sp.inertia_kg_m2};
 }
 
-FreeBodyRules rules_of(const Scene& s) {
-    FreeBodyRules r;
+RampFrame rules_of(const Scene& s) {
+    RampFrame r;
     r.angle_deg = s.ramp.angle_deg;
     r.gravity_m_s2 = s.run.gravity_m_s2;
     r.friction = s.ramp.friction;
@@ -54,7 +54,7 @@ TEST_CASE("a shell dropped vertex-first falls as a parabola and lands without bo
           "[models][hopping]") {
     const Scene s = empty_scene(8, 20.0);
     const FreeBody b = body_of(s);
-    FreeBodyRules rules = rules_of(s);
+    RampFrame rules = rules_of(s);
     const double g = s.run.gravity_m_s2, theta = 20.0 * kPi / 180.0;
     const double radius = geom::length(b.outer_m[0]), h0 = 0.01;
     // Vertex 1 straight down (tracker.cpp's numbering: a = pi/n - 2 pi/n), 1 cm above the ramp, at rest.
@@ -260,4 +260,50 @@ TEST_CASE("an empty shell's Box2D works in millimetres where the step allows, an
     const double lost_box2d_J = e0 - energy_J(engine->hand_over().shell);
     REQUIRE(lost_free_J > 1e-3);
     CHECK(lost_box2d_J == Approx(lost_free_J).epsilon(0.003));
+}
+
+TEST_CASE("the free rigid body's dense output is the run sampled at every step", "[models][hopping]") {
+    // Flights, landings and contact stretches of an empty hexagon from the rigid model's lift-off at
+    // 30 deg: the row of any step from a run sampled at the scene's rate equals, to the last bit, the
+    // row a run sampled at every step records (what drawing and a hand-over once ran a second time for).
+    const Scene s = test::with_model(empty_scene(6, 30.0), Model::rigid);
+    ReducedRun rigid(s, FillMotion::frozen, true);
+    const long lift = static_cast<long>(std::floor(*rigid.result().model_invalid_time_s * s.fidelity.step_hz));
+    while (rigid.steps() < lift && rigid.step()) {
+    }
+    const HandOver h = rigid.hand_over();
+    const double hz = s.fidelity.step_hz;
+    FreeBodyStart start;
+    start.time_s = static_cast<double>(h.steps) / hz;
+    start.state = h.shell;
+    start.release = h.release;
+    start.potential_J = h.potential_J;
+    start.landed_vertex = h.landed_vertex;
+    start.measured.behaviour = Behaviour::running;
+    const FreeBody b = body_of(s);
+    RampFrame every_step = rules_of(s);
+    every_step.sample_hz = hz;
+    every_step.sample_grid_hz = hz;
+    RampFrame coarse = every_step;
+    coarse.sample_hz = 30.0;
+    const FreeBodyMotion fine = free_body_motion(b, every_step, start);
+    const FreeBodyMotion run = free_body_motion(b, coarse, start);
+    // Row k of the fine run is step k (those before the start hold the start's state).
+    REQUIRE(fine.states.size() > static_cast<size_t>(h.steps) + 100);
+    CHECK(run.measured.impacts.size() == fine.measured.impacts.size());
+    CHECK(run.flights > 0);
+    for (size_t i = static_cast<size_t>(h.steps); i < fine.states.size() + 5; ++i) {
+        const long step = static_cast<long>(i);
+        const std::optional<FreeBodyRow> r = run.row_at_step(step, hz, h.steps);
+        REQUIRE(r);
+        const size_t j = std::min(i, fine.states.size() - 1);
+        INFO("step " << step);
+        CHECK(r->state.pose.centre_m.x == fine.states[j].pose.centre_m.x);
+        CHECK(r->state.pose.centre_m.y == fine.states[j].pose.centre_m.y);
+        CHECK(r->state.pose.angle_rad == fine.states[j].pose.angle_rad);
+        CHECK(r->state.angular_velocity_rad_s == fine.states[j].angular_velocity_rad_s);
+        CHECK(r->sample.time_s == fine.measured.trajectory[j].time_s);
+        CHECK(r->sample.potential_J == fine.measured.trajectory[j].potential_J);
+        CHECK(r->landed_vertex == fine.landed_vertices[j]);
+    }
 }

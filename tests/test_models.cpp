@@ -25,7 +25,7 @@ namespace {
 
 constexpr double kPi = geom::kPi;
 
-Scene scene_with(const nlohmann::ordered_json& overrides) { return resolve_scene({SceneLayer{overrides, "test", {}}}); }
+using test::scene_with;
 
 // A uniform solid regular polygon laid out like the shell (face (0, 1) down, vertex 1 downhill).
 models::RollingBody solid_polygon(int n, double circumradius_m, double mass_kg) {
@@ -38,9 +38,9 @@ models::RollingBody solid_polygon(int n, double circumradius_m, double mass_kg) 
 }
 
 // The track of a scene, for a body of outer circumradius R released like the scene's shell.
-models::RollingTrack track_for(int n, double circumradius_m, double angle_deg, double length_m = 2.539) {
+models::RampFrame track_for(int n, double circumradius_m, double angle_deg, double length_m = 2.539) {
     const double theta = angle_deg * kPi / 180.0;
-    models::RollingTrack t;
+    models::RampFrame t;
     t.angle_deg = angle_deg;
     t.gravity_m_s2 = 9.81;
     t.start_rotation_rad = std::max(0.0, kPi / n - theta) + 1.0 * kPi / 180.0;  // vertex release, 1 deg tilt
@@ -194,7 +194,7 @@ TEST_CASE("a solid triangle does not roll past its first impact", "[models]") {
         // It lands on face (1, 2) and stays there, its centre above that face's middle, x = 1.5 sides;
         // it started above vertex 1 (x = 1 side) turned by the release rotation about it.
         const double side = geom::regular_polygon_side(3, 0.035);
-        const models::RollingTrack t = track_for(3, 0.035, angle);
+        const models::RampFrame t = track_for(3, 0.035, angle);
         const double start_x = side + 0.035 * std::sin(t.start_rotation_rad - kPi / 3.0);
         CHECK(run.measured.distance_m == Approx(1.5 * side - start_x).epsilon(1e-9));
     }
@@ -298,7 +298,7 @@ TEST_CASE("a partly filled polygon re-levels and books the fill's drop", "[model
     // Fill 3/8: after an impact the level surface is tilted in the polygon's frame, so re-levelling
     // drops the fill's centre of mass and books that energy as dissipated.
     const Scene s = scene_with({{"fill", {{"ratio", 0.375}}}, {"ramp", {{"angle_deg", 20.0}}}, {"run", {{"model", "segments"}}}});
-    const models::RollingRun run = models::roll(models::rolling_body(s), models::FillMotion::relevel, models::rolling_track(s));
+    const models::RollingRun run = models::roll(models::rolling_body(s), models::FillMotion::relevel, models::ramp_frame(s));
     REQUIRE(!run.measured.impacts.empty());
     CHECK(run.relevel_dissipated_J > 0.0);
     CHECK(run.fill_mass_kg == Approx(0.375 * shell_properties(s.shell).inside_volume_m3 * s.fill.material.bulk_density_kg_m3).epsilon(1e-12));
@@ -312,7 +312,7 @@ TEST_CASE("the reduced models start where the grain simulation's shell starts", 
             const ShellProperties sp = shell_properties(s.shell);
             const ShellPose p = release_pose(s, sp);
             // The rigid model measures from the release centre: reconstruct it from its own geometry.
-            const models::RollingTrack t = models::rolling_track(s);
+            const models::RampFrame t = models::ramp_frame(s);
             CHECK(t.start_rotation_rad == Approx(-p.angle_rad));
             const Vec2 v1 = shell_outer_polygon_m(s.shell)[1];
             const Vec2 centre = Vec2{sp.outer_side_m, 0.0} + geom::rotate(-1.0 * v1, p.angle_rad);
@@ -447,5 +447,39 @@ TEST_CASE("the registry describes every model and auto picks only the models it 
             // Only a run with a fill has grains to step, and every choice but the empty shell's may step them.
             CHECK(may_step_grains(s) == (ratio > 0.0));
         }
+    }
+}
+
+TEST_CASE("the tipped release in the reduced models: the pile as poured on the face, the whole body balanced on the vertex", "[models][release]") {
+    for (const char* model : {"rigid", "segments"}) {
+        for (const char* shell : {"hexagon-small", "octagon-small"}) {
+            for (double fill : {0.25, 0.5}) {
+                for (double angle : {10.0, 16.0, 22.0}) {
+                    const Scene s = scene_with({{"shell", shell},
+                                                {"fill", {{"ratio", fill}}},
+                                                {"ramp", {{"angle_deg", angle}}},
+                                                {"run", {{"model", model}}},
+                                                {"release", {{"pose", "tipped"}}}});
+                    const RunResult r = run_scene(s);
+                    INFO(model << ", " << shell << ", r = " << fill << ", " << angle << " deg");
+                    REQUIRE(r.measured.trajectory.size() > 2);
+                    // Balanced past the pivot, it starts to roll forward, never back onto its face.
+                    CHECK(r.measured.trajectory[1].position_m > 0.0);
+                    CHECK(r.measured.trajectory[1].speed_m_s > 0.0);
+                    CHECK(r.measured.distance_m > 0.0);
+                }
+            }
+        }
+    }
+    // An empty or a full shell has no pile to pour on a face: the tipped release is the vertex release.
+    for (double fill : {0.0, 1.0}) {
+        const Scene vertex = scene_with({{"fill", {{"ratio", fill}}}, {"run", {{"model", "rigid"}}}});
+        const Scene tipped = scene_with(
+            {{"fill", {{"ratio", fill}}}, {"run", {{"model", "rigid"}}}, {"release", {{"pose", "tipped"}}}});
+        const RunResult a = run_scene(vertex), b = run_scene(tipped);
+        INFO("r = " << fill);
+        CHECK(b.measured.distance_m == a.measured.distance_m);
+        REQUIRE(b.measured.trajectory.size() == a.measured.trajectory.size());
+        CHECK(b.measured.trajectory.back().angle_deg == a.measured.trajectory.back().angle_deg);
     }
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "render/close_up.h"
@@ -186,6 +187,75 @@ TEST_CASE("one view layer: the frames' follow framing and styles are the render 
     const CloseUpStyle cu = close_up_style(area, L.unit);
     CHECK(cu.label_font == L.label);
     CHECK(cu.marker == palette::inset_marker);
+}
+
+namespace {
+
+// The bounds of what a draw list holds with one of `tags`: its triangles' corners and its shapes'
+// extents (a capsule's ends and radius).
+PxRect bounds_tagged(const DrawList& dl, std::initializer_list<Tag> tags) {
+    float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+    const auto add = [&](Px p, float r) {
+        x0 = std::min(x0, p.x - r), y0 = std::min(y0, p.y - r), x1 = std::max(x1, p.x + r), y1 = std::max(y1, p.y + r);
+    };
+    const auto tagged = [&](Tag t) { return std::find(tags.begin(), tags.end(), t) != tags.end(); };
+    for (const Layer& l : dl.layers) {
+        for (const Triangle& t : l.triangles)
+            if (tagged(t.tag))
+                for (const Px& p : {t.a, t.b, t.c}) add(p, 0.0f);
+        for (const Shape& sh : l.shapes)
+            if (tagged(sh.tag) && sh.kind == ShapeKind::capsule) {
+                add(sh.a, sh.radius);
+                add(sh.b, sh.radius);
+            }
+    }
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+bool overlap(const PxRect& a, const PxRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+}  // namespace
+
+// The close-up's label sits inside its top-left corner; in a short inset at a large UI scale (the
+// window at 1920x1080 and UI scale 2, racing) the shell is framed below it instead of under it.
+TEST_CASE("the close-up's label is clear of the shell, in a tall inset and in a short one", "[render]") {
+    const Snapshot s = known_snapshot();
+    struct Case {
+        PxRect inset;
+        float unit;
+    };
+    for (const Case& c : {Case{{20.0f, 300.0f, 460.0f, 400.0f}, 1.0f}, Case{{824.0f, 525.0f, 403.0f, 142.0f}, 2.0f}}) {
+        INFO("inset " << c.inset.width << "x" << c.inset.height << " at unit " << c.unit);
+        const PxRect view{0.0f, 0.0f, 1920.0f, 1080.0f};
+        const Camera main_cam = whole_ramp_camera(s.ramp_length_m, s.ramp_angle_deg, 0.1, view);
+        const WorldStyle w = world_style(c.unit, view, GrainColouring::material, 1.0);
+        const FontAtlas font(find_font_dir(), {label_font(c.unit), w.scale_font});
+        CloseUpStyle style = close_up_style(c.inset, c.unit);
+        style.label_suffix = ", lane 1";
+        DrawList dl;
+        draw_close_up(s, main_cam, style, w, font, dl);
+        // The label: the glyphs of the last layer (the frame's); the shell: its walls and outline.
+        PxRect label{dl.layers.back().glyphs.front().p0.x, dl.layers.back().glyphs.front().p0.y, 0.0f, 0.0f};
+        float right = label.x, bottom = label.y;
+        for (const GlyphQuad& g : dl.layers.back().glyphs) {
+            label.x = std::min(label.x, g.p0.x);
+            label.y = std::min(label.y, g.p0.y);
+            right = std::max(right, g.p1.x);
+            bottom = std::max(bottom, g.p1.y);
+        }
+        label.width = right - label.x;
+        label.height = bottom - label.y;
+        const PxRect shell = bounds_tagged(dl, {Tag::shell_inside, Tag::shell_wall, Tag::shell_outline});
+        INFO("label " << label.x << "," << label.y << " " << label.width << "x" << label.height << "; shell " << shell.x
+                      << "," << shell.y << " " << shell.width << "x" << shell.height);
+        REQUIRE(shell.width > 0.0f);
+        CHECK_FALSE(overlap(label, shell));
+        // The shell whole inside the inset.
+        CHECK(shell.y >= c.inset.y);
+        CHECK(shell.y + shell.height <= c.inset.y + c.inset.height);
+    }
 }
 
 TEST_CASE("grains coloured by speed follow the colour map", "[render]") {

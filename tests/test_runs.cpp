@@ -144,10 +144,12 @@ TEST_CASE("a shell nearing the engine's per-step speed limit is stopped as diver
 }
 
 TEST_CASE("held on a vertex, the whole polygon with its fill is released just past balance", "[runs][release]") {
+    for (const char* pose : {"vertex", "tipped"}) {
     for (double fill : {0.25, 0.5, 1.0}) {
         for (const char* material : {"bb", "rice"}) {
             const Scene s = test::scene_with({{"fill", {{"ratio", fill}, {"material", material}}},
-                                              {"ramp", {{"angle_deg", 16}}}});
+                                              {"ramp", {{"angle_deg", 16}}},
+                                              {"release", {{"pose", pose}}}});
             auto w = build_world(s);
             double mx = w->shell_props.mass_kg * w->shell->GetPosition().x;
             double my = w->shell_props.mass_kg * w->shell->GetPosition().y, mass = w->shell_props.mass_kg;
@@ -163,14 +165,70 @@ TEST_CASE("held on a vertex, the whole polygon with its fill is released just pa
             const geom::Vec2 lean = {mx / mass - pivot.x, my / mass - pivot.y};
             const geom::Vec2 up = {-std::sin(theta), std::cos(theta)};
             const double lean_deg = std::atan2(geom::cross(up, lean), geom::dot(up, lean)) * 180.0 / geom::kPi;
-            INFO(material << ", r = " << fill);
+            INFO(pose << ", " << material << ", r = " << fill);
             CHECK(lean_deg == Approx(-s.release.tilt_deg).margin(0.02));
         }
+    }
     }
     // So a full polygon, which behaves like a solid one, rolls forward rather than tipping back.
     const RunResult full = checked_run(test::scene_with({{"fill", {{"ratio", 1.0}}}, {"ramp", {{"angle_deg", 16}}}}));
     CHECK(full.measured.distance_m > 0.0);
     CHECK(full.measured.behaviour == Behaviour::rolled_to_end);
+}
+
+namespace {
+// Where the pile's centre of mass lies along face (0, 1), in the shell's frame, from the face's
+// middle towards vertex 1 (the pivot), as a share of the face's length.
+double pile_offset_along_face(const SimWorld& w) {
+    double mx = 0.0, my = 0.0, mass = 0.0;
+    for (const b2Body* b : w.grains) {
+        const b2Vec2 local = w.shell->GetLocalPoint(b->GetPosition());
+        mx += b->GetMass() * w.units.to_m(local.x);
+        my += b->GetMass() * w.units.to_m(local.y);
+        mass += b->GetMass();
+    }
+    const geom::Vec2 v0 = w.outer_local_m[0], v1 = w.outer_local_m[1];
+    const geom::Vec2 middle = 0.5 * (v0 + v1), along = v1 - v0;
+    const geom::Vec2 pile = {mx / mass, my / mass};
+    return geom::dot(pile - middle, along) / geom::dot(along, along);
+}
+}  // namespace
+
+TEST_CASE("the tipped release: the pile settled on the face, then turned onto the vertex with the shell", "[runs][release]") {
+    // Octagon three eighths full at 12 deg. Poured with the shell on its face (the face release
+    // without a tilt), the pile settles level; the tipped release turns shell and pile together as one
+    // body, so in the shell's frame every grain is where it settled on the face. Held on its vertex
+    // instead, the pile settles against the downhill walls: another shape.
+    for (const char* material : {"bb", "rice"}) {
+        auto scene = [&](const char* pose) {
+            return test::scene_with({{"shell", "octagon-small"},
+                                     {"fill", {{"ratio", 0.375}, {"material", material}}},
+                                     {"ramp", {{"angle_deg", 12}}},
+                                     {"release", {{"pose", pose}, {"tilt_deg", 0.0}}}});
+        };
+        const auto face = build_world(scene("face"));
+        const auto tipped = build_world(scene("tipped"));
+        const auto vertex = build_world(scene("vertex"));
+        INFO(material);
+        REQUIRE(tipped->grains.size() == face->grains.size());
+        double farthest_m = 0.0;
+        for (size_t i = 0; i < face->grains.size(); ++i) {
+            const b2Vec2 a = face->shell->GetLocalPoint(face->grains[i]->GetPosition());
+            const b2Vec2 b = tipped->shell->GetLocalPoint(tipped->grains[i]->GetPosition());
+            farthest_m = std::max(farthest_m, tipped->units.to_m((a - b).Length()));
+        }
+        CHECK(farthest_m < 1e-5);
+        // The shell stands on its vertex: turned from the face by at least the balance turn.
+        const double balance_turn_rad = geom::kPi / 8.0 - 12.0 * geom::kPi / 180.0;
+        CHECK(-tipped->shell->GetAngle() > 0.9 * balance_turn_rad);
+        CHECK(std::abs(pile_offset_along_face(*tipped) - pile_offset_along_face(*vertex)) > 0.05);
+    }
+    // An empty shell has nothing to pour: the tipped release is the vertex release, run for run.
+    const RunResult empty_vertex = checked_run(test::scene_with({{"fill", {{"ratio", 0.0}}}, {"run", {{"model", "grains"}}}}));
+    const RunResult empty_tipped = checked_run(test::scene_with(
+        {{"fill", {{"ratio", 0.0}}}, {"run", {{"model", "grains"}}}, {"release", {{"pose", "tipped"}}}}));
+    CHECK(empty_tipped.measured.distance_m == empty_vertex.measured.distance_m);
+    CHECK(empty_tipped.measured.trajectory.size() == empty_vertex.measured.trajectory.size());
 }
 
 TEST_CASE("one disc per grain: energy never created and every disc stays inside", "[runs]") {

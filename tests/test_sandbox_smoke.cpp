@@ -7,11 +7,10 @@
 #include "test_helpers.h"
 
 #include <array>
-#include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
@@ -28,7 +27,10 @@ using Run = polyroll::test::CommandResult;
 
 Run run(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
-fs::path scratch(const std::string& name) { return polyroll::test::scratch_dir("sandbox-" + name, true); }
+// This file's scratch folders, created fresh: scratch("smoke") is /tmp/polyroll-test-sandbox-smoke/.
+const polyroll::test::Scratch scratch("sandbox-", true);
+
+using polyroll::test::kSandboxExe;
 
 struct Image {
     render::DecodedPng png;
@@ -72,7 +74,7 @@ TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[
     REQUIRE(which.exit_code == 0);
     const fs::path dir = scratch("smoke");
     const fs::path shot = dir / "shot.png";
-    const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE + " --screenshot " + shot.string() +
+    const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe + " --screenshot " + shot.string() +
                       " --frames 300");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -117,7 +119,7 @@ TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[
 // drawn (a --frames capture steps first instead): --bench plays at real time through it.
 TEST_CASE("the sandbox plays at real time with the physics beside the drawing", "[app][sandbox]") {
     const fs::path dir = scratch("bench");
-    const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE +
+    const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe +
                       " --bench --preset race --frames 90");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -138,7 +140,7 @@ TEST_CASE("the sandbox steps a costly scene as asked and a cheaper model only wh
     const fs::path dir = scratch("budget");
     std::ofstream(dir / "rice.json") << R"({"shell": "hexagon-large", "fill": {"ratio": 0.8, "material": "rice"},
                                            "run": {"model": "grains"}})";
-    const std::string bench = "cd " + dir.string() + " && " + sandbox_env() + kXvfb + POLYROLL_SANDBOX_EXE +
+    const std::string bench = "cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe +
                               " --bench --frames 5 --scene rice.json";
     const Run asked = run(bench);
     INFO(asked.out);
@@ -193,7 +195,7 @@ TEST_CASE("the sandbox's text fits its boxes and the status covers no ramp start
         INFO(c.size << " at UI scale " << c.scale << " " << c.extra);
         const fs::path report = dir / "layout.json";
         const Run r = run("cd " + dir.string() + " && " + sandbox_env() + "xvfb-run -a -s \"-screen 0 1920x1080x24\" " +
-                          POLYROLL_SANDBOX_EXE + " " + c.extra + " --size " + c.size + " --ui-scale " + c.scale +
+                          kSandboxExe + " " + c.extra + " --size " + c.size + " --ui-scale " + c.scale +
                           " --frames 20 --layout-report " + report.string());
         INFO(r.out);
         REQUIRE(r.exit_code == 0);
@@ -231,7 +233,7 @@ TEST_CASE("the sandbox's text fits its boxes and the status covers no ramp start
 
 TEST_CASE("without a display the sandbox renders the default scene headless and says where", "[app][sandbox]") {
     const fs::path dir = scratch("fallback");
-    const Run r = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + POLYROLL_SANDBOX_EXE);
+    const Run r = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe);
     INFO(r.out);
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::Contains("no display") && Catch::Contains("headless"));
@@ -246,7 +248,7 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
 TEST_CASE("without a display the sandbox renders into --out and never over an earlier run", "[app][sandbox]") {
     const fs::path dir = scratch("fallback-out");
     const std::string cmd =
-        "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + POLYROLL_SANDBOX_EXE + " --out mine/";
+        "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe + " --out mine/";
     const Run first = run(cmd);
     INFO(first.out);
     REQUIRE(first.exit_code == 0);
@@ -269,23 +271,26 @@ TEST_CASE("without a display the sandbox renders into --out and never over an ea
     fs::remove_all(dir);
 }
 
+// Bad flags are refused before any window or headless render: run in a scratch folder, nothing is
+// written there (no runs/ of the headless fallback).
 TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][sandbox]") {
-    for (const std::string& args : {std::string("--preset nope"), std::string("--frames -3"),
-                                    std::string("--ui-scale 9"), std::string("--size 10x10"),
-                                    std::string("--screenshot x.png"),
-                                    // 0 frames would run forever: refused, not "unlimited".
-                                    std::string("--frames 0"), std::string("--theme light"),
-                                    std::string("--coarser 3x")}) {
-        INFO(args);
-        const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + args);
-        CHECK(r.exit_code == 2);
-        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
-        CHECK_THAT(r.out, Catch::Contains("allowed") || Catch::Contains("needs"));
-    }
+    using polyroll::test::expect_refused;
+    const fs::path dir = scratch("refused");
+    const std::string sandbox = "cd " + dir.string() + " && env -u DISPLAY " + kSandboxExe + " ";
+    const fs::path written = dir / "runs";
+    struct Refused {
+        std::string args, says;
+    };
+    for (const Refused& c : {Refused{"--preset nope", "allowed"}, Refused{"--frames -3", "allowed"},
+                             Refused{"--ui-scale 9", "allowed"}, Refused{"--size 10x10", "allowed"},
+                             Refused{"--screenshot x.png", "needs"},
+                             // 0 frames would run forever: refused, not "unlimited".
+                             Refused{"--frames 0", "allowed"}, Refused{"--theme light", "allowed"},
+                             Refused{"--coarser 3x", "allowed"}})
+        expect_refused(sandbox + c.args, {c.args + ":", c.says}, written);
     // A scene file that cannot be read: one line naming it, exit 2.
-    const Run scene = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " --scene no-such-file.json");
-    CHECK(scene.exit_code == 2);
-    CHECK(scene.out == "polyroll-sandbox: scene file no-such-file.json: cannot be read: no such file or directory\n");
+    CHECK(expect_refused(sandbox + "--scene no-such-file.json", {}, written).out ==
+          "polyroll-sandbox: scene file no-such-file.json: cannot be read: no such file or directory\n");
     // What CLI11 itself refuses reads in the program's words too, naming the value and what is allowed,
     // as polyroll's flags do ("Could not convert: --ui-scale = abc" before).
     struct Case {
@@ -302,10 +307,7 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
                           // The page's keys as flags: the page's checks, the flag named as typed.
                           Case{"--sides 99", "polyroll-sandbox: --sides 99: out of range (allowed: 3 to 64)\n"},
                           Case{"--fill abc", "polyroll-sandbox: --fill abc: not a number (allowed: from 0 to 1)\n"},
-                          Case{"--seed -1", "polyroll-sandbox: --seed -1: not a whole number (allowed: 0 to 2^64-1)\n"}}) {
-        INFO(c.args);
-        const Run r = run("env -u DISPLAY " + std::string(POLYROLL_SANDBOX_EXE) + " " + c.args);
-        CHECK(r.exit_code == 2);
-        CHECK(r.out == c.line);
-    }
+                          Case{"--seed -1", "polyroll-sandbox: --seed -1: not a whole number (allowed: 0 to 2^64-1)\n"}})
+        CHECK(expect_refused(sandbox + c.args, {}, written).out == c.line);
+    fs::remove_all(dir);
 }

@@ -104,7 +104,7 @@ TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scen
 
 TEST_CASE("the enumerations' names, one list each", "[scene][fields]") {
     CHECK(model_names() == std::vector<std::string>{"grains", "segments", "rigid", "dem3d", "auto"});
-    CHECK(release_pose_names() == std::vector<std::string>{"vertex", "face"});
+    CHECK(release_pose_names() == std::vector<std::string>{"vertex", "face", "tipped"});
     for (const std::string& n : model_names()) CHECK(to_string(*model_named(n)) == n);
     for (const std::string& n : release_pose_names()) CHECK(to_string(*release_pose_named(n)) == n);
     CHECK(!model_named("fluid"));
@@ -128,7 +128,7 @@ TEST_CASE("validation messages from the table are the ones the code always gave"
     // The checks across fields, after their section.
     CHECK(test::scene_error_of(R"({"shell": {"sides": 64}, "release": {"tilt_deg": 10}})")
               .starts_with("release.tilt_deg = 10 (from test) is too large for n = 64 at 20 degrees"));
-    CHECK(test::scene_error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face)");
+    CHECK(test::scene_error_of(R"({"release": {"pose": "edge"}})") == "release.pose = \"edge\" (from test) is not allowed (allowed: vertex, face, tipped)");
     CHECK(test::scene_error_of(R"({"fill": 5})") == "test: fill must be an object with keys ratio, material, got 5");
     CHECK(test::scene_error_of(R"({"fill": {"colour": 5}})") == "test: unknown key 'fill.colour' (allowed: ratio, material)");
     CHECK(test::scene_error_of(R"({"shell": {"sidez": 6}})").starts_with("test: unknown key 'shell.sidez' (allowed: preset, sides, "));

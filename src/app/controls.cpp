@@ -22,28 +22,34 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-// A row whose value is a member of LaneControls or of SharedControls.
-template <auto Member>
-ControlRow lane_row(std::string_view path, PanelSection section) {
-    ControlRow r;
-    r.path = path;
-    r.scope = Scope::lane;
-    r.section = section;
-    r.get = [](const LaneControls& l, const SharedControls&) { return FieldValue(l.*Member); };
-    r.put = [](LaneControls& l, SharedControls&, const FieldValue& v) {
-        l.*Member = std::get<std::decay_t<decltype(l.*Member)>>(v);
-    };
-    return r;
+// The struct a member pointer belongs to: LaneControls or SharedControls.
+template <class Pointer>
+struct MemberOf;
+template <class Owner, class Value>
+struct MemberOf<Value Owner::*> {
+    using type = Owner;
+};
+
+// Of the two structs, the one holding `Owner`'s members (const or not, as given).
+template <class Owner, class Lane, class Shared>
+auto& holder(Lane& lane, Shared& shared) {
+    if constexpr (std::is_same_v<std::remove_const_t<Lane>, Owner>) return lane;
+    else return shared;
 }
+
+// A row whose value is a member of LaneControls (a lane's control) or of SharedControls (shared).
 template <auto Member>
-ControlRow shared_row(std::string_view path, PanelSection section) {
+ControlRow row(std::string_view path, PanelSection section) {
+    using Owner = typename MemberOf<decltype(Member)>::type;
+    static_assert(std::is_same_v<Owner, LaneControls> || std::is_same_v<Owner, SharedControls>);
     ControlRow r;
     r.path = path;
-    r.scope = Scope::shared;
+    r.scope = std::is_same_v<Owner, LaneControls> ? Scope::lane : Scope::shared;
     r.section = section;
-    r.get = [](const LaneControls&, const SharedControls& c) { return FieldValue(c.*Member); };
-    r.put = [](LaneControls&, SharedControls& c, const FieldValue& v) {
-        c.*Member = std::get<std::decay_t<decltype(c.*Member)>>(v);
+    r.get = [](const LaneControls& l, const SharedControls& c) { return FieldValue(holder<Owner>(l, c).*Member); };
+    r.put = [](LaneControls& l, SharedControls& c, const FieldValue& v) {
+        auto& member = holder<Owner>(l, c).*Member;
+        member = std::get<std::decay_t<decltype(member)>>(v);
     };
     return r;
 }
@@ -69,35 +75,35 @@ using S = PanelSection;
 std::vector<ControlRow> make_rows() {
     return {
         // --- this lane: the polygon and its fill
-        with(lane_row<&LaneControls::polygon>("shell.preset", S::lane),
+        with(row<&LaneControls::polygon>("shell.preset", S::lane),
              {.note = "This lane's shell; n below can change its number of sides."}),
-        with(lane_row<&LaneControls::sides>("shell.sides", S::lane),
+        with(row<&LaneControls::sides>("shell.sides", S::lane),
              {.format = "%d", .slider_max = kSidesSliderMax}),
-        with(lane_row<&LaneControls::fill_ratio>("fill.ratio", S::lane), {.format = "%.2f"}),
-        with(lane_row<&LaneControls::material>("fill.material.preset", S::lane),
+        with(row<&LaneControls::fill_ratio>("fill.ratio", S::lane), {.format = "%.3g"}),
+        with(row<&LaneControls::material>("fill.material.preset", S::lane),
              {.note = "Friction and restitution can be changed under Advanced."}),
         // --- all lanes: the ramp and the physics
-        with(shared_row<&SharedControls::angle_deg>("ramp.angle_deg", S::ramp),
+        with(row<&SharedControls::angle_deg>("ramp.angle_deg", S::ramp),
              {.note = "All lanes.", .format = "%.1f\u00B0", .slider_max = kAngleSliderMaxDeg}),
-        with(shared_row<&SharedControls::seed>("run.seed", S::ramp),
+        with(row<&SharedControls::seed>("run.seed", S::ramp),
              {.note = "All lanes: the same seed gives the same run (as polyroll run --seed and the page's ?seed= "
                       "do); another seed, another packing of the same fill, to see how much the outcome varies.",
               .label = "seed"}),
-        with(shared_row<&SharedControls::ramp>("ramp.preset", S::physics), {.note = "All lanes roll on it."}),
-        with(shared_row<&SharedControls::pose>("release.pose", S::physics),
+        with(row<&SharedControls::ramp>("ramp.preset", S::physics), {.note = "All lanes roll on it."}),
+        with(row<&SharedControls::pose>("release.pose", S::physics),
              {.radio = {{"vertex", "on a vertex",
                          "Held on a vertex with the centre straight above it, then let go (as in the experiment)."},
                         {"face", "on a face", "Set down flat on a face, then let go."}}}),
-        shared_row<&SharedControls::model>("run.model", S::physics),
-        shared_row<&SharedControls::fidelity>("fidelity.preset", S::physics),
+        row<&SharedControls::model>("run.model", S::physics),
+        row<&SharedControls::fidelity>("fidelity.preset", S::physics),
         // --- Advanced: friction and restitution, reset by choosing a material or a ramp
-        with(lane_row<&LaneControls::grain_friction>("fill.material.friction", S::advanced),
+        with(row<&LaneControls::grain_friction>("fill.material.friction", S::advanced),
              {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
-        with(lane_row<&LaneControls::grain_restitution>("fill.material.restitution", S::advanced),
+        with(row<&LaneControls::grain_restitution>("fill.material.restitution", S::advanced),
              {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
-        with(shared_row<&SharedControls::ramp_friction>("ramp.friction", S::advanced),
+        with(row<&SharedControls::ramp_friction>("ramp.friction", S::advanced),
              {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
-        with(shared_row<&SharedControls::ramp_restitution>("ramp.restitution", S::advanced),
+        with(row<&SharedControls::ramp_restitution>("ramp.restitution", S::advanced),
              {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
     };
 }

@@ -848,10 +848,21 @@ StripLayout strip_layout(const std::vector<LaneReadout>& r, ImVec2 avail) {
     return S;
 }
 
+// Whether the table's rows, padded, would run past `height` (a large UI scale): its rows are then as
+// tall as their text, and the strip's window padding halved, so every row stays in view without a
+// scroll. The lines counted: a header when racing, every row, and the model entry's second line.
+bool readouts_tight(float height, bool racing) {
+    const float padded_row_h = ImGui::GetTextLineHeight() + 2.0f * ImGui::GetStyle().CellPadding.y + 1.0f;
+    const size_t lines = readout_rows().size() + (racing ? 1 : 0) + 1;
+    return static_cast<float>(lines) * padded_row_h > height;
+}
+
 // Readouts: one column per lane (the time is the status line's: the lanes started together).
 void readout_table(const SandboxState& s, const UiContext& ctx, const std::vector<LaneReadout>& r,
                    const StripLayout& S, float height, UiLayoutReport* report) {
     ImGui::BeginChild("table", {S.table_w, height});
+    const bool tight = readouts_tight(height, S.racing);
+    if (tight) ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, {ImGui::GetStyle().CellPadding.x, 0.0f});
     const ImGuiTableFlags tf = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
                                (S.table_fits ? ImGuiTableFlags_SizingFixedFit : ImGuiTableFlags_SizingStretchProp);
     if (ImGui::BeginTable("readouts", static_cast<int>(r.size()) + 1, tf)) {
@@ -882,6 +893,7 @@ void readout_table(const SandboxState& s, const UiContext& ctx, const std::vecto
         }
         ImGui::EndTable();
     }
+    if (tight) ImGui::PopStyleVar();
     record_window(report, "table");
     ImGui::EndChild();
 }
@@ -922,10 +934,14 @@ void energy_plot(const Measurements& m, size_t lane, const StripLayout& S, float
 void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
     ImGui::SetNextWindowPos({L.panel_w, L.height - L.plots_h});
     ImGui::SetNextWindowSize({L.width - L.panel_w, L.plots_h});
+    const ImVec2 padding = ImGui::GetStyle().WindowPadding;
+    const bool tight = readouts_tight(L.plots_h - 2.0f * padding.y, ctx.lanes->size() > 1);
+    if (tight) ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {padding.x, 0.5f * padding.y});
     ImGui::Begin("readouts", nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                      ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar);
+    if (tight) ImGui::PopStyleVar();
     const LaneSet& lanes = *ctx.lanes;
     if (!lanes.ready()) {
         ImGui::TextUnformatted(lanes.building() ? "building the scene..." : "no scene");

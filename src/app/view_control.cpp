@@ -17,13 +17,13 @@ namespace {
 
 Px centre_of(const PxRect& a) { return {a.x + a.width / 2.0f, a.y + a.height / 2.0f}; }
 
-// Room left of the ramps for the lane badges (scene_view.cpp), in design pixels.
-constexpr float kBadgeMarginDesignPx = 44.0f;
 // Room past each end of a ramp for half of its distance label ("0 m", "2.5 m") and a little air,
 // in design pixels: without it the "0 m" at the ramp's top end sat half behind the panel.
 constexpr float kLabelMarginDesignPx = 30.0f;
 // Room above the surface for a lane's polygon, in outer radii (it may rock onto a vertex).
 constexpr double kClearanceRadii = 2.4;
+// Halvings of the stacked lanes' spacing interval: well under a pixel from any start.
+constexpr int kSpacingBisections = 30;
 
 }  // namespace
 
@@ -79,19 +79,35 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
         return out;
     }
 
-    // Whole ramps, stacked: fit the first ramp into the area less the room the lanes below need,
-    // then shift each lane down by the spacing (which depends on the scale: solve twice).
+    // Whole ramps, stacked: the first ramp fitted into the area less the room the lanes below need,
+    // each lane shifted down by the spacing. The lane badges' room is the caller's (scene_view.cpp
+    // fits the ramps into the view less it); here only the distance labels' room at either end.
     const auto& s0 = lanes.front();
-    float spacing = 0.0f;
-    Camera base;
-    for (int pass = 0; pass < 2; ++pass) {
+    const auto fit_with = [&](float spacing) {
         PxRect fit = area;
-        const float left = (n > 1 ? kBadgeMarginDesignPx : kLabelMarginDesignPx) * unit;
-        fit.x += left;
-        fit.width = std::max(1.0f, fit.width - left - kLabelMarginDesignPx * unit);
+        const float margin = kLabelMarginDesignPx * unit;
+        fit.x += margin;
+        fit.width = std::max(1.0f, fit.width - 2.0f * margin);
         fit.height = std::max(1.0f, area.height - static_cast<float>(n - 1) * spacing - (n > 1 ? band : 0.0f));
-        base = render::whole_ramp_camera(s0.ramp_length_m, s0.ramp_angle_deg, kClearanceRadii * radius, fit);
-        spacing = static_cast<float>(kClearanceRadii * radius * base.px_per_m) + band;
+        return render::whole_ramp_camera(s0.ramp_length_m, s0.ramp_angle_deg, kClearanceRadii * radius, fit);
+    };
+    // The spacing a framing needs: room for a polygon above the ramp, and the band under the ramp above.
+    const auto needed = [&](const Camera& c) {
+        return static_cast<float>(kClearanceRadii * radius * c.px_per_m) + band;
+    };
+    Camera base = fit_with(0.0f);
+    float spacing = 0.0f;
+    if (n > 1) {
+        // The spacing grows with the scale and the scale shrinks as the spacing grows: the smallest
+        // spacing that is enough, by bisection, so no height is left unused under the lowest lane.
+        float lo = band, hi = needed(fit_with(band));
+        for (int i = 0; i < kSpacingBisections; ++i) {
+            const float mid = 0.5f * (lo + hi);
+            if (needed(fit_with(mid)) > mid) lo = mid;
+            else hi = mid;
+        }
+        spacing = hi;
+        base = fit_with(spacing);
     }
     out.lane_spacing_px = n > 1 ? spacing : 0.0f;
     for (size_t i = 0; i < n; ++i) {

@@ -33,8 +33,9 @@ struct LaneLayout {
 
 // Stacks one ramp per snapshot in `area`, spaced so a lane's polygon clears the ramp above it.
 // `follow`: the camera keeps the leading polygon in view (zoomed in); otherwise whole ramps.
-// `unit` is the design pixel (the ramp's drawn body and labels scale with it). With several lanes
-// the whole-ramp framing leaves a margin on the left for the lane badges.
+// `unit` is the design pixel (the ramp's drawn body and labels scale with it). The whole-ramp framing
+// leaves room at either end for the distance labels, and with several lanes none unused below the
+// lowest; room for the lane badges is the caller's to take out of `area`.
 LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const render::PxRect& area, bool follow,
                        float unit, const ViewTransform& view);
 

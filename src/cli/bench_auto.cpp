@@ -72,7 +72,7 @@ void bench_auto(const Scene& base, int repeats) {
         // The rigid model run on past lift-off: on how many of its faces the normal force it needs
         // turns negative (where a hand-back from Box2D would hand the shell over again at once).
         const models::RollingRun roll =
-            models::roll(models::rolling_body(s), models::FillMotion::frozen, models::rolling_track(s));
+            models::roll(models::rolling_body(s), models::FillMotion::frozen, models::ramp_frame(s));
         auto_total += a.best_s;
         grains_total += g.best_s;
         const auto& c = a.result.model_choice;

@@ -59,10 +59,12 @@ std::string describe_scene(const RunResult& r) {
                               ? (s.fidelity.preset.empty() ? "custom" : s.fidelity.preset) + " fidelity"
                               : to_string(ran) + " model";
     if (r.model_choice) physics = "auto model, " + physics;
-    return fmt::format("{}, {} r = {:g}, {} at {:g} deg, released on a {}, {}", shell_label(s),
+    const std::string release = s.release.pose == ReleasePose::tipped ? "filled on a face, released on a vertex"
+                                                                      : "released on a " + to_string(s.release.pose);
+    return fmt::format("{}, {} r = {:g}, {} at {:g} deg, {}, {}", shell_label(s),
                        s.fill.material.preset.empty() ? "custom material," : s.fill.material.preset + ",",
                        s.fill.ratio, s.ramp.preset.empty() ? "custom ramp" : s.ramp.preset, s.ramp.angle_deg,
-                       to_string(s.release.pose), physics);
+                       release, physics);
 }
 
 void print_summary(const RunResult& r, const std::string& out) {

@@ -22,6 +22,32 @@ void outline_rect(Layer& out, PxRect r, float width, Rgba colour, Tag tag) {
     out.shapes.push_back(segment(bl, tl, width, colour, tag));
 }
 
+// The inset's camera and its label ("close-up ×N" names the camera's magnification): the shell
+// centred in the inset or, where the label would cover it (a short inset at a large UI scale), centred
+// in the part below the label, a little smaller.
+struct Framing {
+    Camera cam;
+    std::string label;
+};
+Framing close_up_framing(const Snapshot& s, const Camera& main_cam, const CloseUpStyle& style, const FontAtlas& font) {
+    const PxRect r = style.rect;
+    const double R = outer_radius_m(s);
+    const auto framing = [&](PxRect area) {
+        const Camera cam = follow_camera(s.shell_centre_m, s.ramp_angle_deg, R, kInsetRadiusShare, area);
+        const double magnification = cam.px_per_m / main_cam.px_per_m;
+        return Framing{cam, fmt::format("close-up \u00D7{:.0f}{}", magnification, style.label_suffix)};
+    };
+    Framing whole = framing(r);
+    const float gap = 4.0f * style.unit;
+    const float label_bottom = r.y + style.label_offset.y + font.line_height(style.label_font) + gap;
+    const float label_right = r.x + style.label_offset.x + font.text_width(whole.label, style.label_font) + gap;
+    const float shell_px = static_cast<float>(R * whole.cam.px_per_m);
+    const bool covered = whole.cam.anchor.y - shell_px < label_bottom && whole.cam.anchor.x - shell_px < label_right;
+    const float below_h = r.y + r.height - label_bottom;
+    if (!covered || below_h <= 0.0f) return whole;
+    return framing({r.x, label_bottom, r.width, below_h});
+}
+
 }  // namespace
 
 CloseUpStyle close_up_style(PxRect rect, float unit) {
@@ -41,7 +67,8 @@ void draw_close_up(const Snapshot& s, const Camera& main_cam, const CloseUpStyle
     const PxRect r = style.rect;
     const float u = style.unit;
     const double R = outer_radius_m(s);
-    const Camera cam = follow_camera(s.shell_centre_m, s.ramp_angle_deg, R, kInsetRadiusShare, r);
+    const FontSpec f = style.label_font;
+    const auto [cam, text] = close_up_framing(s, main_cam, style, font);
 
     // Where the close-up looks, marked in the main view.
     {
@@ -63,9 +90,6 @@ void draw_close_up(const Snapshot& s, const Camera& main_cam, const CloseUpStyle
 
     Layer& frame = dl.new_layer();
     outline_rect(frame, r, std::max(1.0f, 2.5f * u), style.border, Tag::inset_frame);
-    const FontSpec f = style.label_font;
-    const std::string text =
-        fmt::format("close-up \u00D7{:.0f}{}", cam.px_per_m / main_cam.px_per_m, style.label_suffix);
     font.layout(text, f, {r.x + style.label_offset.x, r.y + style.label_offset.y + font.ascent(f)}, palette::text_dim,
                 frame.glyphs);
 }

@@ -2,10 +2,13 @@
 #include "sim/auto_run.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "sim/model_registry.h"
 #include "sim/models/free_body_run.h"
 #include "sim/ramp_profile.h"
+#include "sim/scene_names.h"
 
 namespace polyroll {
 
@@ -17,7 +20,9 @@ const char* auto_rule_description() {
            "where it would lift off or slip; grains for a partly filled one or a curved track";
 }
 
-ModelChoice choose_model(const Scene& scene) {
+namespace {
+
+ModelChoice apply_rule(const Scene& scene) {
     ModelChoice c;
     if (ramp_is_curved(scene.ramp)) {
         // The rigid model's closed forms assume one slope; the engine turns gravity with the shell.
@@ -46,6 +51,23 @@ ModelChoice choose_model(const Scene& scene) {
             "filled shell: the reduced models miss its terminal velocity by 27% (rigid) and 34% (segments), the "
             "grains by 5.6% (trade study: docs/tradeoff/tradeoff.md)";
     }
+    return c;
+}
+
+// The registry's row says whether auto may use a model (ModelTraits::auto_may_pick): a rule that
+// names another is a mistake in this file, not in the scene.
+Model allowed(Model m) {
+    if (!model_traits(m).auto_may_pick)
+        throw std::logic_error("auto's rule picked the " + to_string(m) + " model, which the model registry keeps from it");
+    return m;
+}
+
+}  // namespace
+
+ModelChoice choose_model(const Scene& scene) {
+    ModelChoice c = apply_rule(scene);
+    c.model = allowed(c.model);
+    if (c.then) c.then = allowed(*c.then);
     return c;
 }
 

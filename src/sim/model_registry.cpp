@@ -172,7 +172,11 @@ std::vector<Model> models_a_run_may_use(const Scene& scene) {
 bool may_step_grains(const Scene& scene) {
     if (scene.fill.ratio <= 0.0) return false;
     const std::vector<Model> models = models_a_run_may_use(scene);
-    return std::any_of(models.begin(), models.end(), [](Model m) { return model_traits(m).has_grains; });
+    // The 3D reference has grains too, but Yade steps them in its own process, not polyroll.
+    return std::any_of(models.begin(), models.end(), [](Model m) {
+        const ModelTraits& t = model_traits(m);
+        return t.engine && t.has_grains;
+    });
 }
 
 const ModelTraits& model_traits(Model model) { return row(model).traits; }

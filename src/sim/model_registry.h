@@ -48,7 +48,8 @@ struct ModelTraits {
     // the shell; the reduced models' closed forms assume one slope and refuse such a scene.
     bool follows_curved_track = false;
     RunCost cost = RunCost::computed_whole;
-    // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it.
+    // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it: the
+    // rule refuses to pick a model without it.
     bool auto_may_pick = false;
 };
 
@@ -70,8 +71,9 @@ std::string model_help(const std::vector<Model>& models);
 // The models a run of the scene may use, in order: the one it names, or for auto the one its choice
 // starts with and the one it may hand over to.
 std::vector<Model> models_a_run_may_use(const Scene& scene);
-// Whether a run of the scene may step grains one by one: it has a fill and one of its models has
-// grains (ModelTraits::has_grains). What the window's physics budget counts.
+// Whether a run of the scene may have Box2D step grains one by one in this process: it has a fill
+// and one of its models has grains in the engine (ModelTraits::engine and has_grains; not the 3D
+// reference, whose grains Yade steps). What the window's physics budget counts.
 bool may_step_grains(const Scene& scene);
 // Throws InputError for Model::automatic, which is a rule, not a model: ask the result (model_that_ran).
 const ModelTraits& model_traits(Model model);

@@ -59,11 +59,14 @@ struct RampParams {
     double curvature_deg_per_m = 0.0;
 };
 
-enum class ReleasePose { vertex, face };
+// vertex: poured and let go on the downhill vertex; face: poured and let go on face (0, 1);
+// tipped: poured with the shell on face (0, 1), then shell and pile turned together onto the
+// downhill vertex, as a hand that fills the box on the table and then stands it on its edge.
+enum class ReleasePose { vertex, face, tipped };
 
 struct ReleaseParams {
     ReleasePose pose = ReleasePose::vertex;
-    // Vertex release: rotation past the balance point (centre of the polygon straight above the
+    // Vertex and tipped releases: rotation past the balance point (centre of the polygon straight above the
     // pivot vertex), downhill. A hand never lets go exactly at balance.
     double tilt_deg = 0.0;
 };

@@ -193,7 +193,8 @@ std::vector<SceneField> make_table() {
         // --- release
         Row("release.pose", T::choice, member<&Scene::release, &ReleaseParams::pose>())
             .choices<release_pose_names, release_pose_named>().flag("--release", 9).label("release")
-            .help("release pose: held on a vertex with the centre above it, or set down on a face"),
+            .help("release pose: filled and held on a vertex with the centre above it (vertex), filled and set down "
+                  "on a face (face), or filled on a face and then tipped onto the vertex (tipped)"),
         Row("release.tilt_deg", T::number, member<&Scene::release, &ReleaseParams::tilt_deg>())
             .range(0.0, 30.0).unit("degrees").flag("--tilt", 10)
             .help("release tilt past balance"),

@@ -8,9 +8,10 @@ namespace polyroll {
 namespace {
 
 // Each enum value beside its name; the lists below and the lookups are built from these alone.
-constexpr std::array<std::pair<ReleasePose, std::string_view>, 2> kPoses = {{
+constexpr std::array<std::pair<ReleasePose, std::string_view>, 3> kPoses = {{
     {ReleasePose::vertex, "vertex"},
     {ReleasePose::face, "face"},
+    {ReleasePose::tipped, "tipped"},
 }};
 constexpr std::array<std::pair<Model, std::string_view>, 5> kModels = {{
     {Model::grains, "grains"},

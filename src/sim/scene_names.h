@@ -14,7 +14,7 @@ namespace polyroll {
 std::string to_string(ReleasePose pose);
 std::string to_string(Model model);
 
-// Every value's name, in the enum's order: "vertex", "face" / "grains", "segments", "rigid", "auto".
+// Every value's name, in the enum's order: "vertex", "face", "tipped" / "grains", "segments", "rigid", "dem3d", "auto".
 const std::vector<std::string>& release_pose_names();
 const std::vector<std::string>& model_names();
 

@@ -18,6 +18,7 @@
 #include "sim/ramp_profile.h"
 #include "sim/scene_names.h"
 #include "sim/scene_fields.h"
+#include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
 namespace polyroll {
@@ -83,7 +84,7 @@ void check_grain_count(const Scene& s, const Where& where) {
 void check_release_tilt(const Scene& s, const Where& where) {
     const double face_turn_deg = 360.0 / s.shell.sides;
     const double balance_turn_deg =
-        s.release.pose == ReleasePose::vertex ? std::max(0.0, 180.0 / s.shell.sides - s.ramp.angle_deg) : 0.0;
+        released_on_vertex(s.release) ? std::max(0.0, 180.0 / s.shell.sides - s.ramp.angle_deg) : 0.0;
     const double max_tilt_deg = 0.9 * (face_turn_deg - balance_turn_deg);
     if (s.release.tilt_deg > max_tilt_deg)
         throw InputError(fmt::format(

@@ -22,7 +22,7 @@ ShellPose release_pose(const Scene& scene, const ShellProperties& p) {
     const Vec2 pivot = {release_pivot_x_m(p), 0.0};
     const Vec2 centre_from_pivot = {-p.outer_side_m / 2.0, p.outer_apothem_m};
     double rotation = 0.0;  // clockwise, about the pivot
-    if (scene.release.pose == ReleasePose::vertex) {
+    if (released_on_vertex(scene.release)) {
         // Turn about the downhill vertex until the centre is straight above it (the line from
         // pivot to centre leans pi/n uphill of the ramp normal, the vertical theta), then past it
         // by the tilt. Steeper than pi/n the polygon tips from its face anyway: tilt alone.
@@ -33,6 +33,14 @@ ShellPose release_pose(const Scene& scene, const ShellProperties& p) {
     ShellPose pose;
     pose.angle_rad = -rotation;
     pose.centre_m = pivot + geom::rotate(centre_from_pivot, -rotation);
+    return pose;
+}
+
+ShellPose pour_pose(const Scene& scene, const ShellProperties& p) {
+    // An empty shell has nothing to pour: it is tipped before the hand lets go, so it starts as held.
+    if (scene.release.pose != ReleasePose::tipped || scene.fill.ratio == 0.0) return release_pose(scene, p);
+    ShellPose pose;
+    pose.centre_m = {release_pivot_x_m(p) - p.outer_side_m / 2.0, p.outer_apothem_m};
     return pose;
 }
 

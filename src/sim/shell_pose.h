@@ -36,8 +36,14 @@ inline double end_centre_x_m(const Scene& scene, const ShellProperties& shell) {
     return scene.ramp.length_m - shell.outer_circumradius_m;
 }
 
-// The release pose: resting on face (0, 1), or on its downhill vertex turned past balance.
+// The release pose: resting on face (0, 1), or on its downhill vertex turned past balance (the
+// vertex and tipped releases).
 ShellPose release_pose(const Scene& scene, const ShellProperties& shell);
+// Where the shell is held while the grains are poured and settle: resting flat on face (0, 1) for
+// the tipped release of a shell with a fill, the release pose otherwise.
+ShellPose pour_pose(const Scene& scene, const ShellProperties& shell);
+// Whether the release stands the shell on its downhill vertex (vertex and tipped).
+inline bool released_on_vertex(const ReleaseParams& release) { return release.pose != ReleasePose::face; }
 
 // The pose of a rigid polygon rolling without slipping: the centre `position_m` down the ramp from
 // its release point and turned by `angle_deg` (positive rolling down) since release, its lowest

@@ -87,10 +87,10 @@ std::unique_ptr<SimWorld> build_world(const Scene& scene, std::vector<ForceHook>
     using namespace world_parts;
     std::unique_ptr<SimWorld> w = empty_world(scene, std::move(hooks));
     add_ramp(*w);
-    const ShellPose pose = release_pose(scene, w->shell_props);
+    const ShellPose pose = pour_pose(scene, w->shell_props);
     add_shell(*w, pose);  // held static while the grains settle
     pour_grains(*w, pose);
-    settle_grains(*w);
+    settle_grains(*w);  // and, for the tipped release, turns shell and pile onto the vertex
     release_shell(*w, {0.0, 0.0}, 0.0);
     // Measure from where the engine holds the shell (floats), so the first row reads exactly 0.
     w->start_centre_x_m = w->units.to_m(w->shell->GetPosition().x);

@@ -56,6 +56,26 @@ double balance_on_pivot(SimWorld& w, double theta) {
     return delta * 180.0 / geom::kPi;
 }
 
+// The tipped release: the pile settled with the shell flat on its face; shell and pile turn
+// together, as one rigid body, about the downhill vertex into the vertex release's pose. The pile's
+// surface then leans by the turn against the horizontal, as a box filled on the table and stood on
+// its edge: the grains start to flow only when the hand lets go.
+void tip_onto_vertex(SimWorld& w) {
+    const EngineUnits& u = w.units;
+    const double delta = release_pose(w.scene, w.shell_props).angle_rad - static_cast<double>(w.shell->GetAngle());
+    const geom::Vec2 v1 = w.outer_local_m[1];
+    const b2Vec2 pivot = w.shell->GetWorldPoint(b2Vec2(static_cast<float>(u.to_units(v1.x)),
+                                                       static_cast<float>(u.to_units(v1.y))));
+    auto turn = [&](b2Body* b) {
+        const b2Vec2 rel = b->GetPosition() - pivot;
+        const geom::Vec2 r = geom::rotate({rel.x, rel.y}, delta);
+        b->SetTransform(pivot + b2Vec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                        b->GetAngle() + static_cast<float>(delta));
+    };
+    turn(w.shell);
+    for (b2Body* b : w.grains) turn(b);
+}
+
 }  // namespace
 
 void pour_grains(SimWorld& w, const ShellPose& pose) {
@@ -86,8 +106,12 @@ void pour_grains(SimWorld& w, const ShellPose& pose) {
 }
 
 void settle_grains(SimWorld& w) {
-    if (w.grains.empty()) return;
     const Scene& scene = w.scene;
+    if (w.grains.empty()) {
+        // A fill too small for one grain was still held on its face (pour_pose): tip it.
+        if (scene.release.pose == ReleasePose::tipped && scene.fill.ratio > 0.0) tip_onto_vertex(w);
+        return;
+    }
     const double dt = 1.0 / scene.fidelity.step_hz;
     const double rest_units = w.units.to_units(scene.run.rest_speed_m_s);
     const int max_steps = static_cast<int>(std::ceil(scene.run.settle_time_s * scene.fidelity.step_hz));
@@ -110,8 +134,9 @@ void settle_grains(SimWorld& w) {
         b->SetLinearVelocity(b2Vec2_zero);
         b->SetAngularVelocity(0.0f);
     }
+    if (scene.release.pose == ReleasePose::tipped) tip_onto_vertex(w);
     const double theta = ramp_angle_rad(w);
-    if (scene.release.pose == ReleasePose::vertex && theta < geom::kPi / w.shell_props.sides)
+    if (released_on_vertex(scene.release) && theta < geom::kPi / w.shell_props.sides)
         w.balance_correction_deg = balance_on_pivot(w, theta);
 }
 

@@ -23,8 +23,9 @@ void add_shell(SimWorld& w, const ShellPose& pose);
 // The fill planned in the shell's frame with gravity as seen from `pose`, as dynamic grains.
 void pour_grains(SimWorld& w, const ShellPose& pose);
 
-// The hand holds the polygon while the pile comes to rest; then, released on a vertex, the whole
-// thing is turned to balance on it (balance_on_pivot in world_fill.cpp).
+// The hand holds the polygon while the pile comes to rest; then, for the tipped release, shell and
+// pile turn together from the face onto the vertex (tip_onto_vertex), and, released on a vertex,
+// the whole thing is turned to balance on it (balance_on_pivot in world_fill.cpp).
 void settle_grains(SimWorld& w);
 
 // Lets go: the shell becomes dynamic with the real box's mass and inertia, moving

@@ -5,6 +5,7 @@
 
 #include "sim/fill_plan.h"
 #include "sim/geometry.h"
+#include "sim/scene_names.h"
 #include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
@@ -33,6 +34,9 @@ json points(const std::vector<geom::Vec2>& poly) {
 
 json script_input(const Scene& s, double frames_hz) {
     const ShellProperties p = shell_properties(s.shell);
+    // The grains are poured with the shell held in the pour pose; the tipped release then turns shell
+    // and pile about the pivot vertex by tip_rad into the release pose.
+    const ShellPose pour = pour_pose(s, p);
     const ShellPose release = release_pose(s, p);
     // The shell's moment about an axis across the roll axis: walls and lids as a thin prism of the
     // outer radius and the box's length. Only for completeness: the script blocks those rotations.
@@ -55,10 +59,11 @@ json script_input(const Scene& s, double frames_hz) {
                   {"mass_kg", p.mass_kg},
                   {"inertia_roll_kg_m2", p.inertia_kg_m2},
                   {"inertia_cross_kg_m2", cross_inertia}};
-    j["release"] = {{"centre_m", {release.centre_m.x, release.centre_m.y}},
-                    {"angle_rad", release.angle_rad},
+    j["release"] = {{"centre_m", {pour.centre_m.x, pour.centre_m.y}},
+                    {"angle_rad", pour.angle_rad},
+                    {"tip_rad", release.angle_rad - pour.angle_rad},
                     {"tilt_deg", s.release.tilt_deg},
-                    {"pose", s.release.pose == ReleasePose::vertex ? "vertex" : "face"}};
+                    {"pose", to_string(s.release.pose)}};
     j["pivot_vertex"] = 1;  // release_pose stands the shell on vertex 1, the downhill end of face (0, 1)
     j["end_centre_x_m"] = end_centre_x_m(s, p);
     const MaterialParams& m = s.fill.material;

@@ -89,6 +89,7 @@ NUMBERS = {
     'shell.inertia_roll_kg_m2': ('inertia_roll_kg_m2', 0, None, True),
     'shell.inertia_cross_kg_m2': ('inertia_cross_kg_m2', 0, None, True),
     'release.angle_rad': ('angle_rad', None, None, False),
+    'release.tip_rad': ('tip_rad', -2 * math.pi, 2 * math.pi, False),
     'release.tilt_deg': ('tilt_deg', -90, 90, False),
     'end_centre_x_m': ('end_centre_x_m', None, None, False),
     'fill.grain_diameter_m': ('grain_diameter_m', 0, None, True),
@@ -126,8 +127,8 @@ def load_config(path):
     c['inner'] = _points(cfg, 'shell.inner_vertices_m', n)
     c['centre'] = _points(cfg, 'release.centre_m')[0]
     c['pose'] = _field(cfg, 'release.pose', str)
-    if c['pose'] not in ('vertex', 'face'):
-        raise InputError('release.pose must be "vertex" or "face"')
+    if c['pose'] not in ('vertex', 'face', 'tipped'):
+        raise InputError('release.pose must be "vertex", "face" or "tipped"')
     return c
 
 
@@ -409,8 +410,7 @@ def balance_turn(c, sc):
     neighbouring face reaches the ramp."""
     from yade import O
     th = math.radians(release_slope_deg(c))
-    piv = rot(c['outer'][c['pivot_vertex']], c['angle_rad'])
-    piv = (piv[0] + c['centre'][0], piv[1] + c['centre'][1])
+    piv = pivot_point(c)
     bodies = [(c['mass_kg'], O.bodies[sc['clump']].state.pos)] + \
         [(O.bodies[i].state.mass, O.bodies[i].state.pos) for i in sc['grains']]
     m = sum(b[0] for b in bodies)
@@ -436,12 +436,30 @@ def move_rigidly(body_ids, pivot, delta, dy):
         st.vel = st.angVel = st.angMom = yade.Vector3(0, 0, 0)
 
 
+def pivot_point(c):
+    """The pivot vertex's position (x, y) in the global frame with the shell at c's pose."""
+    piv = rot(c['outer'][c['pivot_vertex']], c['angle_rad'])
+    return (piv[0] + c['centre'][0], piv[1] + c['centre'][1])
+
+
+def tip_onto_vertex(c, everything):
+    """The tipped release: shell and settled pile turn together about the pivot vertex from the face
+    they were filled on into the vertex pose (tip_rad); c's pose follows them."""
+    piv = pivot_point(c)
+    move_rigidly(everything, piv, c['tip_rad'], 0.0)
+    q = rot((c['centre'][0] - piv[0], c['centre'][1] - piv[1]), c['tip_rad'])
+    c['centre'] = (piv[0] + q[0], piv[1] + q[1])
+    c['angle_rad'] += c['tip_rad']
+
+
 def release(c, sc):
-    """Turn (vertex release), set the shell down on the ramp, zero all motion, free the in-plane DOFs.
-    Returns the balance correction (deg) and the shell's angle at t = 0."""
+    """Tip (tipped release), turn to balance (vertex and tipped), set the shell down on the ramp, zero
+    all motion, free the in-plane DOFs. Returns the balance correction (deg) and the shell's angle at t = 0."""
     from yade import O
     everything = [sc['clump']] + list(sc['members']) + list(sc['grains'])
-    delta, pivot = balance_turn(c, sc) if c['pose'] == 'vertex' else (0.0, (0.0, 0.0))
+    if c['pose'] == 'tipped':
+        tip_onto_vertex(c, everything)
+    delta, pivot = balance_turn(c, sc) if c['pose'] != 'face' else (0.0, (0.0, 0.0))
     move_rigidly(everything, pivot, delta, 0.0)
     # The edge spheres round the vertices off: close the gap (or overlap) left to the ramp.
     gap = min(O.bodies[i].state.pos[1] - O.bodies[i].shape.radius for i in sc['edges'])

@@ -11,6 +11,7 @@
 
 #include "sim/fill_plan.h"
 #include "sim/geometry.h"
+#include "sim/sample_clock.h"
 #include "sim/shell_pose.h"
 #include "sim/shell_properties.h"
 
@@ -105,7 +106,7 @@ public:
         if (step >= next_sample_step_) {
             m_.trajectory.push_back(now_);
             ++samples_taken_;
-            next_sample_step_ = static_cast<long>(std::ceil(samples_taken_ * scene_.fidelity.step_hz / scene_.run.sample_hz - 1e-9));
+            next_sample_step_ = first_step_at(samples_taken_, scene_.fidelity.step_hz, scene_.run.sample_hz);
             m_.grains_inside = r.grains_inside;
             if (r.grains_inside < rules_.grains) {
                 diverge(fmt::format("{} of {} grains left the box through its walls or lids; use a shorter "

@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "sim/models/pivot_motion.h"
 #include "sim/models/slide_motion.h"
@@ -95,8 +98,10 @@ double positive_for(double h, double h1, double h2, double h3, double k4, double
 
 class FreeBodySolver {
 public:
-    FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start);
+    FreeBodySolver(const FreeBody& body, const RampFrame& frame, const FreeBodyStart& start);
     FreeBodyMotion run();
+    // The row a run recording every tracker step would have at `step` (see FreeBodyMotion::row_at_step).
+    std::optional<FreeBodyRow> row_at_step(long step, double step_hz, long first_step) const;
 
 private:
     struct Contact {
@@ -135,12 +140,15 @@ private:
     // the pivot, psi = beta + a - theta + pi/2 for the contact vertex's beta.
     double psi_of(double a) const { return beta_[index(on_)] + a - theta_ + kPi / 2.0; }
     // The state at tau into a series begun at psi0 from angle a0, and the body's turn there.
-    State stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const;
+    // `on` and `pivot_x` are those of the stretch (on_, pivot_x_ as it began): the stretch is kept
+    // for the dense output after they change.
+    State stick_state(const PendulumSeries& ps, long on, double pivot_x, double psi0, double a0, double tau,
+                      Turn& t) const;
     // The same for a sliding vertex (slide_motion.h), whose direction from the centre is phi = beta + a.
-    State slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const;
+    State slide_state(const SlideSeries& ss, long on, double phi0, double a0, double tau, Turn& t) const;
     // The state on the ramp with the contact vertex in direction (c_phi, s_phi) from the centre: the
     // body's turn, its y and vy (the vertex on the ramp); x, vx, a and w as given.
-    State on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const;
+    State on_vertex(long on, double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const;
 
     void stick_stretch();
     void slide_stretch();
@@ -158,14 +166,14 @@ private:
     void settle_on(long j);
 
     TrajectorySample sample(const State& s, double t) const;
-    double sample_time(long row) const;
-    template <class At>
-    void emit_rows_before(double t_end, At state_at);
+    // Rows for the sample times before t_end of the stretch begun at t_, whose state tau into it is
+    // state_at(tau); the stretch is kept as the run's dense output.
+    void emit_rows_before(double t_end, std::function<State(double)> state_at);
     void note_landing(long j, double kinetic_before_J);
     void finish(Behaviour b);
     void stop_unsupported(const std::string& why);
 
-    const FreeBodyRules& rules_;
+    const RampFrame frame_;
     int n_ = 0;
     double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
     double inv_m_ = 0.0, inv_i_ = 0.0;
@@ -187,10 +195,18 @@ private:
     long next_row_ = 0;
     int chatter_ = 0;  // stretches in a row shorter than kChatterS
     bool running_ = true;
+    bool finished_ = false;  // ended by finish() (not unsupported)
     FreeBodyMotion out_;
+    // The run's stretches in time order, each from t0 to t_end: the dense output.
+    struct Stretch {
+        double t0 = 0.0, t_end = 0.0;
+        long landed = 1;
+        std::function<State(double)> at;
+    };
+    std::vector<Stretch> stretches_;
 };
 
-FreeBodySolver::FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start) : rules_(rules) {
+FreeBodySolver::FreeBodySolver(const FreeBody& body, const RampFrame& frame, const FreeBodyStart& start) : frame_(frame) {
     n_ = static_cast<int>(body.outer_m.size());
     radius_ = geom::length(body.outer_m[0]);
     for (const Vec2& v : body.outer_m) {
@@ -201,14 +217,14 @@ FreeBodySolver::FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules,
     inertia_ = body.inertia_kg_m2;
     inv_m_ = 1.0 / m_;
     inv_i_ = 1.0 / inertia_;
-    mu_ = rules.friction;
-    theta_ = rules.angle_deg * kPi / 180.0;
+    mu_ = frame.friction;
+    theta_ = frame.angle_deg * kPi / 180.0;
     cos_theta_ = std::cos(theta_);
     sin_theta_ = std::sin(theta_);
-    gx_ = rules.gravity_m_s2 * sin_theta_;
-    gy_ = -rules.gravity_m_s2 * cos_theta_;
+    gx_ = frame.gravity_m_s2 * sin_theta_;
+    gy_ = -frame.gravity_m_s2 * cos_theta_;
     g_cos_ = -gy_;
-    pendulum_a_ = m_ * rules.gravity_m_s2 * radius_ / (inertia_ + m_ * radius_ * radius_);
+    pendulum_a_ = m_ * frame.gravity_m_s2 * radius_ / (inertia_ + m_ * radius_ * radius_);
     up_ = {-sin_theta_, cos_theta_};
     start_x_ = start.release.centre_m.x;
     start_a_ = start.release.angle_rad;
@@ -219,9 +235,9 @@ FreeBodySolver::FreeBodySolver(const FreeBody& body, const FreeBodyRules& rules,
     landed_ = start.landed_vertex;
     out_.measured = start.measured;
     out_.measured.behaviour = Behaviour::running;
-    next_row_ = start.first_row >= 0 ? start.first_row : static_cast<long>(out_.measured.trajectory.size());
+    next_row_ = static_cast<long>(out_.measured.trajectory.size());
     // Booked potential = M g (up . centre) - offset, continuous with the records so far.
-    potential_offset_J_ = m_ * rules.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
+    potential_offset_J_ = m_ * frame.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
 }
 
 FreeBodySolver::Contact FreeBodySolver::contact(const State& s, Phase p, Vec2 r) const {
@@ -279,9 +295,9 @@ double FreeBodySolver::event_value(const State& s, Phase p, Event e, Turn t, con
         }
         case Event::grip:
             return p == Phase::slide ? vertex_velocity(s, arm(on_, t)).x * slip_sign_ : kNever;
-        case Event::end: return rules_.end_centre_x_m - s.x;
+        case Event::end: return frame_.end_centre_x_m - s.x;
         case Event::rest:
-            return std::max(std::hypot(s.vx, s.vy), std::fabs(s.w) * radius_) - rules_.rest_speed_m_s;
+            return std::max(std::hypot(s.vx, s.vy), std::fabs(s.w) * radius_) - frame_.rest_speed_m_s;
         case Event::none: break;
     }
     return kNever;
@@ -294,21 +310,14 @@ TrajectorySample FreeBodySolver::sample(const State& s, double t) const {
     r.speed_m_s = s.vx;
     r.angle_deg = -(s.a - start_a_) * 180.0 / kPi;
     r.kinetic_J = 0.5 * m_ * (s.vx * s.vx + s.vy * s.vy) + 0.5 * inertia_ * s.w * s.w;
-    r.potential_J = m_ * rules_.gravity_m_s2 * geom::dot({s.x, s.y}, up_) - potential_offset_J_;
+    r.potential_J = m_ * frame_.gravity_m_s2 * geom::dot({s.x, s.y}, up_) - potential_offset_J_;
     r.dissipated_J = -(r.kinetic_J + r.potential_J);
     return r;
 }
 
-double FreeBodySolver::sample_time(long row) const {
-    // The tracker's rule (tracker.cpp): the first grid step at or after row / sample_hz.
-    return std::ceil(static_cast<double>(row) * rules_.sample_grid_hz / rules_.sample_hz - 1e-9) /
-           rules_.sample_grid_hz;
-}
-
-template <class At>
-void FreeBodySolver::emit_rows_before(double t_end, At state_at) {
+void FreeBodySolver::emit_rows_before(double t_end, std::function<State(double)> state_at) {
     for (;;) {
-        const double ts = sample_time(next_row_);
+        const double ts = frame_.sample_time(next_row_);
         if (ts >= t_end) break;
         const State s = state_at(std::max(0.0, ts - t_));
         out_.measured.trajectory.push_back(sample(s, ts));
@@ -316,6 +325,7 @@ void FreeBodySolver::emit_rows_before(double t_end, At state_at) {
         out_.landed_vertices.push_back(landed_);
         ++next_row_;
     }
+    stretches_.push_back({t_, t_end, landed_, std::move(state_at)});
 }
 
 void FreeBodySolver::note_landing(long j, double kinetic_before_J) {
@@ -332,6 +342,7 @@ void FreeBodySolver::note_landing(long j, double kinetic_before_J) {
 
 void FreeBodySolver::finish(Behaviour b) {
     running_ = false;
+    finished_ = true;
     Measurements& m = out_.measured;
     m.behaviour = b;
     m.end_time_s = t_;
@@ -415,13 +426,15 @@ void FreeBodySolver::settle_on(long j) {
     }
 }
 
-State FreeBodySolver::on_vertex(double c_phi, double s_phi, double x, double vx, double a, double w, Turn& t) const {
-    const Vec2 u = unit_[index(on_)];  // a = phi - beta
+State FreeBodySolver::on_vertex(long on, double c_phi, double s_phi, double x, double vx, double a, double w,
+                                Turn& t) const {
+    const Vec2 u = unit_[index(on)];  // a = phi - beta
     t = {c_phi * u.x + s_phi * u.y, s_phi * u.x - c_phi * u.y};
     return {x, -radius_ * s_phi, a, vx, -w * radius_ * c_phi, w};
 }
 
-State FreeBodySolver::stick_state(const PendulumSeries& ps, double psi0, double a0, double tau, Turn& t) const {
+State FreeBodySolver::stick_state(const PendulumSeries& ps, long on, double pivot_x, double psi0, double a0,
+                                  double tau, Turn& t) const {
     double psi = 0.0, rate = 0.0, sin_psi = 0.0, cos_psi = 0.0;
     ps.psi_and_rate(tau, psi, rate);
     ps.sin_cos_psi(tau, sin_psi, cos_psi);
@@ -429,19 +442,20 @@ State FreeBodySolver::stick_state(const PendulumSeries& ps, double psi0, double 
     // where that puts the vertex on the pivot, moving about it.
     const double c_phi = sin_psi * cos_theta_ + cos_psi * sin_theta_;
     const double s_phi = sin_psi * sin_theta_ - cos_psi * cos_theta_;
-    return on_vertex(c_phi, s_phi, pivot_x_ - radius_ * c_phi, rate * radius_ * s_phi, a0 + (psi - psi0), rate, t);
+    return on_vertex(on, c_phi, s_phi, pivot_x - radius_ * c_phi, rate * radius_ * s_phi, a0 + (psi - psi0), rate, t);
 }
 
-State FreeBodySolver::slide_state(const SlideSeries& ss, double phi0, double a0, double tau, Turn& t) const {
+State FreeBodySolver::slide_state(const SlideSeries& ss, long on, double phi0, double a0, double tau, Turn& t) const {
     const SlideSeries::Point q = ss.at(tau);
-    return on_vertex(q.cos_phi, q.sin_phi, q.x_m, q.vx_m_s, a0 + (q.phi - phi0), q.omega, t);
+    return on_vertex(on, q.cos_phi, q.sin_phi, q.x_m, q.vx_m_s, a0 + (q.phi - phi0), q.omega, t);
 }
 
 void FreeBodySolver::stick_stretch() {
     const double a0 = s_.a, psi0 = psi_of(a0);
-    const PendulumSeries ps(psi0, s_.w, pendulum_a_);
-    follow(Phase::stick, ps.accurate_step_s(),
-           [&](double tau, Turn& t) { return stick_state(ps, psi0, a0, tau, t); });
+    const auto ps = std::make_shared<const PendulumSeries>(psi0, s_.w, pendulum_a_);
+    follow(Phase::stick, ps->accurate_step_s(), [this, ps, on = on_, pivot_x = pivot_x_, psi0, a0](double tau, Turn& t) {
+        return stick_state(*ps, on, pivot_x, psi0, a0, tau, t);
+    });
 }
 
 void FreeBodySolver::slide_stretch() {
@@ -453,15 +467,16 @@ void FreeBodySolver::slide_stretch() {
     b.friction_ratio = -mu_ * slip_sign_;
     b.gravity_along_m_s2 = gx_;
     b.gravity_normal_m_s2 = g_cos_;
-    const SlideSeries ss(b, phi0, s_.w, s_.x, s_.vx);
-    follow(Phase::slide, ss.accurate_step_s(),
-           [&](double tau, Turn& t) { return slide_state(ss, phi0, a0, tau, t); });
+    const auto ss = std::make_shared<const SlideSeries>(b, phi0, s_.w, s_.x, s_.vx);
+    follow(Phase::slide, ss->accurate_step_s(), [this, ss, on = on_, phi0, a0](double tau, Turn& t) {
+        return slide_state(*ss, on, phi0, a0, tau, t);
+    });
 }
 
 template <class StateAt>
 void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
     // Each event that holds at a grid point is traced back to where it began, and the earliest wins.
-    const double span = std::min(span_s, rules_.time_limit_s - t_);
+    const double span = std::min(span_s, frame_.time_limit_s - t_);
     Turn turn0;
     State s0 = state_at(0.0, turn0);
     std::array<double, std::size(kContactEvents)> v0{};
@@ -516,8 +531,11 @@ void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
         }
     }
     if (e == Event::none) tau = span;
+    emit_rows_before(t_ + tau, [state_at](double dt) {
+        Turn unused;
+        return state_at(dt, unused);
+    });
     Turn unused;
-    emit_rows_before(t_ + tau, [&](double dt) { return state_at(dt, unused); });
     s_ = state_at(tau, unused);
     t_ += tau;
     after_contact_event(e);
@@ -553,7 +571,7 @@ void FreeBodySolver::after_contact_event(Event e) {
         case Event::end: finish(Behaviour::rolled_to_end); break;
         case Event::rest: stop_unsupported("the shell comes to rest on the ramp"); break;
         case Event::none:
-            if (t_ >= rules_.time_limit_s) finish(Behaviour::time_limit);
+            if (t_ >= frame_.time_limit_s) finish(Behaviour::time_limit);
             break;
     }
 }
@@ -571,8 +589,8 @@ void FreeBodySolver::flight_stretch() {
     const State s0 = s_;
     const double curve = g_cos_ + radius_ * s0.w * s0.w;
     const double d_turn = kPi / n_ / std::max(std::fabs(s0.w), 1e-9);
-    const double left = rules_.time_limit_s - t_;
-    const double end_x = rules_.end_centre_x_m;
+    const double left = frame_.time_limit_s - t_;
+    const double end_x = frame_.end_centre_x_m;
     // The lowest of the three vertices about the lowest one at tau: its height and index.
     auto lowest_of = [&](const State& s, long& which) {
         const long k = lowest(s.a);
@@ -630,7 +648,7 @@ void FreeBodySolver::flight_stretch() {
                           end_x - flight_at(s0, stop).x, kEventTolS, out_.steps);
         at_end = true;
     }
-    emit_rows_before(t_ + stop, [&](double dt) { return flight_at(s0, dt); });
+    emit_rows_before(t_ + stop, [this, s0](double dt) { return flight_at(s0, dt); });
     s_ = flight_at(s0, stop);
     t_ += stop;
     if (at_end) return finish(Behaviour::rolled_to_end);
@@ -655,7 +673,7 @@ FreeBodyMotion FreeBodySolver::run() {
             stop_unsupported("more than two million steps");
             break;
         }
-        if (t_ >= rules_.time_limit_s) {
+        if (t_ >= frame_.time_limit_s) {
             finish(Behaviour::time_limit);
             break;
         }
@@ -677,11 +695,35 @@ FreeBodyMotion FreeBodySolver::run() {
     return out_;
 }
 
+std::optional<FreeBodyRow> FreeBodySolver::row_at_step(long step, double step_hz, long first_step) const {
+    // As the rows of a run sampled at every step from first_step: the rows before each stretch's end,
+    // then the end's own row if it finished; past its last row, the last row.
+    auto row = [&](const State& s, double t, long landed) {
+        return FreeBodyRow{{{s.a, {s.x, s.y}}, {s.vx, s.vy}, s.w}, sample(s, t), landed};
+    };
+    auto time_of = [step_hz](long k) { return static_cast<double>(first_step_at(k, step_hz, step_hz)) / step_hz; };
+    const double last_end = stretches_.empty() ? t_ : stretches_.back().t_end;
+    long k = step;
+    if (!finished_) {
+        while (k >= first_step && time_of(k) >= last_end) --k;
+        if (k < first_step) return std::nullopt;
+    }
+    const double ts = time_of(k);
+    const auto it = std::upper_bound(stretches_.begin(), stretches_.end(), ts,
+                                     [](double t, const Stretch& st) { return t < st.t_end; });
+    if (it == stretches_.end()) return row(s_, t_, landed_);
+    return row(it->at(std::max(0.0, ts - it->t0)), ts, it->landed);
+}
+
 }  // namespace
 
-FreeBodyMotion free_body_motion(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start) {
-    FreeBodySolver h(body, rules, start);
-    return h.run();
+FreeBodyMotion free_body_motion(const FreeBody& body, const RampFrame& frame, const FreeBodyStart& start) {
+    const auto solver = std::make_shared<FreeBodySolver>(body, frame, start);
+    FreeBodyMotion m = solver->run();
+    m.row_at_step = [solver](long step, double step_hz, long first_step) {
+        return solver->row_at_step(step, step_hz, first_step);
+    };
+    return m;
 }
 
 }  // namespace polyroll::models

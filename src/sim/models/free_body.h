@@ -16,12 +16,14 @@
 // ramp at once (a face set down flat), a shell coming to rest. The caller hands the shell to Box2D there.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/geometry.h"
 #include "sim/measurements.h"
+#include "sim/models/ramp_frame.h"
 #include "sim/shell_pose.h"
 
 namespace polyroll::models {
@@ -33,18 +35,6 @@ struct FreeBody {
     double inertia_kg_m2 = 0.0;  // about the centre
 };
 
-// The ramp and the run's rules, in SI units and the ramp frame of shell_pose.h.
-struct FreeBodyRules {
-    double angle_deg = 0.0;
-    double gravity_m_s2 = 0.0;
-    double friction = 0.0;  // the shell-ramp Coulomb coefficient (Box2D: sqrt of the two fixtures')
-    double end_centre_x_m = 0.0;
-    double time_limit_s = 0.0;
-    double sample_hz = 0.0;       // trajectory rows
-    double sample_grid_hz = 0.0;  // rows at the first multiple of 1 / this at or after j / sample_hz
-    double rest_speed_m_s = 0.0;  // slower than this on the ramp: coming to rest (unsupported)
-};
-
 // Where the run is taken over: the state now and the records so far.
 struct FreeBodyStart {
     double time_s = 0.0;
@@ -52,10 +42,14 @@ struct FreeBodyStart {
     ShellPose release;               // position and angle are measured from it
     double potential_J = 0.0;        // the potential energy now, relative to release, as booked so far
     long landed_vertex = 1;          // the highest vertex landed, unwrapped (tracker.cpp's numbering)
-    Measurements measured;           // the records so far
-    // The index of the next trajectory row (row j falls at j / sample_hz on the grid); -1: the number
-    // of rows in `measured` (a run sampled at the scene's rate continues its own rows).
-    long first_row = -1;
+    Measurements measured;           // the records so far; the run continues their rows
+};
+
+// One row of the run, as a run sampled at every tracker step records it.
+struct FreeBodyRow {
+    ShellState state;
+    TrajectorySample sample;
+    long landed_vertex = 1;  // the highest vertex landed
 };
 
 struct FreeBodyMotion {
@@ -67,9 +61,13 @@ struct FreeBodyMotion {
     long flights = 0;                 // stretches without contact
     long slides = 0;                  // contact stretches sliding
     long steps = 0;                   // contact grid points, flight search points and event evaluations
+    // The dense output: the row at tracker step `step` (>= first_step) of a `step_hz` grid, exactly as
+    // a run sampled at every step from first_step would record it (held at its last row past it);
+    // nullopt where that run would have no row. What drawing and a hand-over need, without a second run.
+    std::function<std::optional<FreeBodyRow>(long step, double step_hz, long first_step)> row_at_step;
 };
 
 // Runs from `start` to the ramp's end, the time limit, or the first contact it does not model.
-FreeBodyMotion free_body_motion(const FreeBody& body, const FreeBodyRules& rules, const FreeBodyStart& start);
+FreeBodyMotion free_body_motion(const FreeBody& body, const RampFrame& frame, const FreeBodyStart& start);
 
 }  // namespace polyroll::models

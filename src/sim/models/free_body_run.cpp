@@ -27,7 +27,8 @@ FreeBodyStart start_from(const HandOver& from, double step_hz) {
 }
 }  // namespace
 
-FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from) : scene_(scene), from_(from) {
+FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from)
+    : RevealedRun(scene, from.steps, from.measured), from_(from) {
     const ShellProperties sp = shell_properties(scene.shell);
     body_.outer_m = shell_outer_polygon_m(scene.shell);
     body_.mass_kg = sp.mass_kg;
@@ -42,81 +43,32 @@ FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from) : scene_(scen
         body_.mass_kg += fill_mass_kg_;
         body_.inertia_kg_m2 += b.fill_areal_density_kg_m2 * inside.polar_moment_cm;
     }
-    rules_.angle_deg = scene.ramp.angle_deg;
-    rules_.gravity_m_s2 = scene.run.gravity_m_s2;
-    // Box2D mixes two fixtures' coefficients as sqrt(a b); the shell's fixtures carry the ramp's own.
-    rules_.friction = scene.ramp.friction;
-    rules_.end_centre_x_m = end_centre_x_m(scene, sp);
-    rules_.time_limit_s = scene.run.time_limit_s;
-    rules_.sample_hz = scene.run.sample_hz;
-    rules_.sample_grid_hz = scene.fidelity.step_hz;
-    rules_.rest_speed_m_s = scene.run.rest_speed_m_s;
-    full_ = free_body_motion(body_, rules_, start_from(from, scene.fidelity.step_hz));
+    full_ = free_body_motion(body_, ramp_frame(scene), start_from(from, scene.fidelity.step_hz));
     if (full_.unsupported_time_s)
         hand_over_step_ = std::max(from.steps, static_cast<long>(std::floor(*full_.unsupported_time_s * scene.fidelity.step_hz)));
-    outer_ = shell_outer_polygon_m(scene.shell);
-    inner_ = shell_inner_polygon_m(scene.shell);
-    steps_ = from.steps;
-    shown_ = from.measured;
-    shown_.behaviour = Behaviour::running;
     reveal();
 }
 
-const FreeBodyMotion& FreeBodyRun::fine() const {
-    std::call_once(fine_once_, [this] {
-        FreeBodyRules every_step = rules_;
-        every_step.sample_hz = scene_.fidelity.step_hz;
-        FreeBodyStart s = start_from(from_, scene_.fidelity.step_hz);
-        s.measured.trajectory.clear();  // row i of the result is step from.steps + 1 + i
-        s.first_row = from_.steps + 1;
-        fine_ = free_body_motion(body_, every_step, s);
-    });
-    return fine_;
+std::optional<FreeBodyRow> FreeBodyRun::row_now() const {
+    if (steps_ <= from_.steps) return std::nullopt;
+    return full_.row_at_step(steps_, scene_.fidelity.step_hz, from_.steps + 1);
 }
 
 ShellState FreeBodyRun::state_now() const {
-    if (steps_ <= from_.steps) return from_.shell;
-    const FreeBodyMotion& f = fine();
-    if (f.states.empty()) return from_.shell;
-    const size_t i = std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.states.size() - 1);
-    return f.states[i];
+    const std::optional<FreeBodyRow> r = row_now();
+    return r ? r->state : from_.shell;
 }
 
 TrajectorySample FreeBodyRun::sample_now() const {
-    if (steps_ > from_.steps) {
-        const FreeBodyMotion& f = fine();
-        if (!f.measured.trajectory.empty()) {
-            const size_t i =
-                std::min(static_cast<size_t>(steps_ - from_.steps - 1), f.measured.trajectory.size() - 1);
-            return f.measured.trajectory[i];
-        }
-    }
+    if (const std::optional<FreeBodyRow> r = row_now()) return r->sample;
     TrajectorySample s = from_.measured.trajectory.empty() ? TrajectorySample{} : from_.measured.trajectory.back();
     s.time_s = time_s();
     s.potential_J = from_.potential_J;
     return s;
 }
 
-bool FreeBodyRun::finished() const {
-    return !hand_over_step_ && time_s() >= full_.measured.end_time_s - 1e-12;
-}
-
-bool FreeBodyRun::step() {
-    // Past the hand-over step the run has nothing to show: whoever runs it hands the shell over there.
-    if (finished() || (hand_over_step_ && steps_ >= *hand_over_step_)) return false;
-    ++steps_;
-    reveal();
-    return !finished();
-}
-
-void FreeBodyRun::run_to_end() {
-    steps_ = hand_over_step_ ? std::max(steps_, *hand_over_step_)
-                             : first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
-    reveal();
-}
-
 RunSnapshot FreeBodyRun::snapshot() const {
-    RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
+    RunSnapshot s = scene_snapshot_now();
     s.time_s = finished() ? full_.measured.end_time_s : time_s();
     const ShellState st = state_now();
     s.shell_centre_m = st.pose.centre_m;
@@ -144,14 +96,10 @@ HandOver FreeBodyRun::hand_over() const {
     h.release = from_.release;
     h.measured = shown_;
     h.measured.behaviour = Behaviour::running;
-    h.landed_vertex = from_.landed_vertex;
-    if (steps_ > from_.steps && !fine().landed_vertices.empty())
-        h.landed_vertex = fine().landed_vertices[std::min(static_cast<size_t>(steps_ - from_.steps - 1),
-                                                          fine().landed_vertices.size() - 1)];
+    const std::optional<FreeBodyRow> r = row_now();
+    h.landed_vertex = r ? r->landed_vertex : from_.landed_vertex;
     h.potential_J = sample_now().potential_J;
     return h;
 }
-
-void FreeBodyRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 }  // namespace polyroll::models

@@ -5,7 +5,6 @@
 
 #include "sim/fill_plan.h"
 #include "sim/shell_properties.h"
-#include "sim/shell_pose.h"
 
 namespace polyroll::models {
 
@@ -23,29 +22,13 @@ RollingBody rolling_body(const Scene& scene) {
     return b;
 }
 
-RollingTrack rolling_track(const Scene& scene) {
-    const ShellProperties sp = shell_properties(scene.shell);
-    RollingTrack t;
-    t.angle_deg = scene.ramp.angle_deg;
-    t.gravity_m_s2 = scene.run.gravity_m_s2;
-    t.start_rotation_rad = -release_pose(scene, sp).angle_rad;
-    t.end_centre_x_m = end_centre_x_m(scene, sp);
-    t.time_limit_s = scene.run.time_limit_s;
-    t.sample_hz = scene.run.sample_hz;
-    t.sample_grid_hz = scene.fidelity.step_hz;  // rows at the grain tracker's sample times
-    t.rest_speed_m_s = scene.run.rest_speed_m_s;
-    t.rest_time_s = scene.run.rest_time_s;
-    return t;
-}
-
 RunResult run_reduced_model(const Scene& scene, FillMotion motion, bool until_invalid) {
     const auto start = std::chrono::steady_clock::now();
     // Both models time each face from the energy integral (face_clock.h): the rigid model is
     // what `--model auto` runs for an empty shell, and it agrees with the stepped series to about
     // 1e-11 (tests/test_face_clock.cpp runs the matrix with both fill motions).
-    RollingTrack track = rolling_track(scene);
+    RampFrame track = ramp_frame(scene);
     track.stop_when_invalid = until_invalid;
-    if (until_invalid) track.slip_friction = scene.ramp.friction;
     const RollingRun run = roll(rolling_body(scene), motion, track, FaceTiming::energy_integral);
     RunResult r;
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,11 +15,8 @@ namespace polyroll::models {
 // spread uniformly over the inside's cross-section.
 RollingBody rolling_body(const Scene& scene);
 
-// The scene's ramp, release pose (release_pose() of shell_pose.h) and run rules.
-RollingTrack rolling_track(const Scene& scene);
-
 // Runs a validated scene with the fill moving as `fill` says (frozen: the rigid model; relevel: the
-// segment model), and times it. `until_invalid`: stop where the model stops holding (RollingTrack).
+// segment model), and times it. `until_invalid`: stop where the model stops holding (RampFrame::stop_when_invalid).
 RunResult run_reduced_model(const Scene& scene, FillMotion fill, bool until_invalid = false);
 
 }  // namespace polyroll::models

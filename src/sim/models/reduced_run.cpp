@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/fill_plan.h"
 #include "sim/models/reduced_models.h"
 #include "sim/models/reveal.h"
 #include "sim/shell_pose.h"
@@ -37,10 +36,10 @@ TrajectorySample sample_at(const std::vector<TrajectorySample>& track, double t)
 }  // namespace
 
 ReducedRun::ReducedRun(const Scene& scene, FillMotion fill, bool until_invalid)
-    : scene_(scene), fill_(fill), until_invalid_(until_invalid), full_(run_reduced_model(scene, fill, until_invalid)) {
-    outer_ = shell_outer_polygon_m(scene.shell);
-    inner_ = shell_inner_polygon_m(scene.shell);
-    shown_.behaviour = Behaviour::running;
+    : RevealedRun(scene, 0, Measurements{}),
+      fill_(fill),
+      until_invalid_(until_invalid),
+      full_(run_reduced_model(scene, fill, until_invalid)) {
     reveal();
 }
 
@@ -54,26 +53,12 @@ const std::vector<TrajectorySample>& ReducedRun::pose_track() const {
     return pose_track_;
 }
 
-bool ReducedRun::finished() const { return time_s() >= full_.measured.end_time_s - 1e-12; }
-
-bool ReducedRun::step() {
-    if (finished()) return false;
-    ++steps_;
-    reveal();
-    return !finished();
-}
-
-void ReducedRun::run_to_end() {
-    steps_ = first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
-    reveal();
-}
-
 TrajectorySample ReducedRun::now() const {
     return sample_at(pose_track(), std::min(time_s(), full_.measured.end_time_s));
 }
 
 RunSnapshot ReducedRun::snapshot() const {
-    RunSnapshot s = scene_snapshot(scene_, outer_, inner_);
+    RunSnapshot s = scene_snapshot_now();
     s.time_s = std::min(time_s(), full_.measured.end_time_s);
     const TrajectorySample now = sample_at(pose_track(), s.time_s);
     const ShellPose pose = rolling_pose(scene_, now.position_m, now.angle_deg);
@@ -110,7 +95,5 @@ HandOver ReducedRun::hand_over() const {
     h.potential_J = n.potential_J;
     return h;
 }
-
-void ReducedRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 }  // namespace polyroll::models

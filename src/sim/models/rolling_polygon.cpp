@@ -36,7 +36,7 @@ constexpr long kMaxSteps = 2'000'000;
 
 class Roller {
 public:
-    Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing);
+    Roller(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing);
     RollingRun run();
 
 private:
@@ -58,29 +58,43 @@ private:
     Pivot make_pivot(long k) const;
     double psi() const { return phi_ - piv_.phi_top; }
 
-    Vec2 centre_from_pivot() const { return geom::rotate(-1.0 * vertex(piv_.k), -phi_); }
-    double centre_x() const { return piv_.k * side_ + centre_from_pivot().x; }
+    // The body at rotation phi and rate omega about the current pivot (by default, the state now).
+    Vec2 centre_from_pivot(double phi) const { return geom::rotate(-1.0 * vertex(piv_.k), -phi); }
+    double centre_x() const { return piv_.k * side_ + centre_from_pivot(phi_).x; }
     double kinetic() const { return 0.5 * piv_.inertia * omega_ * omega_; }
-    double potential_abs() const;
-    TrajectorySample sample(double t) const;
-    // The normal force the pivot must supply at rotation psi, given the step's energy constant
-    // c = psi'^2 / 2 + a cos(psi) (the pendulum's energy integral).
-    double normal_force(double psi, double c) const;
-    // The same from sin(psi), cos(psi) and the rate psi' (the energy-integral arcs).
-    double normal_force(double sin_psi, double cos_psi, double rate_rad_s) const;
+    double potential_abs(double phi) const;
+    TrajectorySample sample(double t, double phi, double omega) const;
+    TrajectorySample sample(double t) const { return sample(t, phi_, omega_); }
+    // The normal force the pivot must supply at rotation psi (its sine and cosine) turning at the
+    // squared rate psi'^2 = w2: the stepped series gives w2 from the step's energy constant
+    // c = psi'^2 / 2 + a cos(psi) (energy_w2), the energy-integral arcs as a rate squared.
+    double normal_force(double sin_psi, double cos_psi, double w2) const;
+    double energy_w2(double cos_psi, double c) const { return std::max(0.0, 2.0 * (c - piv_.a * cos_psi)); }
 
-    void rebuild_body();
+    // The fill levelled as gravity lay with the shell turned by `levelled_at_rad` (the pour).
+    void rebuild_body(double levelled_at_rad);
     void rebuild_body_landed(long face);
     void impact(int direction);
     void land(long face);
     double barrier(long pivot, long face, bool forward) const;
     void rest();
     void finish(Behaviour b, double end_time);
-    double sample_time(long j) const;
     void emit_samples_before(double t_end);  // at the current state, for sample times < t_end
     void emit_series_samples(const PendulumSeries& s, double t_end);
-    void check_normal(const PendulumSeries& s);
-    std::pair<Event, double> find_event(const PendulumSeries& s, double h);
+    // The points of a series step find_event looked at, in time order up to the event: where the
+    // normal force is checked.
+    struct Checkpoint {
+        double tau = 0.0, psi = 0.0;
+    };
+    struct StepEvent {
+        Event event = Event::none;
+        double tau = 0.0;
+        std::array<Checkpoint, 2 * kCheckPoints + 2> path{};
+        int path_size = 0;
+        void add(double tau_s, double psi) { path[static_cast<size_t>(path_size++)] = {tau_s, psi}; }
+    };
+    void check_normal(const PendulumSeries& s, const StepEvent& step);
+    StepEvent find_event(const PendulumSeries& s, double h) const;
     // Crosses the current pivot's arc to its next event in one go, timed from the energy integral;
     // false (nothing done) where the arc must be stepped instead.
     bool time_arc();
@@ -88,14 +102,14 @@ private:
     void handle(Event e);
     void note_negative_normal();  // on the current pivot (hop_pivots)
     void note_friction(double sin_psi, double cos_psi, double rate_rad_s);  // max_friction_share
-    // Whether rolling without slipping needs more friction than track.slip_friction gives.
+    // Whether rolling without slipping needs more friction than the track's slip_friction() gives.
     bool slips(double sin_psi, double cos_psi, double rate_rad_s) const;
     double friction_force(double sin_psi, double cos_psi, double rate_rad_s) const;
 
     const RollingBody& b_;
     const FillMotion fill_motion_;
     const FaceTiming timing_;
-    const RollingTrack& tr_;
+    const RampFrame& tr_;
     std::vector<Vec2> outer_;
     int n_ = 0;
     double side_ = 0.0, radius_ = 0.0;
@@ -123,16 +137,9 @@ private:
     bool running_ = true;
     long last_hop_pivot_ = std::numeric_limits<long>::min();
     RollingRun out_;
-    // The points of the current step find_event looked at, in time order up to the event: where the
-    // normal force is checked.
-    struct Checkpoint {
-        double tau = 0.0, psi = 0.0;
-    };
-    std::array<Checkpoint, 2 * kCheckPoints + 2> path_{};
-    int path_size_ = 0;
 };
 
-Roller::Roller(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing)
+Roller::Roller(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing)
     : b_(body), fill_motion_(fill), timing_(timing), tr_(track), outer_(body.outer_m) {
     n_ = static_cast<int>(outer_.size());
     side_ = geom::length(outer_[1] - outer_[0]);
@@ -148,11 +155,16 @@ Roller::Roller(const RollingBody& body, FillMotion fill, const RollingTrack& tra
         throw InputError(fmt::format("the release rotation of {:.3f} deg about the downhill vertex is more than one "
                                      "face ({:.3f} deg): the next vertex would start below the ramp",
                                      phi0_ * 180.0 / kPi, 360.0 / n_));
-    rebuild_body();
+    rebuild_body(tr_.pour_rotation_rad.value_or(phi0_));
     out_.fill_mass_kg = has_fill_ ? fill_.mass.mass_kg : 0.0;
     piv_ = make_pivot(1);
+    if (tr_.pour_rotation_rad) {
+        // Stood on the vertex with the pile as poured: the whole body balanced past the pivot, its
+        // neighbouring faces kept off the ramp as the grain model keeps them.
+        phi0_ = phi_ = std::clamp(std::max(0.0, piv_.phi_top) + tr_.release_tilt_rad, 0.0, 0.9 * face_angle(1));
+    }
     start_x_ = centre_x();
-    u0_ = potential_abs();
+    u0_ = potential_abs(phi_);
     out_.min_normal_force_N = kInf;
 }
 
@@ -178,37 +190,29 @@ Roller::Pivot Roller::make_pivot(long k) const {
     return p;
 }
 
-double Roller::potential_abs() const {
-    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + geom::rotate(body_.centre_of_mass_m - vertex(piv_.k), -phi_);
+double Roller::potential_abs(double phi) const {
+    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + geom::rotate(body_.centre_of_mass_m - vertex(piv_.k), -phi);
     return body_.mass_kg * g_ * geom::dot(cm, up_world_);
 }
 
-TrajectorySample Roller::sample(double t) const {
+TrajectorySample Roller::sample(double t, double phi, double omega) const {
     TrajectorySample s;
     s.time_s = t;
-    const Vec2 c = centre_from_pivot();
+    const Vec2 c = centre_from_pivot(phi);
     s.position_m = piv_.k * side_ + c.x - start_x_;
-    s.speed_m_s = omega_ * c.y;  // the centre turns about the pivot: v = omega x (centre - pivot)
-    s.angle_deg = (phi_ - phi0_) * 180.0 / kPi;
-    s.kinetic_J = kinetic();
-    s.potential_J = potential_abs() - u0_;
+    s.speed_m_s = omega * c.y;  // the centre turns about the pivot: v = omega x (centre - pivot)
+    // From the scene's release pose (release_pose(), what rolling_pose() draws from): the tipped
+    // release's balance turn shows as a first row turned by it.
+    s.angle_deg = (phi - tr_.start_rotation_rad) * 180.0 / kPi;
+    s.kinetic_J = 0.5 * piv_.inertia * omega * omega;
+    s.potential_J = potential_abs(phi) - u0_;
     s.dissipated_J = dissipated_;
     return s;
 }
 
-double Roller::normal_force(double psi, double c) const {
+double Roller::normal_force(double sp, double cp, double w2) const {
     // N = M (g cos theta + a_cm . y): the centre of mass turns about the fixed pivot, so
     // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
-    const double sp = std::sin(psi), cp = std::cos(psi);
-    const double w2 = std::max(0.0, 2.0 * (c - piv_.a * cp));
-    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
-    const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
-    return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
-}
-
-double Roller::normal_force(double sp, double cp, double rate) const {
-    // The same, for the energy-integral arcs (kept apart so the stepped path's rounding is unchanged).
-    const double w2 = rate * rate;
     const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
     const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
     return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
@@ -222,15 +226,15 @@ double Roller::friction_force(double sp, double cp, double rate) const {
 }
 
 void Roller::note_friction(double sp, double cp, double rate) {
-    const double n = normal_force(sp, cp, rate);
+    const double n = normal_force(sp, cp, rate * rate);
     if (!(n > 0.0)) return;
     out_.max_friction_share = std::max(out_.max_friction_share, std::fabs(friction_force(sp, cp, rate)) / n);
 }
 
 bool Roller::slips(double sp, double cp, double rate) const {
-    if (tr_.slip_friction <= 0.0) return false;
-    const double n = normal_force(sp, cp, rate);
-    return n > 0.0 && std::fabs(friction_force(sp, cp, rate)) > tr_.slip_friction * n;
+    if (tr_.slip_friction() <= 0.0) return false;
+    const double n = normal_force(sp, cp, rate * rate);
+    return n > 0.0 && std::fabs(friction_force(sp, cp, rate)) > tr_.slip_friction() * n;
 }
 
 void Roller::rebuild_body_landed(long face) {
@@ -245,25 +249,25 @@ void Roller::rebuild_body_landed(long face) {
     body_ = combine(b_.shell, fill_.mass);
 }
 
-void Roller::rebuild_body() {
+void Roller::rebuild_body(double levelled_at_rad) {
     if (!has_fill_) {
         body_ = b_.shell;
         return;
     }
-    // The body frame sees gravity turned back by the body's rotation.
-    const FillSegments f =
-        fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+    // The body frame sees gravity turned back by the body's rotation when the fill was levelled.
+    const FillSegments f = fill_segments(b_.inner_m, geom::rotate(up_world_, levelled_at_rad), b_.fill_ratio,
+                                         b_.fill_areal_density_kg_m2);
     fill_ = {f.up, f.mass};
     body_ = combine(b_.shell, fill_.mass);
 }
 
-std::pair<Roller::Event, double> Roller::find_event(const PendulumSeries& s, double h) {
+Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
     const double hi = std::min(piv_.psi_hi, piv_.psi_end), lo = piv_.psi_lo;
     auto crossed = [&](double p) { return p >= hi || p <= lo; };
     double ta = 0.0, pa = 0.0, ra = 0.0;
     s.psi_and_rate(0.0, pa, ra);
-    path_size_ = 0;
-    path_[static_cast<size_t>(path_size_++)] = {0.0, pa};
+    StepEvent out;
+    out.add(0.0, pa);
     for (int i = 1; i <= kCheckPoints; ++i) {
         double tb = h * i / kCheckPoints, pb = 0.0, rb = 0.0;
         s.psi_and_rate(tb, pb, rb);
@@ -276,31 +280,33 @@ std::pair<Roller::Event, double> Roller::find_event(const PendulumSeries& s, dou
                 tb = te;
                 pb = pe;
             } else {
-                path_[static_cast<size_t>(path_size_++)] = {te, pe};
+                out.add(te, pe);
             }
         }
         if (crossed(pb)) {
             const bool upper = pb >= hi;
             const double target = upper ? hi : lo;
             const double tau = s.solve_psi(target, ta, tb);
-            path_[static_cast<size_t>(path_size_++)] = {tau, target};
-            const Event e = !upper ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
-            return {e, tau};
+            out.add(tau, target);
+            out.event = !upper ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
+            out.tau = tau;
+            return out;
         }
-        path_[static_cast<size_t>(path_size_++)] = {tb, pb};
+        out.add(tb, pb);
         ta = tb;
         ra = rb;
     }
-    return {Event::none, h};
+    out.tau = h;
+    return out;
 }
 
-void Roller::check_normal(const PendulumSeries& s) {
-    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(path_[0].psi);
-    for (int i = 0; i < path_size_; ++i) {
-        const Checkpoint& p = path_[static_cast<size_t>(i)];
-        const double nf = normal_force(p.psi, c);
+void Roller::check_normal(const PendulumSeries& s, const StepEvent& step) {
+    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(step.path[0].psi);
+    for (int i = 0; i < step.path_size; ++i) {
+        const Checkpoint& p = step.path[static_cast<size_t>(i)];
+        const double w2 = energy_w2(std::cos(p.psi), c);
+        const double nf = normal_force(std::sin(p.psi), std::cos(p.psi), w2);
         out_.min_normal_force_N = std::min(out_.min_normal_force_N, nf);
-        const double w2 = std::max(0.0, 2.0 * (c - piv_.a * std::cos(p.psi)));
         note_friction(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
         if (nf < 0.0) note_negative_normal();
         const bool slip = slips(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
@@ -309,9 +315,9 @@ void Roller::check_normal(const PendulumSeries& s) {
             // checkpoints.
             auto holds = [&](double tau) {
                 const double psi = s.psi(tau);
-                return normal_force(psi, c) >= 0.0 && !slips(std::sin(psi), std::cos(psi), s.rate(tau));
+                return normal_force(std::sin(psi), std::cos(psi), energy_w2(std::cos(psi), c)) >= 0.0 && !slips(std::sin(psi), std::cos(psi), s.rate(tau));
             };
-            double x = i > 0 ? path_[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
+            double x = i > 0 ? step.path[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
             for (int it = 0; it < 100 && i > 0; ++it) {
                 const double m = 0.5 * (x + y);
                 if (m <= x || m >= y) break;
@@ -330,29 +336,19 @@ void Roller::note_negative_normal() {
 }
 
 void Roller::emit_series_samples(const PendulumSeries& s, double t_end) {
-    const double phi_saved = phi_, omega_saved = omega_;
     for (;;) {
-        const double ts = sample_time(next_sample_);
+        const double ts = tr_.sample_time(next_sample_);
         if (ts >= t_end) break;
         const double tau = std::max(0.0, ts - t_);
-        phi_ = s.psi(tau) + piv_.phi_top;
-        omega_ = s.rate(tau);
-        out_.measured.trajectory.push_back(sample(ts));
+        out_.measured.trajectory.push_back(sample(ts, s.psi(tau) + piv_.phi_top, s.rate(tau)));
         ++next_sample_;
     }
-    phi_ = phi_saved;
-    omega_ = omega_saved;
 }
 
-double Roller::sample_time(long j) const {
-    if (tr_.sample_grid_hz <= 0.0) return static_cast<double>(j) / tr_.sample_hz;
-    // The tracker's rule (tracker.cpp): the first grid step at or after j / sample_hz.
-    return std::ceil(static_cast<double>(j) * tr_.sample_grid_hz / tr_.sample_hz - 1e-9) / tr_.sample_grid_hz;
-}
 
 void Roller::emit_samples_before(double t_end) {
     for (;;) {
-        const double ts = sample_time(next_sample_);
+        const double ts = tr_.sample_time(next_sample_);
         if (ts >= t_end) break;
         out_.measured.trajectory.push_back(sample(ts));
         ++next_sample_;
@@ -381,7 +377,7 @@ void Roller::impact(int direction) {
         if (p.y > 0.0)
             out_.max_impact_friction_share = std::max(out_.max_impact_friction_share, std::fabs(p.x) / p.y);
         // An impact that needs more friction than the ramp gives: the real vertex slides as it lands.
-        if (tr_.slip_friction > 0.0 && out_.model_valid && !(p.y > 0.0 && std::fabs(p.x) <= tr_.slip_friction * p.y)) {
+        if (tr_.slip_friction() > 0.0 && out_.model_valid && !(p.y > 0.0 && std::fabs(p.x) <= tr_.slip_friction() * p.y)) {
             out_.model_valid = false;
             out_.model_invalid_time_s = t_;
         }
@@ -487,10 +483,11 @@ bool Roller::time_arc() {
     // The normal force at the arc's ends and its quadrature nodes (3 to 32 per arc, dense where the
     // rate changes fastest). Where it turns negative the stepper times the arc again to find when.
     const ArcPoint end = arc.point(arc.u_to());
-    double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_), normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s));
+    double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_ * omega_),
+                            normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s * end.rate_rad_s));
     bool slip = slips(std::sin(psi0), std::cos(psi0), omega_) || slips(end.sin_psi, end.cos_psi, end.rate_rad_s);
     arc.for_each_node([&](const ArcPoint& p) {
-        n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s));
+        n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s * p.rate_rad_s));
         note_friction(p.sin_psi, p.cos_psi, p.rate_rad_s);
         slip = slip || slips(p.sin_psi, p.cos_psi, p.rate_rad_s);
     });
@@ -507,23 +504,18 @@ bool Roller::time_arc() {
 }
 
 void Roller::emit_arc_samples(const EnergyArc& arc, double t_end) {
-    const double phi_saved = phi_, omega_saved = omega_;
     // Each row's point from the previous row's: short steps, so Newton starts close.
     double u_prev = arc.u_from(), t_prev = t_;
     for (;;) {
-        const double ts = sample_time(next_sample_);
+        const double ts = tr_.sample_time(next_sample_);
         if (ts >= t_end) break;
         const double u = arc.u_after(u_prev, std::max(0.0, ts - t_prev));
         const ArcPoint p = arc.point(u);
-        phi_ = p.psi_rad + piv_.phi_top;
-        omega_ = p.rate_rad_s;
-        out_.measured.trajectory.push_back(sample(ts));
+        out_.measured.trajectory.push_back(sample(ts, p.psi_rad + piv_.phi_top, p.rate_rad_s));
         ++next_sample_;
         u_prev = u;
         t_prev = std::max(t_prev, ts);
     }
-    phi_ = phi_saved;
-    omega_ = omega_saved;
 }
 
 RollingRun Roller::run() {
@@ -555,8 +547,10 @@ RollingRun Roller::run() {
         if (timing_ == FaceTiming::energy_integral && time_arc()) continue;
         const PendulumSeries s(psi(), omega_, piv_.a);
         const double h = std::min({s.accurate_step_s(), kMaxStepS, left});
-        const auto [event, tau] = find_event(s, h);
-        check_normal(s);
+        const StepEvent found = find_event(s, h);
+        const Event event = found.event;
+        const double tau = found.tau;
+        check_normal(s, found);
         emit_series_samples(s, t_ + tau);
         const double rate = s.rate(tau);
         const double psi_new = event == Event::none     ? s.psi(tau)
@@ -578,7 +572,7 @@ RollingRun Roller::run() {
 
 }  // namespace
 
-RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track, FaceTiming timing) {
+RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing) {
     if (body.outer_m.size() < 3) throw InputError("a rolling polygon needs at least 3 sides");
     Roller r(body, fill, track, timing);
     return r.run();

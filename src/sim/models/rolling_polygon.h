@@ -12,6 +12,7 @@
 #include "sim/geometry.h"
 #include "sim/measurements.h"
 #include "sim/models/composite_body.h"
+#include "sim/models/ramp_frame.h"
 
 namespace polyroll::models {
 
@@ -36,28 +37,6 @@ enum class FaceTiming {
     stepped,          // the pendulum's Taylor series stepped through every arc (pivot_motion.h)
     energy_integral,  // each arc timed by quadrature of the energy integral (face_clock.h); the series
                       // only for arcs with a turning point, or where the normal force turns negative
-};
-
-// The ramp and the run's rules, in SI units and the ramp frame of world_builder.h.
-struct RollingTrack {
-    double angle_deg = 0.0;
-    double gravity_m_s2 = 0.0;
-    double start_rotation_rad = 0.0;  // clockwise rotation from face (0, 1) flat: -release angle
-    double end_centre_x_m = 0.0;      // the run ends when the centre passes this
-    double time_limit_s = 0.0;
-    double sample_hz = 0.0;
-    // Sample times are rounded up to multiples of 1 / this (0: exact multiples of 1 / sample_hz). Set
-    // to the grain model's step rate, the rows fall at the times the grain tracker samples.
-    double sample_grid_hz = 0.0;
-    double rest_speed_m_s = 0.0;
-    double rest_time_s = 0.0;
-    // End the run where the model stops holding (model_invalid_time_s), its behaviour left "running":
-    // for `--model auto`, which hands the shell on there and needs nothing of the rigid model past it.
-    bool stop_when_invalid = false;
-    // With stop_when_invalid: the model also stops holding where its no-slip rolling needs a friction
-    // force above this share of the normal force, between impacts or at one (the ramp's coefficient:
-    // the real shell slips there). 0: not checked (the reduced models as the experimenters made them).
-    double slip_friction = 0.0;
 };
 
 struct RollingRun {
@@ -86,7 +65,7 @@ struct RollingRun {
 // Runs to rest, the ramp's end or the time limit. Throws InputError if the release rotation puts the
 // next vertex below the ramp (more than one face past the starting one).
 // Both timings give the same run to about 1e-12 relative (tests/test_models.cpp checks it).
-RollingRun roll(const RollingBody& body, FillMotion fill, const RollingTrack& track,
+RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track,
                 FaceTiming timing = FaceTiming::stepped);
 
 }  // namespace polyroll::models
