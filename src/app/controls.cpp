@@ -93,7 +93,9 @@ std::vector<ControlRow> make_rows() {
         with(row<&SharedControls::pose>("release.pose", S::physics),
              {.radio = {{"vertex", "on a vertex",
                          "Held on a vertex with the centre straight above it, then let go (as in the experiment)."},
-                        {"face", "on a face", "Set down flat on a face, then let go."}}}),
+                        {"face", "on a face", "Set down flat on a face, then let go."},
+                        {"tipped", "tipped", "Filled lying on a face, then stood on its vertex with the pile as it "
+                                             "lay, and let go."}}}),
         row<&SharedControls::model>("run.model", S::physics),
         row<&SharedControls::fidelity>("fidelity.preset", S::physics),
         // --- Advanced: friction and restitution, reset by choosing a material or a ramp
