@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "sim/models/pivot_motion.h"
+#include "sim/models/root_finder.h"
 #include "sim/models/slide_motion.h"
 
 namespace polyroll::models {
@@ -30,7 +31,7 @@ constexpr double kPi = geom::kPi;
 // bounds how briefly an event could come and go unseen.
 constexpr double kContactGridS = 10e-3;
 constexpr double kContactTurnRad = 0.05;
-// Events inside a step are found to this time (false position, first_root).
+// Events inside a step are found to this time (first_root, root_finder.h).
 constexpr double kEventTolS = 1e-9;
 // A vertex closer to the ramp than this at the start is on it.
 constexpr double kTouchM = 1e-9;
@@ -49,32 +50,6 @@ struct State {
 
 enum class Phase { flight, stick, slide };
 
-// The first tau in (lo, hi] where f turns non-positive, given f(lo) > 0 >= f(hi): false position with
-// the Illinois halving (a handful of evaluations for a smooth f where halving takes thirty), ending
-// with the bracket under tol_s; returns its upper end, where f <= 0 holds.
-template <class F>
-double first_root(F f, double lo, double f_lo, double hi, double f_hi, double tol_s, long& evaluations) {
-    int side = 0;
-    for (int i = 0; i < 100 && hi - lo > tol_s; ++i) {
-        double m = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(m > lo && m < hi)) m = 0.5 * (lo + hi);
-        const double fm = f(m);
-        ++evaluations;
-        if (fm <= 0.0) {
-            hi = m;
-            f_hi = fm;
-            if (side < 0) f_lo *= 0.5;
-            side = -1;
-        } else {
-            lo = m;
-            f_lo = fm;
-            if (side > 0) f_hi *= 0.5;
-            side = 1;
-        }
-    }
-    return hi;
-}
-
 // How long a vertex's height above the ramp in flight surely stays positive, from its derivatives now
 // (h, h1 = dh/dt, h2, h3 the second and third) and a bound k4 on the fourth's size over the flight:
 // the Taylor polynomial with that remainder, L(t) = h + h1 t + h2 t^2/2 + h3 t^3/6 - k4 t^4/24, is a
@@ -82,6 +57,8 @@ double first_root(F f, double lo, double f_lo, double hi, double f_hi, double to
 // non-negative and the last positive. Halves d from d_max until they are; 0 if 30 halvings do not.
 // Unlike a second-order bound, this proves a step for the vertex just left, which rises as t^3 (its
 // height, speed and acceleration along the ramp's normal all vanish at lift-off).
+// A bracketing aid, not a root finder: it only says how far the search may step without passing a
+// touch; the touch itself is located by first_root (root_finder.h).
 double positive_for(double h, double h1, double h2, double h3, double k4, double d_max) {
     double d = d_max;
     for (int i = 0; i < 30; ++i, d *= 0.5) {
@@ -484,7 +461,7 @@ void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
     for (size_t k = 0; k < v0.size(); ++k) v0[k] = event_value(s0, p, kContactEvents[k], turn0, &c0);
     double lo = 0.0, tau = span;
     Event e = Event::none;
-    auto value_at = [&](double x, Event ev) {
+    auto event_at = [&](double x, Event ev) {
         Turn tx;
         const State sx = state_at(x, tx);
         return event_value(sx, p, ev, tx);
@@ -511,13 +488,13 @@ void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
                         return sign * state_at(x, tx).w;
                     },
                     lo, sign * s0.w, hi, sign * s1.w, kEventTolS, out_.steps);
-                at_end = value_at(end, ev);
+                at_end = event_at(end, ev);
             }
             if (at_end > 0.0) continue;
             // Coming to rest is slowing down through the rest speed, not starting from rest.
             if (ev == Event::rest && v0[k] <= 0.0) continue;
             const double when = v0[k] <= 0.0 ? lo
-                                             : first_root([&](double x) { return value_at(x, ev); }, lo, v0[k], end,
+                                             : first_root([&](double x) { return event_at(x, ev); }, lo, v0[k], end,
                                                           at_end, kEventTolS, out_.steps);
             if (e == Event::none || when < tau) {
                 e = ev;

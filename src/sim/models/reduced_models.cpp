@@ -24,12 +24,9 @@ RollingBody rolling_body(const Scene& scene) {
 
 RunResult run_reduced_model(const Scene& scene, FillMotion motion, bool until_invalid) {
     const auto start = std::chrono::steady_clock::now();
-    // Both models time each face from the energy integral (face_clock.h): the rigid model is
-    // what `--model auto` runs for an empty shell, and it agrees with the stepped series to about
-    // 1e-11 (tests/test_face_clock.cpp runs the matrix with both fill motions).
     RampFrame track = ramp_frame(scene);
     track.stop_when_invalid = until_invalid;
-    const RollingRun run = roll(rolling_body(scene), motion, track, FaceTiming::energy_integral);
+    const RollingRun run = roll(rolling_body(scene), motion, track);
     RunResult r;
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.scene = scene;

@@ -15,8 +15,8 @@
 #include <fmt/format.h>
 
 #include "sim/errors.h"
-#include "sim/models/face_clock.h"
 #include "sim/models/pivot_motion.h"
+#include "sim/models/root_finder.h"
 
 namespace polyroll::models {
 
@@ -36,7 +36,7 @@ constexpr long kMaxSteps = 2'000'000;
 
 class Roller {
 public:
-    Roller(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing);
+    Roller(const RollingBody& body, FillMotion fill, const RampFrame& track);
     RollingRun run();
 
 private:
@@ -66,8 +66,8 @@ private:
     TrajectorySample sample(double t, double phi, double omega) const;
     TrajectorySample sample(double t) const { return sample(t, phi_, omega_); }
     // The normal force the pivot must supply at rotation psi (its sine and cosine) turning at the
-    // squared rate psi'^2 = w2: the stepped series gives w2 from the step's energy constant
-    // c = psi'^2 / 2 + a cos(psi) (energy_w2), the energy-integral arcs as a rate squared.
+    // squared rate psi'^2 = w2, taken from the step's energy constant c = psi'^2 / 2 + a cos(psi)
+    // (energy_w2): the fill is frozen between impacts and nothing dissipates there.
     double normal_force(double sin_psi, double cos_psi, double w2) const;
     double energy_w2(double cos_psi, double c) const { return std::max(0.0, 2.0 * (c - piv_.a * cos_psi)); }
 
@@ -95,20 +95,18 @@ private:
     };
     void check_normal(const PendulumSeries& s, const StepEvent& step);
     StepEvent find_event(const PendulumSeries& s, double h) const;
-    // Crosses the current pivot's arc to its next event in one go, timed from the energy integral;
-    // false (nothing done) where the arc must be stepped instead.
-    bool time_arc();
-    void emit_arc_samples(const EnergyArc& arc, double t_end);
     void handle(Event e);
     void note_negative_normal();  // on the current pivot (hop_pivots)
     void note_friction(double sin_psi, double cos_psi, double rate_rad_s);  // max_friction_share
     // Whether rolling without slipping needs more friction than the track's slip_friction() gives.
     bool slips(double sin_psi, double cos_psi, double rate_rad_s) const;
+    // Positive where the pivot holds (a positive normal force, friction enough not to slip), turning
+    // non-positive where it stops holding: the value whose root is the model's end of validity.
+    double holding_margin(double sin_psi, double cos_psi, double w2, double rate_rad_s) const;
     double friction_force(double sin_psi, double cos_psi, double rate_rad_s) const;
 
     const RollingBody& b_;
     const FillMotion fill_motion_;
-    const FaceTiming timing_;
     const RampFrame& tr_;
     std::vector<Vec2> outer_;
     int n_ = 0;
@@ -139,8 +137,8 @@ private:
     RollingRun out_;
 };
 
-Roller::Roller(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing)
-    : b_(body), fill_motion_(fill), timing_(timing), tr_(track), outer_(body.outer_m) {
+Roller::Roller(const RollingBody& body, FillMotion fill, const RampFrame& track)
+    : b_(body), fill_motion_(fill), tr_(track), outer_(body.outer_m) {
     n_ = static_cast<int>(outer_.size());
     side_ = geom::length(outer_[1] - outer_[0]);
     radius_ = geom::length(outer_[0]);
@@ -237,6 +235,14 @@ bool Roller::slips(double sp, double cp, double rate) const {
     return n > 0.0 && std::fabs(friction_force(sp, cp, rate)) > tr_.slip_friction() * n;
 }
 
+double Roller::holding_margin(double sp, double cp, double w2, double rate) const {
+    const double nf = normal_force(sp, cp, w2);
+    if (tr_.slip_friction() <= 0.0) return nf;
+    const double n = normal_force(sp, cp, rate * rate);
+    const double spare = n > 0.0 ? tr_.slip_friction() * n - std::fabs(friction_force(sp, cp, rate)) : nf;
+    return std::min(nf, spare);
+}
+
 void Roller::rebuild_body_landed(long face) {
     const size_t key = static_cast<size_t>(((face % n_) + n_) % n_);
     if (landed_fill_.empty()) landed_fill_.resize(static_cast<size_t>(n_));
@@ -274,7 +280,8 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
         if (!crossed(pb) && ra * rb < 0.0) {
             // A turning point inside: the extreme value may lie beyond a boundary though both ends do
             // not, and the normal force is checked there too.
-            const double te = s.solve_turn(ta, tb);
+            const double turn = ra > 0.0 ? 1.0 : -1.0;
+            const double te = first_root([&](double t) { return turn * s.rate(t); }, ta, turn * ra, tb, turn * rb, 0.0);
             const double pe = s.psi(te);
             if (crossed(pe)) {
                 tb = te;
@@ -286,7 +293,10 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
         if (crossed(pb)) {
             const bool upper = pb >= hi;
             const double target = upper ? hi : lo;
-            const double tau = s.solve_psi(target, ta, tb);
+            // target - psi going up, psi - target going down: positive until the crossing.
+            const double side = upper ? 1.0 : -1.0;
+            const double tau = first_root([&](double t) { return side * (target - s.psi(t)); }, ta,
+                                          side * (target - pa), tb, side * (target - pb), 0.0);
             out.add(tau, target);
             out.event = !upper ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
             out.tau = tau;
@@ -294,6 +304,7 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
         }
         out.add(tb, pb);
         ta = tb;
+        pa = pb;
         ra = rb;
     }
     out.tau = h;
@@ -304,27 +315,24 @@ void Roller::check_normal(const PendulumSeries& s, const StepEvent& step) {
     const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(step.path[0].psi);
     for (int i = 0; i < step.path_size; ++i) {
         const Checkpoint& p = step.path[static_cast<size_t>(i)];
-        const double w2 = energy_w2(std::cos(p.psi), c);
-        const double nf = normal_force(std::sin(p.psi), std::cos(p.psi), w2);
+        const double sp = std::sin(p.psi), cp = std::cos(p.psi);
+        const double w2 = energy_w2(cp, c), rate = std::sqrt(w2);
+        const double nf = normal_force(sp, cp, w2);
         out_.min_normal_force_N = std::min(out_.min_normal_force_N, nf);
-        note_friction(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
+        note_friction(sp, cp, rate);
         if (nf < 0.0) note_negative_normal();
-        const bool slip = slips(std::sin(p.psi), std::cos(p.psi), std::sqrt(w2));
+        const bool slip = slips(sp, cp, rate);
         if ((nf < 0.0 || slip) && out_.model_valid) {
-            // Bisection for when it turned negative (or began to slip); psi is monotonic between
-            // checkpoints.
-            auto holds = [&](double tau) {
+            // When it turned negative (or began to slip), between this checkpoint and the previous one,
+            // where it held.
+            auto margin = [&](double tau) {
                 const double psi = s.psi(tau);
-                return normal_force(std::sin(psi), std::cos(psi), energy_w2(std::cos(psi), c)) >= 0.0 && !slips(std::sin(psi), std::cos(psi), s.rate(tau));
+                return holding_margin(std::sin(psi), std::cos(psi), energy_w2(std::cos(psi), c), s.rate(tau));
             };
-            double x = i > 0 ? step.path[static_cast<size_t>(i - 1)].tau : p.tau, y = p.tau;
-            for (int it = 0; it < 100 && i > 0; ++it) {
-                const double m = 0.5 * (x + y);
-                if (m <= x || m >= y) break;
-                (holds(m) ? x : y) = m;
-            }
+            const double from = i > 0 ? step.path[static_cast<size_t>(i - 1)].tau : p.tau;
+            const double when = i > 0 ? first_root(margin, from, margin(from), p.tau, margin(p.tau), 0.0) : p.tau;
             out_.model_valid = false;
-            out_.model_invalid_time_s = t_ + y;
+            out_.model_invalid_time_s = t_ + when;
         }
     }
 }
@@ -467,57 +475,6 @@ void Roller::handle(Event e) {
     }
 }
 
-bool Roller::time_arc() {
-    const int dir = omega_ > 0.0 ? 1 : omega_ < 0.0 ? -1 : 0;
-    if (dir == 0) return false;  // released or landed at rest: starts at a turning point
-    const double psi0 = psi();
-    const double target = dir > 0 ? std::min(piv_.psi_hi, piv_.psi_end) : piv_.psi_lo;
-    if ((target - psi0) * dir <= 0.0) return false;  // already at the boundary: the stepper ends it
-    const Event event = dir < 0 ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
-    // The fill is frozen between impacts and nothing dissipates there: the pendulum's energy is exact.
-    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(psi0);
-    EnergyArc arc(piv_.a, c);
-    if (!arc.set_arc(psi0, target)) return false;  // swings back before the target, or grazes the top
-    const double tau = arc.time_s(arc.u_from(), arc.u_to());
-    if (!(t_ + tau < tr_.time_limit_s)) return false;  // the stepper stops it at the time limit
-    // The normal force at the arc's ends and its quadrature nodes (3 to 32 per arc, dense where the
-    // rate changes fastest). Where it turns negative the stepper times the arc again to find when.
-    const ArcPoint end = arc.point(arc.u_to());
-    double n_min = std::min(normal_force(std::sin(psi0), std::cos(psi0), omega_ * omega_),
-                            normal_force(end.sin_psi, end.cos_psi, end.rate_rad_s * end.rate_rad_s));
-    bool slip = slips(std::sin(psi0), std::cos(psi0), omega_) || slips(end.sin_psi, end.cos_psi, end.rate_rad_s);
-    arc.for_each_node([&](const ArcPoint& p) {
-        n_min = std::min(n_min, normal_force(p.sin_psi, p.cos_psi, p.rate_rad_s * p.rate_rad_s));
-        note_friction(p.sin_psi, p.cos_psi, p.rate_rad_s);
-        slip = slip || slips(p.sin_psi, p.cos_psi, p.rate_rad_s);
-    });
-    if ((n_min < 0.0 || slip) && out_.model_valid) return false;
-    if (n_min < 0.0) note_negative_normal();
-    out_.min_normal_force_N = std::min(out_.min_normal_force_N, n_min);
-    emit_arc_samples(arc, t_ + tau);
-    ++out_.timed_arcs;
-    t_ += tau;
-    phi_ = target + piv_.phi_top;
-    omega_ = end.rate_rad_s;
-    handle(event);
-    return true;
-}
-
-void Roller::emit_arc_samples(const EnergyArc& arc, double t_end) {
-    // Each row's point from the previous row's: short steps, so Newton starts close.
-    double u_prev = arc.u_from(), t_prev = t_;
-    for (;;) {
-        const double ts = tr_.sample_time(next_sample_);
-        if (ts >= t_end) break;
-        const double u = arc.u_after(u_prev, std::max(0.0, ts - t_prev));
-        const ArcPoint p = arc.point(u);
-        out_.measured.trajectory.push_back(sample(ts, p.psi_rad + piv_.phi_top, p.rate_rad_s));
-        ++next_sample_;
-        u_prev = u;
-        t_prev = std::max(t_prev, ts);
-    }
-}
-
 RollingRun Roller::run() {
     emit_samples_before(std::nextafter(0.0, 1.0));  // the release state is the first row
     for (long j = 0; j <= 1; ++j)
@@ -544,7 +501,6 @@ RollingRun Roller::run() {
             running_ = false;
             break;
         }
-        if (timing_ == FaceTiming::energy_integral && time_arc()) continue;
         const PendulumSeries s(psi(), omega_, piv_.a);
         const double h = std::min({s.accurate_step_s(), kMaxStepS, left});
         const StepEvent found = find_event(s, h);
@@ -572,9 +528,9 @@ RollingRun Roller::run() {
 
 }  // namespace
 
-RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track, FaceTiming timing) {
+RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track) {
     if (body.outer_m.size() < 3) throw InputError("a rolling polygon needs at least 3 sides");
-    Roller r(body, fill, track, timing);
+    Roller r(body, fill, track);
     return r.run();
 }
 

@@ -32,13 +32,6 @@ enum class FillMotion {
     relevel,  // after each impact the fill's surface re-levels to horizontal
 };
 
-// How the rotation about each pivot is followed between impacts (docs/physics.md).
-enum class FaceTiming {
-    stepped,          // the pendulum's Taylor series stepped through every arc (pivot_motion.h)
-    energy_integral,  // each arc timed by quadrature of the energy integral (face_clock.h); the series
-                      // only for arcs with a turning point, or where the normal force turns negative
-};
-
 struct RollingRun {
     Measurements measured;
     // The model assumes the polygon stays on the ramp: false once the normal force it needs turns
@@ -57,15 +50,12 @@ struct RollingRun {
     double max_friction_share = 0.0;
     double max_impact_friction_share = 0.0;
     double fill_mass_kg = 0.0;
-    long steps = 0;                   // integrator steps and arcs timed from the energy integral
-    long timed_arcs = 0;              // of those, arcs timed from the energy integral
+    long steps = 0;                   // integrator steps
     double relevel_dissipated_J = 0.0;  // the part of the dissipated energy from re-levelling
 };
 
 // Runs to rest, the ramp's end or the time limit. Throws InputError if the release rotation puts the
 // next vertex below the ramp (more than one face past the starting one).
-// Both timings give the same run to about 1e-12 relative (tests/test_models.cpp checks it).
-RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track,
-                FaceTiming timing = FaceTiming::stepped);
+RollingRun roll(const RollingBody& body, FillMotion fill, const RampFrame& track);
 
 }  // namespace polyroll::models

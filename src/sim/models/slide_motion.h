@@ -1,15 +1,14 @@
-// A rigid body sliding on one vertex along a straight ramp with Coulomb friction, as a Taylor series.
-// With phi the direction of the vertex from the centre of mass (in the ramp frame, x down the slope, y
-// along its normal) and R its distance, the vertex stays on the ramp (y_c = -R sin phi) and the normal
-// force N, the friction F = f N (f = -+mu, against the slip) and the body's motion obey
+// A rigid body sliding on one vertex along a straight ramp with Coulomb friction: the right-hand side
+// for the Taylor series integrator (taylor_series.h). With phi the direction of the vertex from the
+// centre of mass (in the ramp frame, x down the slope, y along its normal) and R its distance, the
+// vertex stays on the ramp (y_c = -R sin phi) and the normal force N, the friction F = f N (f = -+mu,
+// against the slip) and the body's motion obey
 //   N (1/M + R^2 cos(phi) (cos(phi) - f sin(phi)) / I) = R omega^2 sin(phi) + g cos(theta),
 //   phi'' = N R (cos(phi) - f sin(phi)) / I,     x_c'' = g sin(theta) + f N / M,
-// an autonomous second-order equation in phi and a quadrature for the centre's x. The series of all
-// four comes from automatic differentiation, as the pendulum's does (pivot_motion.h): no trigonometry
-// after the start, its polynomial the dense output, its error per step near rounding.
+// an autonomous second-order equation in phi and a quadrature for the centre's x.
 #pragma once
 
-#include <array>
+#include "sim/models/taylor_series.h"
 
 namespace polyroll::models {
 
@@ -24,8 +23,6 @@ struct SlideBody {
 
 class SlideSeries {
 public:
-    static constexpr int kOrder = 20;
-
     // The series from phi, omega = phi', the centre's x and its velocity along the ramp.
     SlideSeries(const SlideBody& body, double phi0_rad, double omega0_rad_s, double x0_m, double vx0_m_s);
 
@@ -33,12 +30,10 @@ public:
         double phi = 0, omega = 0, sin_phi = 0, cos_phi = 0, x_m = 0, vx_m_s = 0;
     };
     Point at(double tau_s) const;
-    // The step over which the truncated series stays accurate to about 1e-16 rad (pivot_motion.h).
-    double accurate_step_s() const;
+    double accurate_step_s() const { return models::accurate_step_s(phi_); }
 
 private:
-    using Coefficients = std::array<double, kOrder + 1>;
-    Coefficients phi_{}, omega_{}, sin_{}, cos_{}, x_{}, vx_{};
+    Series phi_{}, omega_{}, sin_{}, cos_{}, x_{}, vx_{};
 };
 
 }  // namespace polyroll::models
