@@ -91,7 +91,7 @@ double min_ramp_curvature_deg_per_m(const Scene& s) { return -max_ramp_curvature
 // A trajectory row is written at a tracker step: no more rows than steps.
 double max_sample_hz(const Scene& s) { return s.fidelity.step_hz; }
 // The channel must be wider than the box is long (lids included), or the box would start inside its sides.
-double min_channel_width_m(const Scene& s) { return s.shell.depth_m + 2.0 * s.shell.lid_thickness_m; }
+double min_channel_width_m(const Scene& s) { return box_length_m(s.shell); }
 
 // --model's help: every model's description from the registry, then auto's rule; kept for the
 // table's lifetime, which holds it as a view.

@@ -41,7 +41,7 @@ json script_input(const Scene& s, double frames_hz) {
     // The shell's moment about an axis across the roll axis: walls and lids as a thin prism of the
     // outer radius and the box's length. The script blocks those rotations unless the box rolls in a channel
     // (dem3d.channel_width_m), where this estimate is what its yaw and tilt see.
-    const double length_m = s.shell.depth_m + 2.0 * s.shell.lid_thickness_m;
+    const double length_m = box_length_m(s.shell);
     const double cross_inertia = p.mass_kg * (p.outer_circumradius_m * p.outer_circumradius_m / 4.0 + length_m * length_m / 12.0);
 
     json j;
