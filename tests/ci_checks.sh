@@ -1,15 +1,16 @@
 #!/bin/sh
-# Hardening checks (issue 7), run by CI after the README's test command. In order:
-#   1. everything built with AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build-asan/),
-#      and the default test suite run under it, halting on the first report;
+# Hardening checks, run by CI after the README's test command. One build serves them all: the
+# hardening preset (clang, build-hardening/) compiles everything and the tests with AddressSanitizer +
+# UndefinedBehaviorSanitizer, the libFuzzer coverage and -Werror, and writes the compile_commands.json
+# clang-tidy reads (three builds did this before: g++ ASan, clang fuzz, clang -Werror). In order:
+#   1. the build (its -Werror is the clang warnings check), then the default test suite under the
+#      sanitizers, halting on the first report;
 #   2. LeakSanitizer over a run, a render and a short sweep with those binaries;
-#   3. the libFuzzer targets (preset fuzz, clang, build-fuzz/) run 60 s each on the seed corpus, both
-#      at once (each fuzzer uses one core);
-#   4. the warnings and static analysis of tests/lint_checks.sh (clang -Werror build, clang-tidy);
+#   3. the libFuzzer targets run 60 s each on the seed corpus, both at once (each fuzzer uses one core);
+#   4. clang-tidy (tests/lint_checks.sh, on the same build);
 #   5. the web page: the README's web command (the block after its "web-command" marker, so that the
 #      README's promise and CI cannot drift apart) builds build-web/, and tests/web_checks.sh plays it
 #      in headless Chromium.
-# The g++ build with -Werror is step 1 (the asan preset turns warnings into errors).
 # Any failure stops the script with a non-zero exit. Scratch files go to a temporary folder.
 set -eu
 cd "$(dirname "$0")/.."
@@ -25,25 +26,23 @@ export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_init_order=1:check_in
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
 
-step "1/5 ASan + UBSan build"
-cmake --preset asan >/dev/null
-cmake --build --preset asan
+step "1/5 the hardening build (clang: ASan + UBSan, libFuzzer coverage, -Werror)"
+cmake --preset hardening >/dev/null
+cmake --build --preset hardening
 step "1/5 default tests under ASan + UBSan"
 # The whole default suite, the Xvfb sandbox test included (see tests/test_sandbox_smoke.cpp for its leak check).
-ctest --test-dir build-asan -L default --output-on-failure -j2
+ctest --test-dir build-hardening -L default --output-on-failure -j2
 
 step "2/5 LeakSanitizer: a run, a render, a short sweep"
-build-asan/polyroll run --fill 0.25 --fidelity draft --time-limit 2 --out "$scratch/run" >/dev/null
-build-asan/polyroll render --fill 0.25 --fidelity draft --time-limit 1 --size 320x180 --fps 10 --hold 0 \
+build-hardening/polyroll run --fill 0.25 --fidelity draft --time-limit 2 --out "$scratch/run" >/dev/null
+build-hardening/polyroll render --fill 0.25 --fidelity draft --time-limit 1 --size 320x180 --fps 10 --hold 0 \
     --out "$scratch/render" >/dev/null
-if build-asan/polyroll sweep --help >/dev/null 2>&1; then
-    build-asan/polyroll sweep --sides 6 --fill 0,0.125 --angle 10,25 --fidelity draft --time-limit 0.5 -q \
+if build-hardening/polyroll sweep --help >/dev/null 2>&1; then
+    build-hardening/polyroll sweep --sides 6 --fill 0,0.125 --angle 10,25 --fidelity draft --time-limit 0.5 -q \
         --jobs 2 --out "$scratch/sweep" >/dev/null
 fi
 
-step "3/5 fuzz targets (clang, libFuzzer + ASan + UBSan), 60 s each, both at once"
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz
+step "3/5 fuzz targets (libFuzzer + ASan + UBSan), 60 s each, both at once"
 # Seeds: tests/fuzz/corpus_<target>/, and for the scene parser the bundled asset files themselves.
 fuzz() {
     target=$1
@@ -51,7 +50,7 @@ fuzz() {
     seeds="tests/fuzz/corpus_$target"
     [ "$target" = scene ] && seeds="$seeds assets"
     # shellcheck disable=SC2086
-    build-fuzz/fuzz_$target -max_total_time=60 -print_final_stats=1 -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
+    build-hardening/fuzz_$target -max_total_time=60 -print_final_stats=1 -timeout=5 -rss_limit_mb=2048 -max_len=4096 \
         -artifact_prefix="$scratch/artifacts/$target-" "$scratch/corpus_$target" $seeds \
         2>"$scratch/fuzz_$target.log"
 }
@@ -66,7 +65,7 @@ for target in scene cli; do
 done
 [ -z "$fuzz_failed" ] || { echo "ci_checks: fuzz target(s)$fuzz_failed failed (above)" >&2; exit 1; }
 
-step "4/5 warnings (clang -Werror) and clang-tidy"
+step "4/5 clang-tidy"
 tests/lint_checks.sh
 
 step "5/5 the web page: the README's web command, then headless Chromium"

@@ -1,17 +1,18 @@
 #!/bin/sh
-# Warnings and static analysis (issue 7), run by tests/ci_checks.sh (step 4) and by hand:
-#   1. a clang build with -Wall -Wextra -Wpedantic -Werror (preset clang-werror, build-clang/);
-#   2. clang-tidy with the checked-in .clang-tidy over every .cpp in src/; any finding is an error
-#      (WarningsAsErrors in .clang-tidy). clang-tidy costs about 20 CPU-seconds a file.
-# (g++ with the same warnings as errors is the asan preset, built by tests/ci_checks.sh step 1.)
+# Warnings and static analysis, run by tests/ci_checks.sh (step 4) and by hand:
+#   1. the hardening build (preset hardening, build-hardening/: clang with -Wall -Wextra -Wpedantic
+#      -Werror; nothing to do when ci_checks.sh has just built it);
+#   2. clang-tidy with the checked-in .clang-tidy over every .cpp in src/, reading that build's
+#      compile_commands.json; any finding is an error (WarningsAsErrors in .clang-tidy). clang-tidy
+#      costs about 20 CPU-seconds a file.
 set -eu
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
 step() { echo "== lint_checks [$(( $(date +%s) - t0 )) s]: $*"; }
 
-step "1/2 clang build, -Wall -Wextra -Wpedantic -Werror"
-cmake --preset clang-werror >/dev/null
-cmake --build --preset clang-werror
+step "1/2 the hardening build (clang, -Wall -Wextra -Wpedantic -Werror)"
+cmake --preset hardening >/dev/null
+cmake --build --preset hardening
 
 # src/web/ is the WebAssembly side of the platform seams: emscripten compiles it (web/CMakeLists.txt,
 # -Wall -Wextra); it is not in this build's compile_commands.json, so clang-tidy cannot read it here.
@@ -21,7 +22,7 @@ step "2/2 clang-tidy over src/ (without src/web/)"
 log=$(mktemp "${TMPDIR:-/tmp}/polyroll-clang-tidy.XXXXXX")
 trap 'rm -f "$log"' EXIT
 status=0
-find src -name '*.cpp' -not -path 'src/web/*' | sort | xargs -P 2 -n 4 clang-tidy -p build-clang --quiet >"$log" 2>&1 || status=$?
+find src -name '*.cpp' -not -path 'src/web/*' | sort | xargs -P 2 -n 4 clang-tidy -p build-hardening --quiet >"$log" 2>&1 || status=$?
 grep -v ' warnings\? generated\.$' "$log" || true
 [ "$status" -eq 0 ] || { echo "lint_checks: clang-tidy reported findings (above)" >&2; exit 1; }
 

@@ -25,6 +25,20 @@
 
 namespace polyroll::test {
 
+// Whether this build runs under AddressSanitizer: g++ says so by __SANITIZE_ADDRESS__, clang 14 only
+// by __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 // The default scene with `overrides` (a scene document) on top, resolved and validated.
 inline Scene scene_with(const nlohmann::ordered_json& overrides) {
     return resolve_scene({SceneLayer{overrides, "test", {}}});

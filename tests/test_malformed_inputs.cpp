@@ -23,17 +23,7 @@ namespace {
 
 // Sanitizers slow start-up several times over and need terabytes of address space, so under them the
 // time bound is looser and the memory bound is not set.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using polyroll::test::kSanitized;
 // A guard against hanging (reading /dev/zero for ever, waiting on a FIFO), not a speed target: on a
 // shared 2-core machine a refusal measured 1.0-1.3 s under load, so a bound near the normal 0.05 s
 // fails for the machine, not the program. Speed is measured by benchmarks.

@@ -106,7 +106,7 @@ TEST_CASE("polyroll run --model dem3d: a missing Yade or a bad 3D field is one l
     CHECK(none.exit_code == 2);
     CHECK(none.out.find("needs Yade, which is not installed: run third_party/setup.sh") != std::string::npos);
     CHECK(std::count(none.out.begin(), none.out.end(), '\n') == 1);
-    for (const char* bad : {"--contact-time 5", "--time-step-share 0.9", "--edge-radius 0"}) {
+    for (const char* bad : {"--contact-time 5", "--time-step-share 0.9", "--edge-radius 0", "--channel-width 0.05"}) {
         const Output o = run_polyroll(std::string("run --model dem3d ") + bad);
         INFO(bad << ": " << o.out);
         CHECK(o.exit_code == 2);
@@ -137,7 +137,27 @@ TEST_CASE("polyroll run --model dem3d writes the usual files, the 3D engine and 
     const std::string impacts = polyroll::test::read_file(dir / "impacts.csv");
     CHECK(impacts.rfind("impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms\n1,", 0) == 0);
     CHECK(impacts.find(",,\n") == std::string::npos);  // the delayed reading is there
+    CHECK(!summary["dem3d_engine"].contains("channel"));  // held in its plane: nothing moves out of it
+    CHECK(o.out.find("in the channel") == std::string::npos);
     std::filesystem::remove_all(dir);
+
+    // In the experiment's channel the box is free in all six directions and its sides keep it in the
+    // track: it moves less across than the clearance (7.9 cm channel, 6.4 cm box) and does not tip over.
+    const auto in_channel = fresh_dir("dem3d-channel");
+    const Output ch = run_polyroll("run --model dem3d --angle 14 --channel-width 0.079 --out " + in_channel.string());
+    INFO(ch.out);
+    REQUIRE(ch.exit_code == 0);
+    CHECK(ch.out.find("  in the channel     moved ") != std::string::npos);
+    const auto ch_summary = nlohmann::json::parse(polyroll::test::read_file(in_channel / "summary.json"));
+    REQUIRE(ch_summary["dem3d_engine"].contains("channel"));
+    const auto& motion = ch_summary["dem3d_engine"]["channel"];
+    CHECK(motion["steps"].get<long>() > 100);
+    CHECK(motion["steps_touching"].get<long>() <= motion["steps"].get<long>());
+    CHECK(motion["max_offset_m"].get<double>() >= 0.0);
+    CHECK(motion["max_offset_m"].get<double>() < 0.5 * (0.079 - 0.064) + 0.001);
+    CHECK(motion["max_tilt_deg"].get<double>() < 10.0);
+    CHECK(ch_summary["scene"]["dem3d"]["channel_width_m"] == 0.079);
+    std::filesystem::remove_all(in_channel);
 
     // compare leaves it out unless asked, then runs it last, into dem3d/.
     const auto cmp = fresh_dir("dem3d-compare");

@@ -60,12 +60,9 @@ const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
 // GLFW before exit, leaves allocations that LeakSanitizer can only attribute to an "<unknown module>",
 // which no suppression can name. The leak checks of a run, a render and a sweep are in tests/ci_checks.sh.
 std::string sandbox_env() {
-#if defined(__SANITIZE_ADDRESS__)
+    if (!polyroll::test::kSanitized) return "";
     const char* opts = std::getenv("ASAN_OPTIONS");
     return "ASAN_OPTIONS='" + std::string(opts ? opts : "") + ":detect_leaks=0' ";
-#else
-    return "";
-#endif
 }
 
 TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[app][sandbox]") {

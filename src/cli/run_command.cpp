@@ -118,6 +118,13 @@ void print_summary(const RunResult& r, const std::string& out) {
                    model_traits(model_that_ran(r)).fill_description, to_string(model_that_ran(r)));
     else
         fmt::print("  grains             none (empty shell)\n");
+    if (r.dem3d && r.dem3d->channel) {
+        const auto& c = *r.dem3d->channel;
+        fmt::print("  in the channel     moved {:.1f} mm across, yawed {:.2f} deg, tilted {:.2f} deg; touched its sides in "
+                   "{} of {} steps (at most {:.3g} N)\n",
+                   1000.0 * c.max_offset_m, c.max_yaw_deg, c.max_tilt_deg, c.steps_touching, c.steps,
+                   c.max_side_force_N);
+    }
     // Joined as paths: --out runs/a/ must not print runs/a//summary.json.
     if (!out.empty())
         fmt::print("  files              {}, trajectory.csv, impacts.csv\n",

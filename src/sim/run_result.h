@@ -35,6 +35,15 @@ struct RunResult {
         std::string yade_version;
         double time_step_s = 0.0;
         double cpu_time_s = 0.0;  // the subprocess's own CPU time (wall_time_s adds starting it)
+        // In a channel (dem3d.channel_width_m): how far the box moved out of its plane, and how often
+        // and how hard its ends touched the channel's sides (one reading per tracker step).
+        struct ChannelMotion {
+            double max_offset_m = 0.0;  // across the track, from where it was released
+            double max_yaw_deg = 0.0, max_tilt_deg = 0.0;  // its roll axis turned about the ramp's normal; down the ramp
+            long steps = 0, steps_touching = 0;
+            double max_side_force_N = 0.0, side_impulse_N_s = 0.0;
+        };
+        std::optional<ChannelMotion> channel;
     };
     std::optional<Dem3dEngine> dem3d;
     // Set for a run of `--model auto` (scene.run.model == automatic): which model ran, and why.

@@ -92,6 +92,9 @@ struct Dem3dParams {
     double contact_time_s = 0.0;    // duration of a grain's collision (linear spring-dashpot)
     double time_step_share = 0.0;   // the DEM time step as a share of contact_time_s
     double edge_radius_m = 0.0;     // radius of the spheres along the shell's outer edges (its ramp contacts)
+    // The width of the track's channel the box rolls in: its sides keep the box, free in all six
+    // directions, in the track. Unset: no channel, the box held in its plane as the 2D cross-section is.
+    std::optional<double> channel_width_m;
 };
 
 struct RunParams {

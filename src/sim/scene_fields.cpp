@@ -90,6 +90,8 @@ double max_ramp_curvature_deg_per_m(const Scene& s) {
 double min_ramp_curvature_deg_per_m(const Scene& s) { return -max_ramp_curvature_deg_per_m(s); }
 // A trajectory row is written at a tracker step: no more rows than steps.
 double max_sample_hz(const Scene& s) { return s.fidelity.step_hz; }
+// The channel must be wider than the box is long (lids included), or the box would start inside its sides.
+double min_channel_width_m(const Scene& s) { return box_length_m(s.shell); }
 
 // --model's help: every model's description from the registry, then auto's rule; kept for the
 // table's lifetime, which holds it as a view.
@@ -243,6 +245,12 @@ std::vector<SceneField> make_table() {
         Row("dem3d.edge_radius_m", T::number, member<&Scene::dem3d, &Dem3dParams::edge_radius_m>())
             .range(0.0001, 0.005).unit("m").flag("--edge-radius")
             .help("3D reference: radius of the small spheres along the shell's outer edges that touch the ramp"),
+        Row("dem3d.channel_width_m", T::optional_number, member<&Scene::dem3d, &Dem3dParams::channel_width_m>())
+            .range(0.0, 1.0).min_open()
+            .min_of(min_channel_width_m, {"shell.depth_m", "shell.lid_thickness_m"}).unit("m")
+            .flag("--channel-width")
+            .help("3D reference: width of the track's channel; the box, free in all six directions, rolls "
+                  "between its sides. null: the box held in its plane, as the 2D cross-section is"),
     };
 }
 

@@ -26,6 +26,9 @@ struct ShellProperties {
 
 ShellProperties shell_properties(const ShellParams& shell);
 
+// The box's whole length along the roll axis: the inside depth and both lids.
+inline double box_length_m(const ShellParams& shell) { return shell.depth_m + 2.0 * shell.lid_thickness_m; }
+
 // The rigid impact model's kinetic-energy ratio over one face impact for a body symmetric about the
 // polygon's centre (docs/physics.md): Q = ((I0 + M R^2 cos(2 pi/n)) / (I0 + M R^2))^2.
 double rigid_impact_energy_ratio(int sides, double mass_kg, double inertia_kg_m2, double pivot_radius_m);

@@ -39,8 +39,9 @@ json script_input(const Scene& s, double frames_hz) {
     const ShellPose pour = pour_pose(s, p);
     const ShellPose release = release_pose(s, p);
     // The shell's moment about an axis across the roll axis: walls and lids as a thin prism of the
-    // outer radius and the box's length. Only for completeness: the script blocks those rotations.
-    const double length_m = s.shell.depth_m + 2.0 * s.shell.lid_thickness_m;
+    // outer radius and the box's length. The script blocks those rotations unless the box rolls in a channel
+    // (dem3d.channel_width_m), where this estimate is what its yaw and tilt see.
+    const double length_m = box_length_m(s.shell);
     const double cross_inertia = p.mass_kg * (p.outer_circumradius_m * p.outer_circumradius_m / 4.0 + length_m * length_m / 12.0);
 
     json j;
@@ -76,7 +77,8 @@ json script_input(const Scene& s, double frames_hz) {
                  {"restitution", m.restitution}};
     j["dem3d"] = {{"contact_time_s", s.dem3d.contact_time_s},
                   {"time_step_share", s.dem3d.time_step_share},
-                  {"edge_radius_m", s.dem3d.edge_radius_m}};
+                  {"edge_radius_m", s.dem3d.edge_radius_m},
+                  {"channel_width_m", s.dem3d.channel_width_m.value_or(0.0)}};  // 0: no channel
     j["step_hz"] = s.fidelity.step_hz;
     j["time_limit_s"] = s.run.time_limit_s;
     j["settle_time_s"] = s.run.settle_time_s;

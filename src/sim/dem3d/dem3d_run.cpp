@@ -129,6 +129,18 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
     engine.yade_version = setup.value("yade_version", "");
     engine.time_step_s = setup.value("time_step_s", 0.0);
     engine.cpu_time_s = setup.value("cpu_time_s", 0.0);
+    if (setup.contains("channel")) {
+        const auto& c = setup["channel"];
+        RunResult::Dem3dEngine::ChannelMotion m;
+        m.max_offset_m = c.value("max_offset_m", 0.0);
+        m.max_yaw_deg = c.value("max_yaw_deg", 0.0);
+        m.max_tilt_deg = c.value("max_tilt_deg", 0.0);
+        m.steps = c.value("rows", 0L);
+        m.steps_touching = c.value("rows_touching", 0L);
+        m.max_side_force_N = c.value("max_side_force_N", 0.0);
+        m.side_impulse_N_s = c.value("side_impulse_N_s", 0.0);
+        engine.channel = m;
+    }
     r.dem3d = engine;
 
     TrackRules rules;

@@ -101,6 +101,7 @@ NUMBERS = {
     'dem3d.contact_time_s': ('contact_time_s', 0, None, True),
     'dem3d.time_step_share': ('time_step_share', 0, 1, True),
     'dem3d.edge_radius_m': ('edge_radius_m', 0, None, True),
+    'dem3d.channel_width_m': ('channel_width_m', 0, None, False),
     'step_hz': ('step_hz', 0, None, True),
     'time_limit_s': ('time_limit_s', 0, None, True),
     'settle_time_s': ('settle_time_s', 0, None, False),
@@ -129,6 +130,9 @@ def load_config(path):
     c['pose'] = _field(cfg, 'release.pose', str)
     if c['pose'] not in ('vertex', 'face', 'tipped'):
         raise InputError('release.pose must be "vertex", "face" or "tipped"')
+    length = c['inner_depth_m'] + 2 * c['lid_thickness_m']
+    if 0 < c['channel_width_m'] <= length:
+        raise InputError('dem3d.channel_width_m = %r m: no wider than the box (%r m long)' % (c['channel_width_m'], length))
     return c
 
 
@@ -270,6 +274,16 @@ def build_scene(c, rng):
     # The ramp: an infinite plane y = 0 (the run ends at end_centre_x_m, before the ramp's real end).
     ramp = O.bodies.append(utils.wall(0.0, axis=1, sense=1, material=m_ramp, mask=MASK_RAMP, color=COLOR))
     O.bodies[ramp].state.mass = RAMP_MASS_KG
+    # The track's channel (channel_width_m > 0): its two sides, planes across the roll axis at
+    # z = +-width / 2, of the ramp's material (the experiment's channel is covered with the same
+    # sandpaper). Only the edge spheres at the box's ends reach them. 0: no sides, and the box is held
+    # in its plane instead (release()).
+    channel = []
+    if c['channel_width_m'] > 0:
+        for sense, z in ((1, -c['channel_width_m'] / 2), (-1, c['channel_width_m'] / 2)):
+            side = O.bodies.append(utils.wall(z, axis=2, sense=sense, material=m_ramp, mask=MASK_RAMP, color=COLOR))
+            O.bodies[side].state.mass = RAMP_MASS_KG
+            channel.append(side)
 
     # The shell, built in the global frame at the release pose.
     a0, c0 = c['angle_rad'], c['centre']
@@ -319,7 +333,7 @@ def build_scene(c, rng):
         grains.append(O.bodies.append(b))
     return {'clump': clump, 'members': member_ids, 'grains': grains, 'radii': radii, 'shrink': shrink,
             'edges': member_ids[n_facets:], 'lids': member_ids[2 * n:n_facets], 'collider': collider,
-            'steps_per_row': steps_per_row}
+            'steps_per_row': steps_per_row, 'channel': channel}
 
 
 def advance(steps):
@@ -455,6 +469,7 @@ def tip_onto_vertex(c, everything):
 def release(c, sc):
     """Tip (tipped release), turn to balance (vertex and tipped), set the shell down on the ramp, zero
     all motion, free the in-plane DOFs. Returns the balance correction (deg) and the shell's angle at t = 0."""
+    import yade
     from yade import O
     everything = [sc['clump']] + list(sc['members']) + list(sc['grains'])
     if c['pose'] == 'tipped':
@@ -465,7 +480,20 @@ def release(c, sc):
     gap = min(O.bodies[i].state.pos[1] - O.bodies[i].shape.radius for i in sc['edges'])
     move_rigidly(everything, (0.0, 0.0), 0.0, -gap)
     sc['collider']()
-    O.bodies[sc['clump']].state.blockedDOFs = 'zXY'
+    # In a channel the box is free in all six directions, kept in the track by the channel's sides;
+    # without one it turns and moves only in its plane, as the 2D cross-section does.
+    st = O.bodies[sc['clump']].state
+    if sc['channel']:
+        st.blockedDOFs = ''
+    else:
+        st.blockedDOFs = 'zXY'
+        # With any rotation blocked Yade integrates the body by its spherical rule, which divides each
+        # global torque component by the principal moment of the same index, whichever local axis that
+        # is (here the roll moment lies on local x, global z's torque would be divided by a cross
+        # moment, 27% less for the small hexagon). Turning about global z alone, the box needs the roll
+        # moment on every index.
+        roll = c['inertia_roll_kg_m2']
+        st.inertia = yade.Vector3(roll, roll, roll)
     return math.degrees(delta), c['angle_rad'] + delta
 
 
@@ -487,15 +515,29 @@ class Tracker:
         self.pe0 = None
         self.shell = O.bodies[sc['clump']].state
         self.grains = [O.bodies[i].state for i in sc['grains']]  # cached: a lookup per grain per row is slow
+        self.free = bool(sc['channel'])  # all six directions free (a channel), or only the plane's three
+
+    def roll_since_release(self, q):
+        """The turn about the roll axis since t = 0 (rad, in (-pi, pi])."""
+        if not self.free:
+            return 2 * math.atan2(q[2], q[3])  # a turn about z alone
+        # Free in a channel: the direction of the box's own x axis in the ramp's plane, so that a
+        # small yaw or tilt does not count as roll.
+        import yade
+        a = q * yade.Vector3(1, 0, 0)
+        return math.atan2(a[1], a[0])
 
     def row(self):
         c, st = self.c, self.shell
-        q = st.ori * self.q0  # rotation since t = 0, about z only (X, Y blocked)
-        rel = 2 * math.atan2(q[2], q[3])
+        q = st.ori * self.q0  # rotation since t = 0
+        rel = self.roll_since_release(q)
         self.turn += (rel - self.turn + math.pi) % (2 * math.pi) - math.pi  # unwrap
         angle = self.angle0 + self.turn
         x, y, vx, vy, w = st.pos[0], st.pos[1], st.vel[0], st.vel[1], st.angVel[2]
         ke = 0.5 * c['mass_kg'] * (vx * vx + vy * vy) + 0.5 * c['inertia_roll_kg_m2'] * w * w
+        if self.free:  # the motion out of the plane: across the track, yaw and tilt
+            wx, wy = st.angVel[0], st.angVel[1]
+            ke += 0.5 * c['mass_kg'] * st.vel[2] ** 2 + 0.5 * c['inertia_cross_kg_m2'] * (wx * wx + wy * wy)
         pe = self.pe(c['mass_kg'], (x, y))
         inside, half = 0, c['inner_depth_m'] / 2 + self.tol
         for b in self.grains:
@@ -512,7 +554,42 @@ class Tracker:
         return vals + (inside,)
 
 
-def simulate(c, sc, angle0, states, frames, lids):
+class ChannelLog:
+    """How the box moved in the track's channel: its largest offset across the track, yaw and tilt,
+    and how often and how hard its ends touched the channel's sides (one reading a row)."""
+
+    def __init__(self, sc):
+        from yade import O
+        self.sides, self.shell = sc['channel'], O.bodies[sc['clump']].state
+        self.z0, self.q0 = self.shell.pos[2], self.shell.ori.conjugate()
+        self.rows = self.touching = 0
+        self.max_offset = self.max_yaw = self.max_tilt = self.max_force = 0.0
+        self.impulse = 0.0  # sum of the sides' normal force over the rows, times the row's time
+
+    def add_row(self, dt_row):
+        import yade
+        from yade import O
+        st = self.shell
+        self.rows += 1
+        self.max_offset = max(self.max_offset, abs(st.pos[2] - self.z0))
+        # The box's roll axis (its own z) against the track's: yaw is its turn about the ramp's normal
+        # (y), tilt about the direction down the ramp (x).
+        axis = (st.ori * self.q0) * yade.Vector3(0, 0, 1)
+        self.max_yaw = max(self.max_yaw, abs(math.degrees(math.atan2(axis[0], axis[2]))))
+        self.max_tilt = max(self.max_tilt, abs(math.degrees(math.atan2(axis[1], axis[2]))))
+        force = sum(abs(i.phys.normalForce[2]) for s in self.sides for i in O.interactions.withBody(s) if i.isReal)
+        if force > 0:
+            self.touching += 1
+        self.max_force = max(self.max_force, force)
+        self.impulse += force * dt_row
+
+    def summary(self):
+        return {'rows': self.rows, 'rows_touching': self.touching, 'max_offset_m': self.max_offset,
+                'max_yaw_deg': self.max_yaw, 'max_tilt_deg': self.max_tilt,
+                'max_side_force_N': self.max_force, 'side_impulse_N_s': self.impulse}
+
+
+def simulate(c, sc, angle0, states, frames, lids, channel=None):
     """Step from the release to the end, writing one row per 1/step_hz; returns how the run ended.
     lids (LidLoad) adds the lid load of every LID_LOAD_EVERY_ROWS-th row to its means."""
     import yade
@@ -526,6 +603,8 @@ def simulate(c, sc, angle0, states, frames, lids):
         row = tr.row()
         if k % LID_LOAD_EVERY_ROWS == 0:
             lids.add_row(newton.gravity)
+        if channel:
+            channel.add_row(1.0 / c['step_hz'])
         states.write(','.join(map(repr, (t,) + row)) + '\n')
         if x0 is None:
             x0 = row[0]
@@ -589,7 +668,8 @@ def run(in_path, out_dir):
         states.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
         if frames:
             frames.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
-        end = simulate(c, sc, angle0, states, frames, lids)
+        channel = ChannelLog(sc) if sc['channel'] else None
+        end = simulate(c, sc, angle0, states, frames, lids, channel)
     (run_mean, run_mean_formula), (end_load, end_formula) = lids.means(), lids.now(O.engines[-1].gravity)
     setup = {'grains': len(sc['grains']), 'fill_mass_kg': sum(O.bodies[i].state.mass for i in sc['grains']),
              'settle_time_s': settle_time, 'settled': settled, 'balance_correction_deg': correction_deg,
@@ -600,6 +680,8 @@ def run(in_path, out_dir):
              'lid_load_N': {'poured': poured[0], 'poured_formula': poured[1],
                             'run_mean': run_mean, 'run_mean_formula': run_mean_formula,
                             'end': end_load, 'end_formula': end_formula}}
+    if channel:
+        setup['channel'] = channel.summary()
     with AtomicFile(os.path.join(out_dir, 'setup.json')) as f:
         f.write(json.dumps(setup, indent=2) + '\n')
 
