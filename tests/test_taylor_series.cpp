@@ -94,4 +94,35 @@ TEST_CASE("the root finder locates the first crossing to rounding or to its tole
     CHECK(at == Approx(0.3).margin(1e-15));
     // Already there at the bracket's start.
     CHECK(models::first_root(f, root + 0.1, f(root + 0.1), 1.0, f(1.0), 0.0) == root + 0.1);
+    // With the derivative (a series' value and rate): Newton steps, fewer evaluations, the same point
+    // to rounding and still where the event has happened.
+    auto sloped = [](double x) { return models::Slope{std::cos(x) - x, -std::sin(x) - 1.0}; };
+    long newton_evaluations = 0;
+    const double xn = models::first_root(sloped, 0.0, f(0.0), 1.0, f(1.0), 0.0, newton_evaluations);
+    CHECK(xn == Approx(root).margin(1e-15));
+    CHECK(f(xn) <= 0.0);
+    CHECK(newton_evaluations < evaluations);
+    const double coarse_newton = models::first_root(sloped, 0.0, f(0.0), 1.0, f(1.0), 1e-6);
+    CHECK(coarse_newton >= root);
+    CHECK(coarse_newton - root <= 1e-6);
+}
+
+TEST_CASE("a series built for a short step stops at a lower order and agrees with the full one", "[models][series]") {
+    const double a = 190.0, psi0 = -0.3, rate0 = 5.0;
+    const models::PendulumSeries full(psi0, rate0, a);
+    REQUIRE(full.order() == models::kSeriesOrder);
+    for (double want : {0.002, 0.01, 0.03}) {
+        INFO("step wanted " << want << " s");
+        const models::PendulumSeries s(psi0, rate0, a, want);
+        CHECK(s.order() < models::kSeriesOrder);
+        CHECK(s.accurate_step_s() == want);
+        for (double tau : {0.25 * want, want}) {
+            CHECK(std::fabs(s.psi(tau) - full.psi(tau)) <= 1e-14);
+            CHECK(std::fabs(s.rate(tau) - full.rate(tau)) <= 1e-12);
+        }
+    }
+    // Wanting more than the whole order is accurate over: the whole order's step, for the caller to cap.
+    const models::PendulumSeries far(psi0, rate0, a, 10.0);
+    CHECK(far.order() == models::kSeriesOrder);
+    CHECK(far.accurate_step_s() == full.accurate_step_s());
 }

@@ -29,6 +29,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Points per integrator step at which events and the normal force are checked; the series is exact
 // between them, and a turning point between two points is found and checked too.
 constexpr int kCheckPoints = 2;
+// The step a series is built for, as a share of the next face's time estimated from the mean of the
+// fastest and slowest rates on the way (expected_event_s): above 1, as that mean overestimates the
+// rate where the body climbs slowly.
+constexpr double kExpectedEventMargin = 1.25;
+// Never shorter: a face rounding a hair ahead would otherwise ask for steps that do not move the body.
+constexpr double kShortestWantedStepS = 1e-6;
 // Longest integrator step: keeps the event checks dense on a slow, nearly linear stretch.
 constexpr double kMaxStepS = 0.1;
 // A run needing more steps than this is stuck (for example in ever-faster rocking): ends as diverged.
@@ -63,6 +69,11 @@ private:
     double centre_x() const { return piv_.k * side_ + centre_from_pivot(phi_).x; }
     double kinetic() const { return 0.5 * piv_.inertia * omega_ * omega_; }
     double potential_abs(double phi) const;
+    double potential_abs(double cos_phi, double sin_phi) const;
+    // v turned by -phi, given its cosine and sine: geom::rotate(v, -phi) to the last bit.
+    static Vec2 turned_back(Vec2 v, double cos_phi, double sin_phi) {
+        return {cos_phi * v.x + sin_phi * v.y, cos_phi * v.y - sin_phi * v.x};
+    }
     TrajectorySample sample(double t, double phi, double omega) const;
     TrajectorySample sample(double t) const { return sample(t, phi_, omega_); }
     // The normal force the pivot must supply at rotation psi (its sine and cosine) turning at the
@@ -95,6 +106,9 @@ private:
     };
     void check_normal(const PendulumSeries& s, const StepEvent& step);
     StepEvent find_event(const PendulumSeries& s, double h) const;
+    // About when the current pivot's next face comes, from the energy: the step a series is built for
+    // (a little longer, so one step mostly reaches it). Infinite where the body would turn back first.
+    double expected_event_s() const;
     void handle(Event e);
     void note_negative_normal();  // on the current pivot (hop_pivots)
     void note_friction(double sin_psi, double cos_psi, double rate_rad_s);  // max_friction_share
@@ -134,6 +148,7 @@ private:
     long next_sample_ = 0;
     bool running_ = true;
     long last_hop_pivot_ = std::numeric_limits<long>::min();
+    bool start_checked_ = false;  // the next step's start was the last step's last checkpoint
     RollingRun out_;
 };
 
@@ -188,22 +203,26 @@ Roller::Pivot Roller::make_pivot(long k) const {
     return p;
 }
 
-double Roller::potential_abs(double phi) const {
-    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + geom::rotate(body_.centre_of_mass_m - vertex(piv_.k), -phi);
+double Roller::potential_abs(double phi) const { return potential_abs(std::cos(phi), std::sin(phi)); }
+
+double Roller::potential_abs(double cos_phi, double sin_phi) const {
+    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + turned_back(body_.centre_of_mass_m - vertex(piv_.k), cos_phi, sin_phi);
     return body_.mass_kg * g_ * geom::dot(cm, up_world_);
 }
 
 TrajectorySample Roller::sample(double t, double phi, double omega) const {
     TrajectorySample s;
     s.time_s = t;
-    const Vec2 c = centre_from_pivot(phi);
+    // The centre and the centre of mass turned alike: one sine and cosine for both.
+    const double cos_phi = std::cos(phi), sin_phi = std::sin(phi);
+    const Vec2 c = turned_back(-1.0 * vertex(piv_.k), cos_phi, sin_phi);
     s.position_m = piv_.k * side_ + c.x - start_x_;
     s.speed_m_s = omega * c.y;  // the centre turns about the pivot: v = omega x (centre - pivot)
     // From the scene's release pose (release_pose(), what rolling_pose() draws from): the tipped
     // release's balance turn shows as a first row turned by it.
     s.angle_deg = (phi - tr_.start_rotation_rad) * 180.0 / kPi;
     s.kinetic_J = 0.5 * piv_.inertia * omega * omega;
-    s.potential_J = potential_abs(phi) - u0_;
+    s.potential_J = potential_abs(cos_phi, sin_phi) - u0_;
     s.dissipated_J = dissipated_;
     return s;
 }
@@ -277,17 +296,29 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
     for (int i = 1; i <= kCheckPoints; ++i) {
         double tb = h * i / kCheckPoints, pb = 0.0, rb = 0.0;
         s.psi_and_rate(tb, pb, rb);
-        if (!crossed(pb) && ra * rb < 0.0) {
+        if (ra * rb < 0.0) {
             // A turning point inside: the extreme value may lie beyond a boundary though both ends do
             // not, and the normal force is checked there too.
             const double turn = ra > 0.0 ? 1.0 : -1.0;
-            const double te = first_root([&](double t) { return turn * s.rate(t); }, ta, turn * ra, tb, turn * rb, 0.0);
+            auto rate = [&](double t) {
+                Slope v;
+                s.rate_and_acceleration(t, v.value, v.derivative);
+                return Slope{turn * v.value, turn * v.derivative};
+            };
+            const double te = first_root(rate, ta, turn * ra, tb, turn * rb, 0.0);
             const double pe = s.psi(te);
             if (crossed(pe)) {
                 tb = te;
                 pb = pe;
             } else {
                 out.add(te, pe);
+                // Crossed after the turn: searched from the turn on. A step that starts on a face
+                // (just landed) and rocks back onto it would otherwise find the face at tau = 0,
+                // moving away from it: an impact that never happened.
+                if (crossed(pb)) {
+                    ta = te;
+                    pa = pe;
+                }
             }
         }
         if (crossed(pb)) {
@@ -295,8 +326,12 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
             const double target = upper ? hi : lo;
             // target - psi going up, psi - target going down: positive until the crossing.
             const double side = upper ? 1.0 : -1.0;
-            const double tau = first_root([&](double t) { return side * (target - s.psi(t)); }, ta,
-                                          side * (target - pa), tb, side * (target - pb), 0.0);
+            auto gap = [&](double t) {
+                double psi = 0.0, rate = 0.0;
+                s.psi_and_rate(t, psi, rate);
+                return Slope{side * (target - psi), -side * rate};
+            };
+            const double tau = first_root(gap, ta, side * (target - pa), tb, side * (target - pb), 0.0);
             out.add(tau, target);
             out.event = !upper ? Event::backward : (piv_.psi_end <= piv_.psi_hi ? Event::end : Event::forward);
             out.tau = tau;
@@ -311,11 +346,30 @@ Roller::StepEvent Roller::find_event(const PendulumSeries& s, double h) const {
     return out;
 }
 
+double Roller::expected_event_s() const {
+    if (omega_ == 0.0) return kInf;
+    const double psi0 = psi(), target = omega_ > 0.0 ? std::min(piv_.psi_hi, piv_.psi_end) : piv_.psi_lo;
+    // Slowest where the centre of mass is highest: over the top if the arc passes it, else at the end
+    // nearer the top.
+    const double cos0 = std::cos(psi0);
+    const double cos_highest =
+        psi0 * target <= 0.0 ? 1.0 : (std::fabs(target) < std::fabs(psi0) ? std::cos(target) : cos0);
+    const double w2_min = omega_ * omega_ + 2.0 * piv_.a * (cos0 - cos_highest);
+    if (!(w2_min > 0.0)) return kInf;
+    const double expected = std::fabs(target - psi0) / (0.5 * (std::fabs(omega_) + std::sqrt(w2_min)));
+    return std::max(kExpectedEventMargin * expected, kShortestWantedStepS);
+}
+
 void Roller::check_normal(const PendulumSeries& s, const StepEvent& step) {
-    const double c = 0.5 * omega_ * omega_ + piv_.a * std::cos(step.path[0].psi);
-    for (int i = 0; i < step.path_size; ++i) {
+    double sin0 = 0.0, cos0 = 0.0;
+    s.sin_cos_psi(0.0, sin0, cos0);
+    const double c = 0.5 * omega_ * omega_ + piv_.a * cos0;
+    // A step that carries on from the previous one on the same pivot starts where that one's last
+    // checkpoint was.
+    for (int i = start_checked_ ? 1 : 0; i < step.path_size; ++i) {
         const Checkpoint& p = step.path[static_cast<size_t>(i)];
-        const double sp = std::sin(p.psi), cp = std::cos(p.psi);
+        double sp = 0.0, cp = 0.0;
+        s.sin_cos_psi(p.tau, sp, cp);  // the series' own sine and cosine: no trigonometry
         const double w2 = energy_w2(cp, c), rate = std::sqrt(w2);
         const double nf = normal_force(sp, cp, w2);
         out_.min_normal_force_N = std::min(out_.min_normal_force_N, nf);
@@ -335,6 +389,7 @@ void Roller::check_normal(const PendulumSeries& s, const StepEvent& step) {
             out_.model_invalid_time_s = t_ + when;
         }
     }
+    start_checked_ = step.event == Event::none;
 }
 
 void Roller::note_negative_normal() {
@@ -348,7 +403,9 @@ void Roller::emit_series_samples(const PendulumSeries& s, double t_end) {
         const double ts = tr_.sample_time(next_sample_);
         if (ts >= t_end) break;
         const double tau = std::max(0.0, ts - t_);
-        out_.measured.trajectory.push_back(sample(ts, s.psi(tau) + piv_.phi_top, s.rate(tau)));
+        double psi = 0.0, rate = 0.0;
+        s.psi_and_rate(tau, psi, rate);
+        out_.measured.trajectory.push_back(sample(ts, psi + piv_.phi_top, rate));
         ++next_sample_;
     }
 }
@@ -436,10 +493,15 @@ void Roller::land(long face) {
     }
     // Confined: too little energy to leave the face either way, so it rocks on it and loses energy at
     // every landing. It has stopped (as the tracker sees it) once its speeds are below the rest speed.
+    // The speeds first: every landing asks, and they are the cheapest to work out (the barriers make
+    // two pivots).
+    const double rim_speed = std::fabs(omega_) * radius_;
+    if (!(rim_speed < tr_.rest_speed_m_s)) return;
+    const double centre_speed = std::fabs(sample(t_).speed_m_s);
+    if (!(centre_speed < tr_.rest_speed_m_s)) return;
     const double ke = kinetic();
     const bool confined = ke < barrier(face + 1, face, true) && ke < barrier(face, face, false);
-    const double centre_speed = std::fabs(sample(t_).speed_m_s), rim_speed = std::fabs(omega_) * radius_;
-    if (confined && centre_speed < tr_.rest_speed_m_s && rim_speed < tr_.rest_speed_m_s) rest();
+    if (confined) rest();
 }
 
 void Roller::rest() {
@@ -501,7 +563,7 @@ RollingRun Roller::run() {
             running_ = false;
             break;
         }
-        const PendulumSeries s(psi(), omega_, piv_.a);
+        const PendulumSeries s(psi(), omega_, piv_.a, std::min({expected_event_s(), kMaxStepS, left}));
         const double h = std::min({s.accurate_step_s(), kMaxStepS, left});
         const StepEvent found = find_event(s, h);
         const Event event = found.event;

@@ -11,19 +11,23 @@ SlideSeries::SlideSeries(const SlideBody& b, double phi0, double omega0, double 
     Series w2{}, q{}, d{}, u{}, n{}, alpha{}, ax{};
     phi_[0] = phi0;
     omega_[0] = omega0;
-    sin_[0] = std::sin(phi0);
-    cos_[0] = std::cos(phi0);
+    CosSinSeries e{};
+    e[0] = CosSin{std::cos(phi0), std::sin(phi0)};
+    sin_[0] = e[0][1];
+    cos_[0] = e[0][0];
     x_[0] = x0;
     vx_[0] = vx0;
     for (int k = 0; k <= K; ++k) {
         const auto kk = static_cast<size_t>(k);
         if (k > 0) {
             // Each quantity's coefficient k from the derivative's coefficient k - 1.
-            phi_[kk] = omega_[kk - 1] / k;
-            omega_[kk] = alpha[kk - 1] / k;
-            x_[kk] = vx_[kk - 1] / k;
-            vx_[kk] = ax[kk - 1] / k;
-            sin_cos_coefficient(phi_, sin_, cos_, k);
+            phi_[kk] = omega_[kk - 1] * kInverse[kk];
+            omega_[kk] = alpha[kk - 1] * kInverse[kk];
+            x_[kk] = vx_[kk - 1] * kInverse[kk];
+            vx_[kk] = ax[kk - 1] * kInverse[kk];
+            cos_sin_coefficient(omega_, e, k);
+            cos_[kk] = e[kk][0];
+            sin_[kk] = e[kk][1];
         }
         w2[kk] = product_coefficient(omega_, omega_, k);
         q[kk] = cos_[kk] - f * sin_[kk];
