@@ -233,7 +233,7 @@ TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") 
     std::ifstream traj(out / "trajectory.csv");
     std::string header;
     std::getline(traj, header);
-    CHECK(header == "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J");
+    CHECK(header == "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J,fill_ahead_m,fill_up_m");
     std::ifstream imp(out / "impacts.csv");
     std::getline(imp, header);
     CHECK(header == "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms");

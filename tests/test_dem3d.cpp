@@ -131,13 +131,18 @@ TEST_CASE("dem3d's tracker: a grain leaving the box, energy created or a NaN end
 }
 
 TEST_CASE("dem3d's states.csv: malformed rows are refused naming the line", "[dem3d]") {
-    const std::string header = "time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n";
-    CHECK(parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9\n").size() == 1);
+    const std::string header = "time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,"
+                               "fill_ahead_m,fill_up_m,grains_inside\n";
+    const std::vector<StateRow> one = parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9,10,11\n");
+    REQUIRE(one.size() == 1);
+    CHECK(one[0].fill_offset_m.x == 9.0);
+    CHECK(one[0].fill_offset_m.y == 10.0);
+    CHECK(one[0].grains_inside == 11);
     CHECK_THROWS_WITH(parse_states_csv("time_s\n"), Catch::Contains("header"));
-    CHECK_THROWS_WITH(parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9\n0,1,2,x,4,5,6,7,8,9\n"),
+    CHECK_THROWS_WITH(parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9,10,11\n0,1,2,x,4,5,6,7,8,9,10,11\n"),
                       Catch::Contains("line 3") && Catch::Contains("'x'"));
     CHECK_THROWS_WITH(parse_states_csv(header + "0,1,2,3\n"), Catch::Contains("line 2") && Catch::Contains("4 columns"));
-    CHECK_THROWS_WITH(parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9,10\n"), Catch::Contains("line 2"));
+    CHECK_THROWS_WITH(parse_states_csv(header + "0,1,2,3,4,5,6,7,8,9,10,11,12\n"), Catch::Contains("line 2"));
     const std::vector<GrainFrame> frames =
         parse_grains_csv("time_s,grain,x_m,y_m,z_m,radius_m\n0,0,1,2,-0.031,0.003\n0,1,1,2,0.031,0.003\n"
                          "0.1,0,1,2,0,0.003\n",
@@ -172,6 +177,12 @@ TEST_CASE("dem3d: a saved Yade output is read and measured as the run that wrote
     CHECK(out.result.dem3d->yade_version == "2023.02a");
     CHECK(m.stop_time_s);
     CHECK(m.trajectory.front().position_m == 0.0);
+    // Released on its vertex, the quarter-full pile lies below the shell's centre, near the axis
+    // through the pivot (the small hexagon's inside radius is about 3.6 cm).
+    REQUIRE(m.trajectory.front().fill_up_m);
+    CHECK(*m.trajectory.front().fill_up_m < -0.01);
+    CHECK(*m.trajectory.front().fill_up_m > -0.036);
+    CHECK(std::fabs(*m.trajectory.front().fill_ahead_m) < 0.01);
     REQUIRE(out.frames.size() == 2);
     CHECK(out.frames[0].grains.size() == 241);
     CHECK(out.frames[1].time_s == Approx(1.0 / 30.0).margin(1e-3));

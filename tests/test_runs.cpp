@@ -27,6 +27,12 @@ RunResult checked_run(const Scene& s) {
     for (const TrajectorySample& t : r.measured.trajectory) {
         REQUIRE(std::isfinite(t.position_m));
         REQUIRE(std::isfinite(t.kinetic_J));
+        // The fill's centre of mass, where a model stepping grains reports it, lies inside the shell.
+        REQUIRE(t.fill_ahead_m.has_value() == t.fill_up_m.has_value());
+        if (t.fill_ahead_m) {
+            CHECK(r.grains > 0);
+            CHECK(std::hypot(*t.fill_ahead_m, *t.fill_up_m) < r.shell.pivot_radius_m);
+        }
     }
     return r;
 }
@@ -44,6 +50,13 @@ TEST_CASE("released on a face on a level ramp, a polygon does not move", "[runs]
         CHECK(r.measured.impacts.empty());
         CHECK(std::fabs(r.measured.distance_m) < 1e-4);
         CHECK(r.measured.end_time_s < 2.0);
+        // The pile rests on the face below the centre, centred on it, and stays there.
+        for (const TrajectorySample& t : r.measured.trajectory) {
+            REQUIRE(t.fill_up_m.has_value() == (fill > 0.0));
+            if (!t.fill_up_m) continue;
+            CHECK(*t.fill_up_m < -0.01);
+            CHECK(std::fabs(*t.fill_ahead_m) < 0.002);
+        }
     }
 }
 

@@ -46,14 +46,14 @@ std::string budget_model_label(const Scene& scene, const ModelChoice* choice, co
 // grains 2x larger".
 std::string budget_status(const BudgetLevel& level);
 
-// The status line's one statement of how fast the run plays (issue 16 row 9): the chosen rate
+// The status line's one statement of how fast the run plays: the chosen rate
 // ("real time", "1/4\u00D7 slow motion (4\u00D7 slower)") while the computer keeps up, else the rate it
 // reaches and why ("playing at 0.24\u00D7 real time: this scene costs more than real time here").
 // `keeping_up` false only counts while stepping; `ratio` is simulated seconds per wall second.
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio);
 
 // The panel's note for a value typed (Ctrl+click) outside a control's limits, which the control
-// clamps (issue 16 row 11): "r (fill) = 50 is outside 0 to 1: set to 1." Empty when inside them.
+// clamps: "r (fill) = 50 is outside 0 to 1: set to 1." Empty when inside them.
 std::string clamp_note(std::string_view label, double typed, double min, double max);
 
 }  // namespace polyroll::app

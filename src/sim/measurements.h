@@ -15,6 +15,11 @@ struct TrajectorySample {
     double kinetic_J = 0.0;    // shell and grains
     double potential_J = 0.0;  // shell and grains, relative to release
     double dissipated_J = 0.0; // energy at release minus kinetic minus potential
+    // Where the fill's centre of mass sits, from the shell's centre, in the ramp's frame: down the ramp
+    // and away from it. Set by the models that move every grain (grains, dem3d), where a fill exists;
+    // it shows when the pile flows in the turning shell and when it moves with it as one block.
+    std::optional<double> fill_ahead_m;
+    std::optional<double> fill_up_m;
 };
 
 // When the kinetic energy "after" an impact is read a second time: models with soft contacts (the

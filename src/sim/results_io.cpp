@@ -100,11 +100,13 @@ double tidy(double x) { return x == 0.0 ? 0.0 : x; }
 }  // namespace
 
 std::string trajectory_csv(const RunResult& r) {
-    std::string s = "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J\n";
+    // The fill's offset is blank where the model does not move grains (or there are none).
+    auto offset = [](const std::optional<double>& v) { return v ? fmt::format("{:.6f}", tidy(*v)) : std::string(); };
+    std::string s = "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J,fill_ahead_m,fill_up_m\n";
     for (const TrajectorySample& t : r.measured.trajectory)
-        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g}\n", t.time_s, tidy(t.position_m),
+        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g},{},{}\n", t.time_s, tidy(t.position_m),
                          tidy(t.speed_m_s), tidy(t.angle_deg), tidy(t.kinetic_J), tidy(t.potential_J),
-                         tidy(t.dissipated_J));
+                         tidy(t.dissipated_J), offset(t.fill_ahead_m), offset(t.fill_up_m));
     return s;
 }
 

@@ -122,7 +122,19 @@ TrajectorySample Tracker::sample(double time_s) const {
             potential_u -= b->GetMass() * (double(g.x) * p.x + double(g.y) * p.y);
     };
     add(shell);
-    for (const b2Body* b : w_.grains) add(b);
+    double fill_mass_kg = 0.0, fill_x_u = 0.0, fill_y_u = 0.0;
+    for (const b2Body* b : w_.grains) {
+        add(b);
+        const b2Vec2 p = b->GetWorldCenter();
+        fill_mass_kg += b->GetMass();
+        fill_x_u += b->GetMass() * double(p.x);
+        fill_y_u += b->GetMass() * double(p.y);
+    }
+    if (fill_mass_kg > 0.0) {
+        const b2Vec2 c = shell->GetPosition();
+        s.fill_ahead_m = (fill_x_u / fill_mass_kg - c.x) / upm_;
+        s.fill_up_m = (fill_y_u / fill_mass_kg - c.y) / upm_;
+    }
     s.kinetic_J = kinetic_u / (upm_ * upm_);
     s.potential_J = potential_u / (upm_ * upm_) - potential_at_release_J_;
     s.dissipated_J = -(s.kinetic_J + s.potential_J);

@@ -540,10 +540,12 @@ class Tracker:
             ke += 0.5 * c['mass_kg'] * st.vel[2] ** 2 + 0.5 * c['inertia_cross_kg_m2'] * (wx * wx + wy * wy)
         pe = self.pe(c['mass_kg'], (x, y))
         inside, half = 0, c['inner_depth_m'] / 2 + self.tol
+        fill_m = fill_x = fill_y = 0.0  # the fill's mass and its first moments, for its centre of mass
         for b in self.grains:
             p, v = b.pos, b.vel
             ke += 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia[0] * b.angVel.squaredNorm()
             pe += self.pe(b.mass, p)
+            fill_m, fill_x, fill_y = fill_m + b.mass, fill_x + b.mass * p[0], fill_y + b.mass * p[1]
             if abs(p[2]) <= half and depth_inside(self.planes, rot((p[0] - x, p[1] - y), -angle)) >= -self.tol:
                 inside += 1
         if self.pe0 is None:
@@ -551,7 +553,9 @@ class Tracker:
         vals = (x, y, angle, vx, vy, w, ke, pe - self.pe0)
         if not all(math.isfinite(v) for v in vals):
             raise RuntimeError('the simulation blew up (non-finite shell state)')
-        return vals + (inside,)
+        # The fill's centre of mass from the shell's centre, down the ramp and away from it (0, 0 empty).
+        fill = (fill_x / fill_m - x, fill_y / fill_m - y) if fill_m > 0 else (0.0, 0.0)
+        return vals + fill + (inside,)
 
 
 class ChannelLog:
@@ -665,7 +669,8 @@ def run(in_path, out_dir):
     correction_deg, angle0 = release(c, sc)
     with AtomicFile(os.path.join(out_dir, 'states.csv')) as states, \
             (AtomicFile(os.path.join(out_dir, 'grains.csv')) if c['frames_hz'] > 0 else nullcontext()) as frames:
-        states.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside\n')
+        states.write('time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,'
+                     'fill_ahead_m,fill_up_m,grains_inside\n')
         if frames:
             frames.write('time_s,grain,x_m,y_m,z_m,radius_m\n')
         channel = ChannelLog(sc) if sc['channel'] else None

@@ -18,9 +18,10 @@
 namespace polyroll::dem3d {
 
 std::vector<StateRow> parse_states_csv(const std::string& text) {
+    constexpr int kColumns = 12;
     std::istringstream in(text);
     std::string line;
-    const std::string header = "time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,grains_inside";
+    const std::string header = "time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,fill_ahead_m,fill_up_m,grains_inside";
     if (!std::getline(in, line) || line != header)
         throw std::runtime_error(fmt::format("states.csv: the first line is not the header '{}'", header));
     std::vector<StateRow> rows;
@@ -28,12 +29,12 @@ std::vector<StateRow> parse_states_csv(const std::string& text) {
     while (std::getline(in, line)) {
         ++line_no;
         if (line.empty()) continue;
-        double v[10] = {};
+        double v[kColumns] = {};
         std::istringstream fields(line);
         std::string cell;
         int k = 0;
         try {
-            for (; k < 10 && std::getline(fields, cell, ','); ++k) {
+            for (; k < kColumns && std::getline(fields, cell, ','); ++k) {
                 size_t used = 0;
                 v[k] = std::stod(cell, &used);
                 if (used != cell.size()) throw std::invalid_argument(cell);
@@ -41,8 +42,9 @@ std::vector<StateRow> parse_states_csv(const std::string& text) {
         } catch (const std::exception&) {
             throw std::runtime_error(fmt::format("states.csv line {}: '{}' is not a number", line_no, cell));
         }
-        if (k != 10 || std::getline(fields, cell, ','))
-            throw std::runtime_error(fmt::format("states.csv line {}: {} columns where 10 are expected", line_no, k));
+        if (k != kColumns || std::getline(fields, cell, ','))
+            throw std::runtime_error(
+                fmt::format("states.csv line {}: {} columns where {} are expected", line_no, k, kColumns));
         StateRow r;
         r.time_s = v[0];
         r.shell.pose.centre_m = {v[1], v[2]};
@@ -51,7 +53,8 @@ std::vector<StateRow> parse_states_csv(const std::string& text) {
         r.shell.angular_velocity_rad_s = v[6];
         r.kinetic_J = v[7];
         r.potential_J = v[8];
-        r.grains_inside = static_cast<int>(v[9]);
+        r.fill_offset_m = {v[9], v[10]};
+        r.grains_inside = static_cast<int>(v[11]);
         rows.push_back(r);
     }
     return rows;
@@ -156,6 +159,10 @@ private:
         s.kinetic_J = r.kinetic_J;
         s.potential_J = r.potential_J;
         s.dissipated_J = -(s.kinetic_J + s.potential_J);
+        if (rules_.grains > 0) {
+            s.fill_ahead_m = r.fill_offset_m.x;
+            s.fill_up_m = r.fill_offset_m.y;
+        }
         return s;
     }
 

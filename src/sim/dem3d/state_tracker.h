@@ -18,11 +18,12 @@ struct StateRow {
     ShellState shell;
     double kinetic_J = 0.0;    // shell and grains
     double potential_J = 0.0;  // shell and grains, relative to release
+    geom::Vec2 fill_offset_m;  // the fill's centre of mass from the shell's centre, ramp frame (0, 0 empty)
     int grains_inside = 0;
 };
 
 // Reads states.csv (header time_s,x_m,y_m,angle_rad,vx_m_s,vy_m_s,omega_rad_s,kinetic_J,potential_J,
-// grains_inside). Throws std::runtime_error naming the line of a malformed row.
+// fill_ahead_m,fill_up_m,grains_inside). Throws std::runtime_error naming the line of a malformed row.
 std::vector<StateRow> parse_states_csv(const std::string& text);
 
 struct TrackRules {
