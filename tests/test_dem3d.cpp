@@ -215,6 +215,9 @@ TEST_CASE("dem3d in Yade: the same seed gives the same run, revealed step by ste
             const RunSnapshot snap = run->snapshot();
             CHECK(snap.grains.size() == 241);
             for (const GrainState& g : snap.grains) CHECK((g.depth >= 0.0 && g.depth <= 1.0));
+            // The snapshot's reading is the trajectory's, the fill's offset included.
+            REQUIRE(snap.now.fill_up_m);
+            CHECK(*snap.now.fill_up_m < 0.0);
         }
     }
     CHECK(impacts_csv(run->result()) == impacts_csv(a));

@@ -208,14 +208,8 @@ RunSnapshot Dem3dRun::snapshot() const {
                                    [](double t, const GrainFrame& f) { return t < f.time_s; });
         s.grains = (it == frames_.begin() ? frames_.front() : *(it - 1)).grains;
     }
-    TrajectorySample now;
+    TrajectorySample now = trajectory_sample(r, rows_.front(), full_.grains > 0);
     now.time_s = s.time_s;
-    now.position_m = r.shell.pose.centre_m.x - rows_.front().shell.pose.centre_m.x;
-    now.speed_m_s = r.shell.velocity_m_s.x;
-    now.angle_deg = -(r.shell.pose.angle_rad - rows_.front().shell.pose.angle_rad) * 180.0 / geom::kPi;
-    now.kinetic_J = r.kinetic_J;
-    now.potential_J = r.potential_J;
-    now.dissipated_J = -(r.kinetic_J + r.potential_J);
     set_measured(s, now, shown_);
     return s;
 }

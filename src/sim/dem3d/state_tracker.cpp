@@ -60,6 +60,22 @@ std::vector<StateRow> parse_states_csv(const std::string& text) {
     return rows;
 }
 
+TrajectorySample trajectory_sample(const StateRow& r, const StateRow& release, bool has_fill) {
+    TrajectorySample s;
+    s.time_s = r.time_s;
+    s.position_m = r.shell.pose.centre_m.x - release.shell.pose.centre_m.x;
+    s.speed_m_s = r.shell.velocity_m_s.x;
+    s.angle_deg = -(r.shell.pose.angle_rad - release.shell.pose.angle_rad) * 180.0 / geom::kPi;
+    s.kinetic_J = r.kinetic_J;
+    s.potential_J = r.potential_J;
+    s.dissipated_J = -(s.kinetic_J + s.potential_J);
+    if (has_fill) {
+        s.fill_ahead_m = r.fill_offset_m.x;
+        s.fill_up_m = r.fill_offset_m.y;
+    }
+    return s;
+}
+
 namespace {
 
 // As the tracker's: a touching vertex still approaching faster than this share of the centre's speed
@@ -150,21 +166,7 @@ public:
     Measurements take() { return std::move(m_); }
 
 private:
-    TrajectorySample sample(const StateRow& r) const {
-        TrajectorySample s;
-        s.time_s = r.time_s;
-        s.position_m = r.shell.pose.centre_m.x - release_.shell.pose.centre_m.x;
-        s.speed_m_s = r.shell.velocity_m_s.x;
-        s.angle_deg = -(r.shell.pose.angle_rad - release_.shell.pose.angle_rad) * 180.0 / geom::kPi;
-        s.kinetic_J = r.kinetic_J;
-        s.potential_J = r.potential_J;
-        s.dissipated_J = -(s.kinetic_J + s.potential_J);
-        if (rules_.grains > 0) {
-            s.fill_ahead_m = r.fill_offset_m.x;
-            s.fill_up_m = r.fill_offset_m.y;
-        }
-        return s;
-    }
+    TrajectorySample sample(const StateRow& r) const { return trajectory_sample(r, release_, rules_.grains > 0); }
 
     void check_impact(const StateRow& r) {
         const int n = scene_.shell.sides;

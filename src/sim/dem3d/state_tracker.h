@@ -26,6 +26,10 @@ struct StateRow {
 // fill_ahead_m,fill_up_m,grains_inside). Throws std::runtime_error naming the line of a malformed row.
 std::vector<StateRow> parse_states_csv(const std::string& text);
 
+// One row as trajectory.csv shows it, measured from the release row; the fill's offset where the box
+// holds grains.
+TrajectorySample trajectory_sample(const StateRow& r, const StateRow& release, bool has_fill);
+
 struct TrackRules {
     int grains = 0;              // in the box at release
     double energy_scale_J = 0.0; // total mass x g x pivot radius: the scale of the run's energies
