@@ -3,8 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 #include "sim/disc_size.h"
+#include "sim/scene_json.h"
 #include "sim/world_builder.h"
 #include "test_helpers.h"
 
@@ -165,4 +167,41 @@ TEST_CASE("the bundled materials: BBs and peas two grains per disc, rice in colu
     CHECK(disc_diameter_m(s) == Approx(0.00257).epsilon(0.01));
     CHECK(test::scene_error_of(R"({"fill": {"grains_per_disc": 2}})").find("it moved to fill.material.grains_per_disc") !=
           std::string::npos);
+}
+
+TEST_CASE("the one-layer study's scenes hold the 2D pile in a 3D box one grain deep with the deep box's ratios",
+          "[fill]") {
+    // docs/physics.md, "One grain deep": the 3D reference given a pile that cannot spread along the
+    // roll axis. What its text claims of these files is checked here, so that a change to the discs'
+    // packing or the shell's mass model cannot leave the study's scenes meaning something else.
+    const std::filesystem::path dir = std::filesystem::path(POLYROLL_SOURCE_DIR) / "docs" / "physics" / "one-layer";
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".json") continue;
+        ++files;
+        const Scene s = resolve_scene({read_scene_file(entry.path())});
+        const MaterialParams& m = s.fill.material;
+        INFO(entry.path().filename().string());
+        // One plane of spheres: the largest fits across the depth, two of the smallest do not.
+        CHECK(s.shell.depth_m > m.diameter_m * (1.0 + m.diameter_spread));
+        CHECK(s.shell.depth_m < 2.0 * m.diameter_m * (1.0 - m.diameter_spread));
+        // The spheres are the 2D discs: the same size, and as many as the 2D pile's discs.
+        CHECK(disc_diameter_m(s) == m.diameter_m);
+        const Scene deep = test::scene_with({{"shell", s.shell.preset}, {"fill", {{"ratio", s.fill.ratio}, {"material", "bb"}}}});
+        CHECK(m.diameter_m == Approx(disc_diameter_m(deep)).epsilon(0.01));
+        const ShellProperties p = shell_properties(s.shell);
+        const double discs = static_cast<double>(plan_fill(s, p, {0.0, 1.0}).grains.size());
+        // Within the deposit's packing spread (0.81-0.88 against the 0.85 assumed).
+        CHECK(fill_grain_count(s) == Approx(discs).epsilon(0.08));
+        // Every ratio that decides the motion is the deep box's: the shell's moment per unit mass and
+        // the fill's mass over the shell's.
+        const ShellProperties pd = shell_properties(deep.shell);
+        CHECK(p.inertia_kg_m2 / p.mass_kg == Approx(pd.inertia_kg_m2 / pd.mass_kg).epsilon(1e-6));
+        const double fill_over_shell = s.fill.ratio * p.inside_volume_m3 * m.bulk_density_kg_m3 / p.mass_kg;
+        const double deep_fill_over_shell = deep.fill.ratio * pd.inside_volume_m3 * deep.fill.material.bulk_density_kg_m3 / pd.mass_kg;
+        CHECK(fill_over_shell == Approx(deep_fill_over_shell).epsilon(0.005));
+        // The vertex as sharp as Box2D's polygon skin (0.1 mm).
+        CHECK(s.dem3d.edge_radius_m == Approx(1e-4));
+    }
+    CHECK(files == 6);
 }

@@ -35,7 +35,7 @@ struct SharedControls {
     double ramp_friction = 0.0;      // advanced: shell on ramp
     double ramp_restitution = 0.0;   // advanced: shell on ramp
     ReleasePose pose = ReleasePose::vertex;
-    Model model = Model::grains;
+    Model model = Model::automatic;  // overwritten from the scene (run.model); auto as in defaults.json
     std::string fidelity;       // fidelity preset (assets/fidelity.json)
     std::uint64_t seed = 1;     // the grain packing's seed: the same seed, the same run
 };
