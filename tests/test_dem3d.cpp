@@ -59,6 +59,9 @@ TEST_CASE("dem3d's input: the 2D models' pose, end and the fill's grain count", 
     CHECK(in["release"]["angle_rad"].get<double>() == Approx(release_pose(s, p).angle_rad));
     CHECK(in["release"]["tip_rad"].get<double>() == 0.0);
     CHECK(in["dem3d"]["contact_time_s"].get<double>() == Approx(0.001));
+    // The edge spheres are the shell's own vertex rounding, the value Box2D's arcs take.
+    CHECK(in["dem3d"]["edge_radius_m"].get<double>() == s.shell.vertex_radius_m);
+    CHECK(s.shell.vertex_radius_m == Approx(0.00025));
     // The tipped release: poured with the shell flat on its face, then turned by tip_rad onto the vertex.
     const Scene tipped = test::scene_with({{"release", {{"pose", "tipped"}}}});
     const json tipped_in = script_input(tipped, 30.0);

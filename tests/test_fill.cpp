@@ -201,7 +201,7 @@ TEST_CASE("the one-layer study's scenes hold the 2D pile in a 3D box one grain d
         const double deep_fill_over_shell = deep.fill.ratio * pd.inside_volume_m3 * deep.fill.material.bulk_density_kg_m3 / pd.mass_kg;
         CHECK(fill_over_shell == Approx(deep_fill_over_shell).epsilon(0.005));
         // The vertex as sharp as Box2D's polygon skin (0.1 mm).
-        CHECK(s.dem3d.edge_radius_m == Approx(1e-4));
+        CHECK(s.shell.vertex_radius_m == Approx(1e-4));
     }
     CHECK(files == 6);
 }

@@ -106,12 +106,25 @@ TEST_CASE("polyroll run --model dem3d: a missing Yade or a bad 3D field is one l
     CHECK(none.exit_code == 2);
     CHECK(none.out.find("needs Yade, which is not installed: run third_party/setup.sh") != std::string::npos);
     CHECK(std::count(none.out.begin(), none.out.end(), '\n') == 1);
-    for (const char* bad : {"--contact-time 5", "--time-step-share 0.9", "--edge-radius 0", "--channel-width 0.05"}) {
+    for (const char* bad : {"--contact-time 5", "--time-step-share 0.9", "--channel-width 0.05"}) {
         const Output o = run_polyroll(std::string("run --model dem3d ") + bad);
         INFO(bad << ": " << o.out);
         CHECK(o.exit_code == 2);
         CHECK(o.out.find("dem3d.") != std::string::npos);
         CHECK(o.out.find("allowed") != std::string::npos);
+    }
+}
+
+TEST_CASE("polyroll run --vertex-radius: out of its range or wider than half the wall, one line and exit 2",
+          "[cli][vertex]") {
+    // 0.1 mm to 5 mm, and at most half the wall (1 mm in the small shells' 2 mm walls).
+    for (const char* bad : {"--vertex-radius 0", "--vertex-radius 0.006", "--vertex-radius 0.0015"}) {
+        const Output o = run_polyroll(std::string("run --model grains ") + bad);
+        INFO(bad << ": " << o.out);
+        CHECK(o.exit_code == 2);
+        CHECK(o.out.find("shell.vertex_radius_m") != std::string::npos);
+        CHECK(o.out.find("allowed") != std::string::npos);
+        CHECK(std::count(o.out.begin(), o.out.end(), '\n') == 1);
     }
 }
 

@@ -29,7 +29,7 @@ void leaf_paths(const json& j, const std::string& prefix, std::vector<std::strin
 // Neither the table nor the writer can change it unnoticed; a new field is added here on purpose.
 const std::vector<std::string> kSceneFileFields = {
     "shell.preset", "shell.sides", "shell.inner_circumradius_m", "shell.wall_thickness_m", "shell.depth_m",
-    "shell.lid_thickness_m", "shell.mass_kg", "shell.lid_mass_fraction",
+    "shell.lid_thickness_m", "shell.mass_kg", "shell.lid_mass_fraction", "shell.vertex_radius_m",
     "fill.ratio", "fill.material.preset", "fill.material.diameter_m", "fill.material.diameter_spread",
     "fill.material.bulk_density_kg_m3", "fill.material.friction", "fill.material.wall_friction",
     "fill.material.lid_friction", "fill.material.restitution", "fill.material.packing_fraction",
@@ -41,7 +41,7 @@ const std::vector<std::string> kSceneFileFields = {
     "fidelity.position_iterations",
     "run.model", "run.seed", "run.time_limit_s", "run.sample_hz", "run.gravity_m_s2", "run.settle_time_s",
     "run.rest_speed_m_s", "run.rest_time_s",
-    "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.edge_radius_m", "dem3d.channel_width_m",
+    "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.channel_width_m",
 };
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <cmath>
 
 #include "sim/geometry.h"
+#include "sim/fill_plan.h"
 #include "sim/shell_properties.h"
+#include "sim/vertex_rounding.h"
 
 using namespace polyroll;
 
@@ -86,4 +88,33 @@ TEST_CASE("rigid impact ratio: the brief's solid square and hexagon", "[shell]")
     CHECK(solid(6) == Approx(0.4187).margin(5e-5));
     CHECK(solid(8) > solid(6));
     CHECK(solid(18) > solid(8));
+}
+
+TEST_CASE("rounded vertices: arcs tangent to both faces, no drop on a face, r (1/cos(pi/n) - 1) on a vertex",
+          "[shell][vertex]") {
+    for (int n : {3, 6, 8, 18}) {
+        ShellParams s = small_hexagon();
+        s.sides = n;
+        s.vertex_radius_m = 0.001;
+        const std::vector<geom::Vec2> outer = shell_outer_polygon_m(s);
+        const std::vector<geom::Vec2> arcs = vertex_arc_centres_m(s);
+        REQUIRE(arcs.size() == outer.size());
+        const ShellProperties p = shell_properties(s);
+        INFO("n = " << n);
+        for (const geom::Vec2& c : arcs) {
+            // Each arc's centre lies one radius inside both faces that meet at its vertex: an
+            // apothem less the radius from the polygon's centre, measured along either face normal.
+            CHECK(geom::length(c) == Approx(p.outer_circumradius_m - vertex_arc_inset_m(n, 0.001)));
+            CHECK(geom::length(c) * std::cos(geom::kPi / n) == Approx(p.outer_apothem_m - 0.001));
+        }
+        // On face (0, 1), angle 0: the arcs touch the ramp where the face does.
+        CHECK(vertex_rounding_drop_m(s, 0.0) == Approx(0.0).margin(1e-12));
+        // Vertex 1 straight down (the centre above the pivot): the sharp vertex stands r (1/cos - 1) up.
+        const double on_vertex = -geom::kPi / n;
+        CHECK(vertex_rounding_drop_m(s, on_vertex) == Approx(0.001 / std::cos(geom::kPi / n) - 0.001));
+        CHECK(vertex_rounding_drop_m(s, on_vertex) == Approx(vertex_rounding_lift_max_m(s)));
+        // Anywhere between, no more than that.
+        for (double a = 0.0; a > -2.0 * geom::kPi / n; a -= 0.01)
+            CHECK(vertex_rounding_drop_m(s, a) <= vertex_rounding_lift_max_m(s) + 1e-12);
+    }
 }

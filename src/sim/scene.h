@@ -20,6 +20,9 @@ struct ShellParams {
     double mass_kg = 0.0;               // walls plus both lids
     // Share of mass_kg in the two lids; empty = walls and lids of one material (split by volume).
     std::optional<double> lid_mass_fraction;
+    // Radius of the rounding of each outer vertex (vertex_rounding.h): the arc the shell rolls over
+    // when it turns from one face to the next. The Box2D shell and the 3D reference's edge spheres.
+    double vertex_radius_m = 0.0;
 };
 
 // A bulk grain material, modelled in 2D as circles.
@@ -87,11 +90,10 @@ struct FidelityParams {
 // (src/sim/dem3d/), run as a subprocess: a check on the 2D cross-section, never picked by auto.
 enum class Model { grains, segments, rigid, dem3d, automatic };
 
-// What only the 3D reference (--model dem3d) uses: its soft contacts and the shell's rolling edges.
+// What only the 3D reference (--model dem3d) uses: its soft contacts and the track's channel.
 struct Dem3dParams {
     double contact_time_s = 0.0;    // duration of a grain's collision (linear spring-dashpot)
     double time_step_share = 0.0;   // the DEM time step as a share of contact_time_s
-    double edge_radius_m = 0.0;     // radius of the spheres along the shell's outer edges (its ramp contacts)
     // The width of the track's channel the box rolls in: its sides keep the box, free in all six
     // directions, in the track. Unset: no channel, the box held in its plane as the 2D cross-section is.
     std::optional<double> channel_width_m;

@@ -74,6 +74,10 @@ using T = FieldType;
 // Limits that depend on other fields.
 // Walls thicker than half the inner radius leave no room for the fill.
 double max_wall_thickness_m(const Scene& s) { return 0.5 * s.shell.inner_circumradius_m; }
+// A vertex's arc stays within the wall: its circle, tangent to both outer faces, reaches half the
+// wall's thickness from each at a radius of half the wall; and 5 mm is already a shell with round
+// corners, not a polygon's.
+double max_vertex_radius_m(const Scene& s) { return std::min(0.005, 0.5 * s.shell.wall_thickness_m); }
 // The largest grain must fit across the inside with room to move.
 double max_grain_diameter_m(const Scene& s) {
     return geom::regular_polygon_apothem(s.shell.sides, s.shell.inner_circumradius_m) /
@@ -124,6 +128,10 @@ std::vector<SceneField> make_table() {
         Row("shell.lid_mass_fraction", T::optional_number, member<&Scene::shell, &ShellParams::lid_mass_fraction>())
             .range(0.0, 1.0).max_open()
             .help("share of the mass in the two lids; null: walls and lids of one material, split by volume"),
+        Row("shell.vertex_radius_m", T::number, member<&Scene::shell, &ShellParams::vertex_radius_m>())
+            .range(0.0001, 0.005).max_of(max_vertex_radius_m, {"shell.wall_thickness_m"}).unit("m").flag("--vertex-radius")
+            .help("radius of the rounding of the shell's outer vertices, the corners it rolls over (the grain "
+                  "simulation and the 3D reference; the reduced models keep sharp vertices)"),
 
         // --- fill: how much of the inside the grains fill, and the grains (assets/materials.json)
         Row("fill.ratio", T::number, member<&Scene::fill, &FillParams::ratio>())
@@ -242,9 +250,6 @@ std::vector<SceneField> make_table() {
         Row("dem3d.time_step_share", T::number, member<&Scene::dem3d, &Dem3dParams::time_step_share>())
             .range(0.01, 0.2).flag("--time-step-share")
             .help("3D reference: the time step as a share of dem3d.contact_time_s, no unit"),
-        Row("dem3d.edge_radius_m", T::number, member<&Scene::dem3d, &Dem3dParams::edge_radius_m>())
-            .range(0.0001, 0.005).unit("m").flag("--edge-radius")
-            .help("3D reference: radius of the small spheres along the shell's outer edges that touch the ramp"),
         Row("dem3d.channel_width_m", T::optional_number, member<&Scene::dem3d, &Dem3dParams::channel_width_m>())
             .range(0.0, 1.0).min_open()
             .min_of(min_channel_width_m, {"shell.depth_m", "shell.lid_thickness_m"}).unit("m")

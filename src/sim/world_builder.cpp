@@ -87,7 +87,7 @@ std::unique_ptr<SimWorld> build_world(const Scene& scene, std::vector<ForceHook>
     using namespace world_parts;
     std::unique_ptr<SimWorld> w = empty_world(scene, std::move(hooks));
     add_ramp(*w);
-    const ShellPose pose = pour_pose(scene, w->shell_props);
+    const ShellPose pose = rounded_pose(*w, pour_pose(scene, w->shell_props));
     add_shell(*w, pose);  // held static while the grains settle
     pour_grains(*w, pose);
     settle_grains(*w);  // and, for the tipped release, turns shell and pile onto the vertex
@@ -102,8 +102,9 @@ std::unique_ptr<SimWorld> build_world_from(const Scene& scene, const ShellState&
     using namespace world_parts;
     std::unique_ptr<SimWorld> w = empty_world(scene, std::move(hooks));
     add_ramp(*w);
-    add_shell(*w, shell.pose);
-    pour_grains(*w, shell.pose);
+    const ShellPose pose = rounded_pose(*w, shell.pose);
+    add_shell(*w, pose);
+    pour_grains(*w, pose);
     release_shell(*w, shell.velocity_m_s, shell.angular_velocity_rad_s);
     // The grains move with the shell as one rigid body: v = v_centre + omega x (p - centre).
     const EngineUnits& u = w->units;

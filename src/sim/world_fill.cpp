@@ -74,6 +74,10 @@ void tip_onto_vertex(SimWorld& w) {
     };
     turn(w.shell);
     for (b2Body* b : w.grains) turn(b);
+    // Turned about the sharp vertex, a rounded one stands above the ramp: down onto its arc.
+    const b2Vec2 sink = {0.0f, -static_cast<float>(u.to_units(rounding_drop_m(w, w.shell->GetAngle())))};
+    for (b2Body* b : w.grains) b->SetTransform(b->GetPosition() + sink, b->GetAngle());
+    w.shell->SetTransform(w.shell->GetPosition() + sink, w.shell->GetAngle());
 }
 
 }  // namespace

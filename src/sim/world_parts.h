@@ -17,7 +17,19 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
 // A thick static box whose top face is y = 0, reaching past both ends.
 void add_ramp(SimWorld& w);
 
-// The shell, static (held) in `pose`, its lowest point touching the ramp.
+// The radius of the shell's vertex arcs in this engine (vertex_rounding.h): the scene's, or 0 where
+// that is no more than the polygons' own skin (b2_polygonRadius), which already rounds them as much.
+double engine_vertex_radius_m(const SimWorld& w);
+
+// How far the rounded shell at `angle_rad` sinks below a pose computed for sharp vertices.
+double rounding_drop_m(const SimWorld& w, double angle_rad);
+
+// A pose computed for sharp vertices (on its face or its lowest vertex on the surface), sunk by as
+// much as the rounded vertex lies above that: the rounded shell touching the ramp.
+ShellPose rounded_pose(const SimWorld& w, ShellPose pose);
+
+// The shell, static (held) in `pose` (a rounded_pose), touching the ramp: one trapezoid per side,
+// and with rounded vertices their outer corners cut back to the arcs and a circle for each arc.
 void add_shell(SimWorld& w, const ShellPose& pose);
 
 // The fill planned in the shell's frame with gravity as seen from `pose`, as dynamic grains.

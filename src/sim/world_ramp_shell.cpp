@@ -1,6 +1,8 @@
 // The ramp and the shell, held and let go: see world_parts.h.
 #include "sim/world_parts.h"
 
+#include "sim/vertex_rounding.h"
+
 namespace polyroll::world_parts {
 
 namespace {
@@ -31,10 +33,34 @@ void add_ramp(SimWorld& w) {
     w.ramp->CreateFixture(&fd);
 }
 
+double engine_vertex_radius_m(const SimWorld& w) {
+    const double skin_m = w.units.to_m(b2_polygonRadius);
+    return w.scene.shell.vertex_radius_m > skin_m ? w.scene.shell.vertex_radius_m : 0.0;
+}
+
+namespace {
+// The shell as the engine holds it: the scene's, with the engine's vertex radius.
+ShellParams engine_shell(const SimWorld& w) {
+    ShellParams s = w.scene.shell;
+    s.vertex_radius_m = engine_vertex_radius_m(w);
+    return s;
+}
+}  // namespace
+
+double rounding_drop_m(const SimWorld& w, double angle_rad) {
+    return engine_vertex_radius_m(w) > 0.0 ? vertex_rounding_drop_m(engine_shell(w), angle_rad) : 0.0;
+}
+
+ShellPose rounded_pose(const SimWorld& w, ShellPose pose) {
+    pose.centre_m.y -= rounding_drop_m(w, pose.angle_rad);
+    return pose;
+}
+
 void add_shell(SimWorld& w, const ShellPose& pose) {
     // One trapezoid per side between the inner and outer polygons, so the corners are closed
     // (rectangles leave notches a squeezed pile leaks through).
     const EngineUnits& u = w.units;
+    const double radius_m = engine_vertex_radius_m(w);
     b2BodyDef def;
     def.type = b2_staticBody;
     def.userData.pointer = static_cast<uintptr_t>(BodyKind::shell);
@@ -43,14 +69,33 @@ void add_shell(SimWorld& w, const ShellPose& pose) {
     def.angle = static_cast<float>(pose.angle_rad);
     w.shell = w.world->CreateBody(&def);
     const int n = w.scene.shell.sides;
+    // With rounded vertices each side's outer edge ends where the arcs meet it; the inner edge, which
+    // the grains touch, is whole.
+    const double cut_m = radius_m > 0.0 ? vertex_arc_tangent_m(n, radius_m) : 0.0;
     for (int i = 0; i < n; ++i) {
         const int j = (i + 1) % n;
-        b2Vec2 quad[4] = {to_b2(w.inner_local_m[i], u), to_b2(w.outer_local_m[i], u), to_b2(w.outer_local_m[j], u),
-                          to_b2(w.inner_local_m[j], u)};
+        const geom::Vec2 along = (1.0 / geom::length(w.outer_local_m[j] - w.outer_local_m[i])) *
+                                 (w.outer_local_m[j] - w.outer_local_m[i]);
+        b2Vec2 quad[4] = {to_b2(w.inner_local_m[i], u), to_b2(w.outer_local_m[i] + cut_m * along, u),
+                          to_b2(w.outer_local_m[j] - cut_m * along, u), to_b2(w.inner_local_m[j], u)};
         b2PolygonShape shape;
         shape.Set(quad, 4);
         b2FixtureDef fd;
         fd.shape = &shape;
+        fd.density = 1.0f;  // replaced by the real mass data on release
+        fd.friction = static_cast<float>(w.scene.ramp.friction);
+        fd.restitution = 0.0f;
+        w.shell->CreateFixture(&fd);
+    }
+    if (radius_m <= 0.0) return;
+    // The arcs: circles tangent to both faces' outer lines. A circle has no skin, so it is grown by
+    // the polygons' own to stay flush with the faces beside it.
+    for (const geom::Vec2& c : vertex_arc_centres_m(engine_shell(w))) {
+        b2CircleShape arc;
+        arc.m_p = to_b2(c, u);
+        arc.m_radius = static_cast<float>(u.to_units(radius_m)) + b2_polygonRadius;
+        b2FixtureDef fd;
+        fd.shape = &arc;
         fd.density = 1.0f;  // replaced by the real mass data on release
         fd.friction = static_cast<float>(w.scene.ramp.friction);
         fd.restitution = 0.0f;

@@ -77,7 +77,7 @@ json script_input(const Scene& s, double frames_hz) {
                  {"restitution", m.restitution}};
     j["dem3d"] = {{"contact_time_s", s.dem3d.contact_time_s},
                   {"time_step_share", s.dem3d.time_step_share},
-                  {"edge_radius_m", s.dem3d.edge_radius_m},
+                  {"edge_radius_m", s.shell.vertex_radius_m},
                   {"channel_width_m", s.dem3d.channel_width_m.value_or(0.0)}};  // 0: no channel
     j["step_hz"] = s.fidelity.step_hz;
     j["time_limit_s"] = s.run.time_limit_s;
