@@ -6,7 +6,6 @@
 
 #include "sim/auto_run.h"
 #include "sim/dem3d/dem3d_input.h"
-#include "sim/model_registry.h"
 #include "sim/ramp_profile.h"
 #include "sim/shell_pose.h"
 #include "test_helpers.h"
@@ -77,33 +76,21 @@ TEST_CASE("ramp profile: gravity is the slope of the potential it is scored with
     }
 }
 
-TEST_CASE("ramp profile: the curvature's limits and the models that cannot run a curved track", "[ramp_profile]") {
+TEST_CASE("ramp profile: the curvature's limits", "[ramp_profile]") {
     CHECK_THAT(test::scene_error_of(R"({"ramp": {"curvature_deg_per_m": 30}})"),
                Catch::Contains("ramp.curvature_deg_per_m = 30") && Catch::Contains("-20 to 20"));
     // At 85 degrees the top of a track curving 10 deg/m would be steeper than 89 degrees.
     CHECK_THAT(test::scene_error_of(R"({"ramp": {"angle_deg": 85, "curvature_deg_per_m": 10}})"),
                Catch::Contains("ramp.curvature_deg_per_m = 10") && Catch::Contains("3.15"));
-    for (const char* model : {"rigid", "segments"}) {
-        const std::string doc =
-            std::string(R"({"fill": {"ratio": 0}, "ramp": {"curvature_deg_per_m": 1.7}, "run": {"model": ")") + model +
-            "\"}}";
-        INFO(model);
-        CHECK_THAT(test::scene_error_of(doc), Catch::Contains(std::string("run.model = ") + model) &&
-                                                  Catch::Contains("curved track") &&
-                                                  Catch::Contains("grains, dem3d, auto"));
-    }
     CHECK(test::scene_error_of(R"({"ramp": {"curvature_deg_per_m": 1.7}, "run": {"model": "grains"}})").empty());
-    for (Model m : all_models())
-        CHECK(model_traits(m).follows_curved_track == (m == Model::grains || m == Model::dem3d));
 }
 
-TEST_CASE("ramp profile: auto runs an empty shell on a curved track in the engine", "[ramp_profile]") {
+TEST_CASE("ramp profile: auto runs an empty shell on a curved track with the rigid model", "[ramp_profile]") {
     const Scene straight = octagon_bbs(10.0, 0.0, 0.0), curved = octagon_bbs(10.0, 1.7, 0.0);
     CHECK(choose_model(straight).model == Model::rigid);
     const ModelChoice c = choose_model(curved);
-    CHECK(c.model == Model::grains);
-    CHECK_FALSE(c.then);
-    CHECK_THAT(c.reason, Catch::Contains("curved track"));
+    CHECK(c.model == Model::rigid);
+    CHECK(c.reason == choose_model(straight).reason);
 }
 
 TEST_CASE("ramp profile: the 3D reference is told the track's curvature", "[ramp_profile]") {

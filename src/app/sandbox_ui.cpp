@@ -778,7 +778,7 @@ const std::vector<ReadoutRow>& readout_rows() {
         {"model", &LaneReadout::model,
          "The model computing this lane. auto picks the cheapest the scene requires: rigid for an empty or a "
          "full shell, going on as a free rigid body where it would lift off or slip; grains for a partly "
-         "filled one or a curved track. Hover a lane's entry for its reason."},
+         "filled one. Hover a lane's entry for its reason."},
     };
     return rows;
 }

@@ -7,7 +7,6 @@
 
 #include "sim/model_registry.h"
 #include "sim/models/free_body_run.h"
-#include "sim/ramp_profile.h"
 #include "sim/scene_names.h"
 
 namespace polyroll {
@@ -17,20 +16,15 @@ bool fill_is_solid(const Scene& scene) { return scene.fill.ratio >= 1.0; }
 // The rule below in a line; its reasons are in each branch.
 const char* auto_rule_description() {
     return "the cheapest model the scene needs: rigid for an empty or a full shell, going on as a free rigid body "
-           "where it would lift off or slip; grains for a partly filled one or a curved track";
+           "where it would lift off or slip; grains for a partly filled one";
 }
 
 namespace {
 
 ModelChoice apply_rule(const Scene& scene) {
     ModelChoice c;
-    if (ramp_is_curved(scene.ramp)) {
-        // The rigid model's closed forms assume one slope; the engine turns gravity with the shell.
-        c.model = Model::grains;
-        c.reason = scene.fill.ratio == 0.0
-                       ? "curved track: the rigid impact model assumes one slope; Box2D steps the empty shell alone"
-                       : "curved track, filled shell: the Box2D simulation of the shell and its grains";
-    } else if (scene.fill.ratio == 0.0) {
+    // A curved track changes nothing here: the rigid model and the free body follow its local slope.
+    if (scene.fill.ratio == 0.0) {
         c.model = Model::rigid;
         c.then = Model::grains;
         // A line or two as `polyroll run` prints it; docs/physics.md says the rest.

@@ -76,7 +76,7 @@ const std::vector<ModelRow>& rows() {
           .fill_description = "segments re-levelled at each impact",
           .continues_hand_over = false,
           .everyday = true,
-          .follows_curved_track = false,
+          .follows_curved_track = true,
           .cost = RunCost::computed_whole,
           .auto_may_pick = false},
          start_segments, nullptr, nullptr},
@@ -87,7 +87,7 @@ const std::vector<ModelRow>& rows() {
           .fill_description = "a frozen rigid body",
           .continues_hand_over = false,
           .everyday = true,
-          .follows_curved_track = false,
+          .follows_curved_track = true,
           .cost = RunCost::computed_whole,
           .auto_may_pick = true},
          start_rigid, nullptr, start_rigid_while_valid},
@@ -155,7 +155,7 @@ std::string model_help(const std::vector<Model>& models) {
     std::string help;
     for (Model m : models) {
         const ModelTraits& t = model_traits(m);
-        // The reduced models' closed forms assume one slope: said here, where a user picks a model.
+        // A model that assumes one slope says so here, where a user picks a model.
         help += fmt::format("{} ({}{}), ", to_string(m), t.description,
                             t.follows_curved_track ? "" : "; straight ramps only");
     }

@@ -45,7 +45,8 @@ struct ModelTraits {
     // minute of CPU a run.
     bool everyday = true;
     // Runs a curved track (ramp.curvature_deg_per_m, ramp_profile.h): the engines turn gravity with
-    // the shell; the reduced models' closed forms assume one slope and refuse such a scene.
+    // the shell, the reduced models take the local slope under the contact; a model that assumes one
+    // slope refuses such a scene.
     bool follows_curved_track = false;
     RunCost cost = RunCost::computed_whole;
     // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it: the

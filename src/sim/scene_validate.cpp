@@ -93,8 +93,8 @@ void check_release_tilt(const Scene& s, const Where& where) {
             s.release.tilt_deg, from(where, "release.tilt_deg"), s.shell.sides, s.ramp.angle_deg, max_tilt_deg));
 }
 
-// The reduced models' closed forms assume one slope: a curved track needs a model that turns gravity
-// with the shell (auto picks one).
+// A model that assumes one slope cannot run a curved track (every model in the registry follows one
+// today; the check stays for the next that does not).
 void check_model_on_track(const Scene& s, const Where& where) {
     if (!ramp_is_curved(s.ramp) || s.run.model == Model::automatic) return;
     if (model_traits(s.run.model).follows_curved_track) return;
@@ -102,7 +102,7 @@ void check_model_on_track(const Scene& s, const Where& where) {
     for (Model m : all_models())
         if (model_traits(m).follows_curved_track) can += to_string(m) + ", ";
     throw InputError(fmt::format("run.model = {}{} cannot run a curved track (ramp.curvature_deg_per_m = {:g}{}; "
-                                 "its closed forms assume one slope): use {}auto, or a straight track (0)",
+                                 "it assumes one slope): use {}auto, or a straight track (0)",
                                  to_string(s.run.model), from(where, "run.model"), s.ramp.curvature_deg_per_m,
                                  from(where, "ramp.curvature_deg_per_m"), can));
 }

@@ -4,6 +4,11 @@
 // its normal, the surface at y = 0; the angle a is counter-clockwise (rolling down turns it
 // negative); vertex j (unwrapped) points straight down at a = pi/n - 2 pi j/n, so the lowest vertex is
 // floor(1 - a n / (2 pi)), and vertex 1 was the pivot at release.
+//
+// On a curved track (ramp_profile.h) gravity is turned to the local slope under the centre, as the
+// grain engine turns it, once at the start of each stretch, and stretches there last at most
+// kCurvedStretchS: each stays an exact parabola or Taylor series of a constant gravity, and the
+// centre moves a few millimetres within one (thousandths of a degree of slope at these curvatures).
 #include "sim/models/free_body.h"
 
 #include <algorithm>
@@ -43,6 +48,15 @@ constexpr int kMaxChatter = 100;
 constexpr double kChatterS = 1e-6;
 // Far more events than a 2.5 m ramp gives (about 4 per face): a run stuck in a loop stops.
 constexpr long kMaxSteps = 2'000'000;
+// The longest stretch on a curved track, between two turns of gravity.
+constexpr double kCurvedStretchS = 1e-3;
+
+// Gravity as one stretch sees it: the slope theta (radians), and g along the ramp (gx, down it) and
+// its normal (gy, negative; g_cos = -gy).
+struct Gravity {
+    double theta = 0.0, cos_theta = 1.0, sin_theta = 0.0;
+    double gx = 0.0, gy = 0.0, g_cos = 0.0;
+};
 
 struct State {
     double x = 0, y = 0, a = 0, vx = 0, vy = 0, w = 0;  // centre, angle, their rates (w counter-clockwise)
@@ -104,7 +118,11 @@ private:
     Contact contact(const State& s, Phase p, Vec2 r) const;
     Contact contact(const State& s, Phase p) const { return contact(s, p, arm(on_, s.a)); }
     void project(State& s, Phase p) const;
-    State flight_at(const State& s, double tau) const;
+    State flight_at(const State& s, double tau) const { return flight_at(s, tau, g_); }
+    static State flight_at(const State& s, double tau, const Gravity& g);
+    Gravity gravity_at(double x_m) const;
+    // The longest stretch from now: to the time limit, and on a curved track kCurvedStretchS.
+    double stretch_cap_s() const;
 
     // What ends a contact step. Each has a value that is positive before it and turns non-positive
     // where it happens (a neighbour's height, the normal force, the friction to spare, ...).
@@ -115,12 +133,12 @@ private:
 
     // The sticking vertex's pendulum (pivot_motion.h): psi is the turn past the centre straight above
     // the pivot, psi = beta + a - theta + pi/2 for the contact vertex's beta.
-    double psi_of(double a) const { return beta_[index(on_)] + a - theta_ + kPi / 2.0; }
+    double psi_of(double a) const { return beta_[index(on_)] + a - g_.theta + kPi / 2.0; }
     // The state at tau into a series begun at psi0 from angle a0, and the body's turn there.
     // `on` and `pivot_x` are those of the stretch (on_, pivot_x_ as it began): the stretch is kept
     // for the dense output after they change.
-    State stick_state(const PendulumSeries& ps, long on, double pivot_x, double psi0, double a0, double tau,
-                      Turn& t) const;
+    State stick_state(const PendulumSeries& ps, const Gravity& g, long on, double pivot_x, double psi0, double a0,
+                      double tau, Turn& t) const;
     // The same for a sliding vertex (slide_motion.h), whose direction from the centre is phi = beta + a.
     State slide_state(const SlideSeries& ss, long on, double phi0, double a0, double tau, Turn& t) const;
     // The state on the ramp with the contact vertex in direction (c_phi, s_phi) from the centre: the
@@ -143,6 +161,12 @@ private:
     void settle_on(long j);
 
     TrajectorySample sample(const State& s, double t) const;
+    // M g times the centre's height: on a curved track the track's own (ramp_profile.h), as the grain
+    // tracker books it.
+    double potential_J(const State& s) const {
+        const double height_m = frame_.curved() ? frame_.height_at_m(s.x, s.y) : geom::dot({s.x, s.y}, up_);
+        return m_ * frame_.gravity_m_s2 * height_m;
+    }
     // Rows for the sample times before t_end of the stretch begun at t_, whose state tau into it is
     // state_at(tau); the stretch is kept as the run's dense output.
     void emit_rows_before(double t_end, std::function<State(double)> state_at);
@@ -154,12 +178,11 @@ private:
     int n_ = 0;
     double radius_ = 0.0, m_ = 0.0, inertia_ = 0.0, mu_ = 0.0;
     double inv_m_ = 0.0, inv_i_ = 0.0;
-    double theta_ = 0.0, cos_theta_ = 1.0, sin_theta_ = 0.0;
-    double gx_ = 0.0, gy_ = 0.0, g_cos_ = 0.0;
+    Gravity g_;  // of the stretch under way
     double pendulum_a_ = 0.0;  // M g R / I_pivot, 1/s^2
     std::vector<double> beta_;
     std::vector<Vec2> unit_;  // (cos beta, sin beta) of each vertex
-    Vec2 up_;
+    Vec2 up_;  // the vertical of a straight track
     double start_x_ = 0.0, start_a_ = 0.0, potential_offset_J_ = 0.0;
 
     State s_;
@@ -195,26 +218,37 @@ FreeBodySolver::FreeBodySolver(const FreeBody& body, const RampFrame& frame, con
     inv_m_ = 1.0 / m_;
     inv_i_ = 1.0 / inertia_;
     mu_ = frame.friction;
-    theta_ = frame.angle_deg * kPi / 180.0;
-    cos_theta_ = std::cos(theta_);
-    sin_theta_ = std::sin(theta_);
-    gx_ = frame.gravity_m_s2 * sin_theta_;
-    gy_ = -frame.gravity_m_s2 * cos_theta_;
-    g_cos_ = -gy_;
     pendulum_a_ = m_ * frame.gravity_m_s2 * radius_ / (inertia_ + m_ * radius_ * radius_);
-    up_ = {-sin_theta_, cos_theta_};
     start_x_ = start.release.centre_m.x;
     start_a_ = start.release.angle_rad;
     const ShellState& st = start.state;
     s_ = {st.pose.centre_m.x, st.pose.centre_m.y, st.pose.angle_rad, st.velocity_m_s.x, st.velocity_m_s.y,
           st.angular_velocity_rad_s};
+    g_ = gravity_at(s_.x);
+    up_ = {-g_.sin_theta, g_.cos_theta};
     t_ = start.time_s;
     landed_ = start.landed_vertex;
     out_.measured = start.measured;
     out_.measured.behaviour = Behaviour::running;
     next_row_ = static_cast<long>(out_.measured.trajectory.size());
     // Booked potential = M g (up . centre) - offset, continuous with the records so far.
-    potential_offset_J_ = m_ * frame.gravity_m_s2 * geom::dot({s_.x, s_.y}, up_) - start.potential_J;
+    potential_offset_J_ = potential_J(s_) - start.potential_J;
+}
+
+Gravity FreeBodySolver::gravity_at(double x_m) const {
+    Gravity g;
+    g.theta = frame_.slope_rad_at(x_m);
+    g.cos_theta = std::cos(g.theta);
+    g.sin_theta = std::sin(g.theta);
+    g.gx = frame_.gravity_m_s2 * g.sin_theta;
+    g.gy = -frame_.gravity_m_s2 * g.cos_theta;
+    g.g_cos = -g.gy;
+    return g;
+}
+
+double FreeBodySolver::stretch_cap_s() const {
+    const double left = frame_.time_limit_s - t_;
+    return frame_.curved() ? std::min(left, kCurvedStretchS) : left;
 }
 
 FreeBodySolver::Contact FreeBodySolver::contact(const State& s, Phase p, Vec2 r) const {
@@ -226,7 +260,7 @@ FreeBodySolver::Contact FreeBodySolver::contact(const State& s, Phase p, Vec2 r)
             // a_c + alpha x r - w^2 r = 0 with M a_c = M g + (F, N), I alpha = r x (F, N).
             const double k11 = inv_m_ + r.y * r.y * inv_i_, k12 = -r.x * r.y * inv_i_;
             const double k22 = inv_m_ + r.x * r.x * inv_i_;
-            const double b1 = w2 * r.x - gx_, b2 = w2 * r.y - gy_;
+            const double b1 = w2 * r.x - g_.gx, b2 = w2 * r.y - g_.gy;
             const double inv_det = 1.0 / (k11 * k22 - k12 * k12);
             c.F = (b1 * k22 - k12 * b2) * inv_det;
             c.N = (k11 * b2 - k12 * b1) * inv_det;
@@ -234,7 +268,7 @@ FreeBodySolver::Contact FreeBodySolver::contact(const State& s, Phase p, Vec2 r)
             // The vertex slides along the ramp: only its normal acceleration vanishes, and friction
             // is mu N against the slip.
             const double f = -mu_ * slip_sign_;  // F = f N
-            c.N = (w2 * r.y - gy_) / (inv_m_ + r.x * (r.x - f * r.y) * inv_i_);
+            c.N = (w2 * r.y - g_.gy) / (inv_m_ + r.x * (r.x - f * r.y) * inv_i_);
             c.F = f * c.N;
         }
     }
@@ -254,9 +288,9 @@ void FreeBodySolver::project(State& s, Phase p) const {
     }
 }
 
-State FreeBodySolver::flight_at(const State& s, double tau) const {
-    return {s.x + s.vx * tau + 0.5 * gx_ * tau * tau, s.y + s.vy * tau + 0.5 * gy_ * tau * tau, s.a + s.w * tau,
-            s.vx + gx_ * tau, s.vy + gy_ * tau, s.w};
+State FreeBodySolver::flight_at(const State& s, double tau, const Gravity& g) {
+    return {s.x + s.vx * tau + 0.5 * g.gx * tau * tau, s.y + s.vy * tau + 0.5 * g.gy * tau * tau, s.a + s.w * tau,
+            s.vx + g.gx * tau, s.vy + g.gy * tau, s.w};
 }
 
 double FreeBodySolver::event_value(const State& s, Phase p, Event e, Turn t, const Contact* c) const {
@@ -287,7 +321,7 @@ TrajectorySample FreeBodySolver::sample(const State& s, double t) const {
     r.speed_m_s = s.vx;
     r.angle_deg = -(s.a - start_a_) * 180.0 / kPi;
     r.kinetic_J = 0.5 * m_ * (s.vx * s.vx + s.vy * s.vy) + 0.5 * inertia_ * s.w * s.w;
-    r.potential_J = m_ * frame_.gravity_m_s2 * geom::dot({s.x, s.y}, up_) - potential_offset_J_;
+    r.potential_J = potential_J(s) - potential_offset_J_;
     r.dissipated_J = -(r.kinetic_J + r.potential_J);
     return r;
 }
@@ -410,15 +444,15 @@ State FreeBodySolver::on_vertex(long on, double c_phi, double s_phi, double x, d
     return {x, -radius_ * s_phi, a, vx, -w * radius_ * c_phi, w};
 }
 
-State FreeBodySolver::stick_state(const PendulumSeries& ps, long on, double pivot_x, double psi0, double a0,
-                                  double tau, Turn& t) const {
+State FreeBodySolver::stick_state(const PendulumSeries& ps, const Gravity& g, long on, double pivot_x, double psi0,
+                                  double a0, double tau, Turn& t) const {
     double psi = 0.0, rate = 0.0, sin_psi = 0.0, cos_psi = 0.0;
     ps.psi_and_rate(tau, psi, rate);
     ps.sin_cos_psi(tau, sin_psi, cos_psi);
     // The contact vertex points along phi = psi + theta - pi/2 from the centre, and the centre is
     // where that puts the vertex on the pivot, moving about it.
-    const double c_phi = sin_psi * cos_theta_ + cos_psi * sin_theta_;
-    const double s_phi = sin_psi * sin_theta_ - cos_psi * cos_theta_;
+    const double c_phi = sin_psi * g.cos_theta + cos_psi * g.sin_theta;
+    const double s_phi = sin_psi * g.sin_theta - cos_psi * g.cos_theta;
     return on_vertex(on, c_phi, s_phi, pivot_x - radius_ * c_phi, rate * radius_ * s_phi, a0 + (psi - psi0), rate, t);
 }
 
@@ -430,9 +464,10 @@ State FreeBodySolver::slide_state(const SlideSeries& ss, long on, double phi0, d
 void FreeBodySolver::stick_stretch() {
     const double a0 = s_.a, psi0 = psi_of(a0);
     const auto ps = std::make_shared<const PendulumSeries>(psi0, s_.w, pendulum_a_);
-    follow(Phase::stick, ps->accurate_step_s(), [this, ps, on = on_, pivot_x = pivot_x_, psi0, a0](double tau, Turn& t) {
-        return stick_state(*ps, on, pivot_x, psi0, a0, tau, t);
-    });
+    follow(Phase::stick, ps->accurate_step_s(),
+           [this, ps, g = g_, on = on_, pivot_x = pivot_x_, psi0, a0](double tau, Turn& t) {
+               return stick_state(*ps, g, on, pivot_x, psi0, a0, tau, t);
+           });
 }
 
 void FreeBodySolver::slide_stretch() {
@@ -442,8 +477,8 @@ void FreeBodySolver::slide_stretch() {
     b.inv_mass_per_kg = inv_m_;
     b.inv_inertia = inv_i_;
     b.friction_ratio = -mu_ * slip_sign_;
-    b.gravity_along_m_s2 = gx_;
-    b.gravity_normal_m_s2 = g_cos_;
+    b.gravity_along_m_s2 = g_.gx;
+    b.gravity_normal_m_s2 = g_.g_cos;
     const auto ss = std::make_shared<const SlideSeries>(b, phi0, s_.w, s_.x, s_.vx);
     follow(Phase::slide, ss->accurate_step_s(), [this, ss, on = on_, phi0, a0](double tau, Turn& t) {
         return slide_state(*ss, on, phi0, a0, tau, t);
@@ -453,7 +488,7 @@ void FreeBodySolver::slide_stretch() {
 template <class StateAt>
 void FreeBodySolver::follow(Phase p, double span_s, StateAt state_at) {
     // Each event that holds at a grid point is traced back to where it began, and the earliest wins.
-    const double span = std::min(span_s, frame_.time_limit_s - t_);
+    const double span = std::min(span_s, stretch_cap_s());
     Turn turn0;
     State s0 = state_at(0.0, turn0);
     std::array<double, std::size(kContactEvents)> v0{};
@@ -564,9 +599,11 @@ void FreeBodySolver::flight_stretch() {
     // back to the touch.
     // Steps are kept under half a face's turn, so no vertex but these three can come lowest within one.
     const State s0 = s_;
-    const double curve = g_cos_ + radius_ * s0.w * s0.w;
+    const double curve = g_.g_cos + radius_ * s0.w * s0.w;
     const double d_turn = kPi / n_ / std::max(std::fabs(s0.w), 1e-9);
-    const double left = frame_.time_limit_s - t_;
+    // Cut short on a curved track: the flight goes on in the next stretch, gravity turned.
+    const double left = stretch_cap_s();
+    const bool cut = left < frame_.time_limit_s - t_;
     const double end_x = frame_.end_centre_x_m;
     // The lowest of the three vertices about the lowest one at tau: its height and index.
     auto lowest_of = [&](const State& s, long& which) {
@@ -597,7 +634,7 @@ void FreeBodySolver::flight_stretch() {
             const double h = std::max(0.0, s.y + r.y), rate = s.vy + s.w * r.x;
             const double second = (rate + std::sqrt(rate * rate + 2.0 * curve * h)) / curve;
             const double fourth =
-                positive_for(h, rate, -g_cos_ - w2 * r.y, -w2 * s.w * r.x, w2 * w2 * radius_, d_turn);
+                positive_for(h, rate, -g_.g_cos - w2 * r.y, -w2 * s.w * r.x, w2 * w2 * radius_, d_turn);
             d = std::min(d, std::max(second, fourth));
         }
         const double next = std::min(tau + std::max(d, kFlightMinStepS), left);
@@ -625,11 +662,14 @@ void FreeBodySolver::flight_stretch() {
                           end_x - flight_at(s0, stop).x, kEventTolS, out_.steps);
         at_end = true;
     }
-    emit_rows_before(t_ + stop, [this, s0](double dt) { return flight_at(s0, dt); });
+    emit_rows_before(t_ + stop, [s0, g = g_](double dt) { return flight_at(s0, dt, g); });
     s_ = flight_at(s0, stop);
     t_ += stop;
     if (at_end) return finish(Behaviour::rolled_to_end);
-    if (!touched) return finish(Behaviour::time_limit);
+    if (!touched) {
+        if (!cut) finish(Behaviour::time_limit);
+        return;
+    }
     s_.y -= s_.y + arm(hit, s_.a).y;  // exactly on the ramp (the halving leaves it a femtometre in)
     impact(hit);
 }
@@ -655,6 +695,7 @@ FreeBodyMotion FreeBodySolver::run() {
             break;
         }
         const double t_before = t_;
+        if (frame_.curved()) g_ = gravity_at(s_.x);
         if (phase_ == Phase::flight) flight_stretch();
         else if (phase_ == Phase::stick) stick_stretch();
         else slide_stretch();

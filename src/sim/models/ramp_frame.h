@@ -11,7 +11,11 @@
 namespace polyroll::models {
 
 struct RampFrame {
-    double angle_deg = 0.0;
+    double angle_deg = 0.0;  // the chord's angle on a curved track
+    // The track's shape (ramp_profile.h): 0 is a straight track at angle_deg. The reduced models take
+    // the local slope under the contact from it, and book the potential as the track's height.
+    double curvature_deg_per_m = 0.0;
+    double track_length_m = 0.0;
     double gravity_m_s2 = 0.0;
     // The shell-ramp Coulomb coefficient (Box2D mixes two fixtures' as sqrt(a b); the shell's fixtures
     // carry the ramp's own). The free body slides at it; the rolling polygon checks it only with
@@ -47,6 +51,13 @@ struct RampFrame {
     // The friction share above which rolling without slipping stops holding; 0: not checked (the
     // reduced models as the experimenters made them).
     double slip_friction() const { return stop_when_invalid ? friction : 0.0; }
+
+    bool curved() const { return curvature_deg_per_m != 0.0; }
+    // The local slope (radians) at distance x_m down the track: angle_deg, to the bit, on a straight one.
+    double slope_rad_at(double x_m) const;
+    // height_m of ramp_profile.h: the potential per unit mass and g of a point x_m down the track and
+    // y_m above it.
+    double height_at_m(double x_m, double y_m) const;
 };
 
 // The scene's ramp, release pose (release_pose() of shell_pose.h) and run rules, rows on the grain

@@ -4,6 +4,14 @@
 // y along its normal; phi is the body's clockwise rotation from "face (0, 1) flat on the ramp"; vertex
 // k (unwrapped, 1 at release) touches the ramp at x = k * side and is the pivot while
 // phi lies in [face(k-1), face(k)], face(j) = 2 pi j / n being the rotation with face (j, j+1) flat.
+//
+// On a curved track (ramp_profile.h) each pivot turns gravity to the local slope at its own x and
+// keeps it until the next impact. The pendulum then stays the autonomous psi'' = a sin(psi) of
+// pivot_motion.h, exact along its Taylor series, with one slope per face; and as the centre travels
+// from about half a side before the pivot to half a side past it, the pivot's slope is the mean slope
+// over that travel to second order, so the potential each face releases matches the track's (the
+// books use the track's own height, ramp_profile.h). The slope under the centre, which the grain
+// engine uses, differs from it by at most curvature x R: hundredths of a degree for these shells.
 #include "sim/models/rolling_polygon.h"
 
 #include <algorithm>
@@ -56,6 +64,9 @@ private:
         double psi_lo = 0.0;   // face(k-1): landing back on the previous face
         double psi_hi = 0.0;   // face(k): landing on the next face
         double psi_end = kInf; // the centre reaching the ramp's end, if within this pivot's range
+        // The track's slope at the pivot: its sine and cosine, and the true vertical in the ramp frame.
+        double sin_t = 0.0, cos_t = 1.0;
+        Vec2 up;
     };
     enum class Event { none, forward, backward, end };
 
@@ -84,7 +95,7 @@ private:
 
     // The fill levelled as gravity lay with the shell turned by `levelled_at_rad` (the pour).
     void rebuild_body(double levelled_at_rad);
-    void rebuild_body_landed(long face);
+    void rebuild_body_landed(long face, long new_pivot);
     void impact(int direction);
     void land(long face);
     double barrier(long pivot, long face, bool forward) const;
@@ -125,8 +136,9 @@ private:
     std::vector<Vec2> outer_;
     int n_ = 0;
     double side_ = 0.0, radius_ = 0.0;
-    double sin_t_ = 0.0, cos_t_ = 0.0, g_ = 0.0;
-    Vec2 up_world_;
+    double g_ = 0.0;
+    // The true vertical at a pivot x_m down the track (its slope there).
+    Vec2 up_at(double x_m) const;
     bool has_fill_ = false;
 
     MassProperties body_;
@@ -157,18 +169,14 @@ Roller::Roller(const RollingBody& body, FillMotion fill, const RampFrame& track)
     n_ = static_cast<int>(outer_.size());
     side_ = geom::length(outer_[1] - outer_[0]);
     radius_ = geom::length(outer_[0]);
-    const double theta = tr_.angle_deg * kPi / 180.0;
-    sin_t_ = std::sin(theta);
-    cos_t_ = std::cos(theta);
     g_ = tr_.gravity_m_s2;
-    up_world_ = {-sin_t_, cos_t_};
     has_fill_ = b_.fill_ratio > 0.0 && b_.fill_areal_density_kg_m2 > 0.0;
     phi0_ = phi_ = tr_.start_rotation_rad;
     if (phi0_ < 0.0 || phi0_ > face_angle(1) * (1.0 + 1e-12))
         throw InputError(fmt::format("the release rotation of {:.3f} deg about the downhill vertex is more than one "
                                      "face ({:.3f} deg): the next vertex would start below the ramp",
                                      phi0_ * 180.0 / kPi, 360.0 / n_));
-    rebuild_body(tr_.pour_rotation_rad.value_or(phi0_));
+    rebuild_body(tr_.pour_rotation_rad.value_or(phi0_));  // poured where it is released, on vertex 1
     out_.fill_mass_kg = has_fill_ ? fill_.mass.mass_kg : 0.0;
     piv_ = make_pivot(1);
     if (tr_.pour_rotation_rad) {
@@ -181,9 +189,17 @@ Roller::Roller(const RollingBody& body, FillMotion fill, const RampFrame& track)
     out_.min_normal_force_N = kInf;
 }
 
+Vec2 Roller::up_at(double x_m) const {
+    const double theta = tr_.slope_rad_at(x_m);
+    return {-std::sin(theta), std::cos(theta)};
+}
+
 Roller::Pivot Roller::make_pivot(long k) const {
     Pivot p;
     p.k = k;
+    p.up = up_at(k * side_);
+    p.sin_t = -p.up.x;
+    p.cos_t = p.up.y;
     const Vec2 v = vertex(k);
     const Vec2 r0 = body_.centre_of_mass_m - v;
     p.d = geom::length(r0);
@@ -192,7 +208,7 @@ Roller::Pivot Roller::make_pivot(long k) const {
     // Turned by phi, the arm r0 points at atan2(r0) - phi in the ramp frame; it is straight up
     // (along the true vertical, theta + pi/2) at phi_top. Taken within half a turn of this pivot's range.
     const double mid = face_angle(k - 1) + kPi / n_;
-    const double theta = std::atan2(sin_t_, cos_t_);
+    const double theta = std::atan2(p.sin_t, p.cos_t);
     p.phi_top = std::atan2(r0.y, r0.x) - theta - kPi / 2.0;
     p.phi_top += 2.0 * kPi * std::round((mid - p.phi_top) / (2.0 * kPi));
     p.psi_lo = face_angle(k - 1) - p.phi_top;
@@ -207,7 +223,10 @@ double Roller::potential_abs(double phi) const { return potential_abs(std::cos(p
 
 double Roller::potential_abs(double cos_phi, double sin_phi) const {
     const Vec2 cm = Vec2{piv_.k * side_, 0.0} + turned_back(body_.centre_of_mass_m - vertex(piv_.k), cos_phi, sin_phi);
-    return body_.mass_kg * g_ * geom::dot(cm, up_world_);
+    // A curved track's own height, as the grain tracker books it: the per-pivot slope is the model's
+    // approximation of the motion, not of the energy.
+    if (tr_.curved()) return body_.mass_kg * g_ * tr_.height_at_m(cm.x, cm.y);
+    return body_.mass_kg * g_ * geom::dot(cm, piv_.up);
 }
 
 TrajectorySample Roller::sample(double t, double phi, double omega) const {
@@ -230,16 +249,18 @@ TrajectorySample Roller::sample(double t, double phi, double omega) const {
 double Roller::normal_force(double sp, double cp, double w2) const {
     // N = M (g cos theta + a_cm . y): the centre of mass turns about the fixed pivot, so
     // a_cm.y = -phi'' r.x - phi'^2 r.y with r the arm from pivot to centre of mass.
-    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_);  // d sin(psi - theta)
-    const double ry = piv_.d * (cp * cos_t_ + sp * sin_t_);  // d cos(psi - theta)
-    return body_.mass_kg * (g_ * cos_t_ - piv_.a * sp * rx - w2 * ry);
+    const double sin_t = piv_.sin_t, cos_t = piv_.cos_t;
+    const double rx = piv_.d * (sp * cos_t - cp * sin_t);  // d sin(psi - theta)
+    const double ry = piv_.d * (cp * cos_t + sp * sin_t);  // d cos(psi - theta)
+    return body_.mass_kg * (g_ * cos_t - piv_.a * sp * rx - w2 * ry);
 }
 
 double Roller::friction_force(double sp, double cp, double rate) const {
     // M a_cm = M g + (F, N) in the ramp frame, the centre of mass turning about the fixed pivot:
     // a_cm.x = phi'' r.y - phi'^2 r.x (see normal_force for a_cm.y).
-    const double rx = piv_.d * (sp * cos_t_ - cp * sin_t_), ry = piv_.d * (cp * cos_t_ + sp * sin_t_);
-    return body_.mass_kg * (piv_.a * sp * ry - rate * rate * rx - g_ * sin_t_);
+    const double sin_t = piv_.sin_t, cos_t = piv_.cos_t;
+    const double rx = piv_.d * (sp * cos_t - cp * sin_t), ry = piv_.d * (cp * cos_t + sp * sin_t);
+    return body_.mass_kg * (piv_.a * sp * ry - rate * rate * rx - g_ * sin_t);
 }
 
 void Roller::note_friction(double sp, double cp, double rate) {
@@ -262,12 +283,22 @@ double Roller::holding_margin(double sp, double cp, double w2, double rate) cons
     return std::min(nf, spare);
 }
 
-void Roller::rebuild_body_landed(long face) {
+void Roller::rebuild_body_landed(long face, long new_pivot) {
+    // Levelled to gravity as the new pivot turns it (the slope the motion after the impact sees).
+    const Vec2 up = up_at(new_pivot * side_);
+    if (tr_.curved()) {
+        // The vertical differs from face to face: no orientation repeats exactly.
+        const FillSegments f =
+            fill_segments(b_.inner_m, geom::rotate(up, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+        fill_ = {f.up, f.mass};
+        body_ = combine(b_.shell, fill_.mass);
+        return;
+    }
     const size_t key = static_cast<size_t>(((face % n_) + n_) % n_);
     if (landed_fill_.empty()) landed_fill_.resize(static_cast<size_t>(n_));
     if (!landed_fill_[key]) {
         const FillSegments f =
-            fill_segments(b_.inner_m, geom::rotate(up_world_, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
+            fill_segments(b_.inner_m, geom::rotate(up, phi_), b_.fill_ratio, b_.fill_areal_density_kg_m2);
         landed_fill_[key] = LevelledFill{f.up, f.mass};
     }
     fill_ = *landed_fill_[key];
@@ -280,7 +311,8 @@ void Roller::rebuild_body(double levelled_at_rad) {
         return;
     }
     // The body frame sees gravity turned back by the body's rotation when the fill was levelled.
-    const FillSegments f = fill_segments(b_.inner_m, geom::rotate(up_world_, levelled_at_rad), b_.fill_ratio,
+    // Vertex 1 is the pivot at release.
+    const FillSegments f = fill_segments(b_.inner_m, geom::rotate(up_at(side_), levelled_at_rad), b_.fill_ratio,
                                          b_.fill_areal_density_kg_m2);
     fill_ = {f.up, f.mass};
     body_ = combine(b_.shell, fill_.mass);
@@ -452,7 +484,7 @@ void Roller::impact(int direction) {
     if (has_fill_ && fill_motion_ == FillMotion::relevel && b_.fill_ratio < 1.0) {
         // The surface re-levels; the drop of the fill's centre of mass turns into no kinetic energy.
         const Vec2 old_cm = fill_.mass.centre_of_mass_m;
-        rebuild_body_landed(face);
+        rebuild_body_landed(face, new_k);
         const double drop_J = fill_.mass.mass_kg * g_ * geom::dot(old_cm - fill_.mass.centre_of_mass_m, fill_.up);
         dissipated_ += drop_J;
         out_.relevel_dissipated_J += drop_J;
