@@ -223,13 +223,13 @@ Measurements measure_landing(const Scene& s, const std::vector<LandingRow>& land
 
 }  // namespace
 
-TEST_CASE("the energy before an impact is the one at the last step before the vertex first touched",
+TEST_CASE("the energy before an impact is the peak of the approach, from the step before the vertex touched",
           "[tracker]") {
     const Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}}});
     SECTION("a landing the vertex presses into for three steps") {
         const Measurements m = measure_landing(s, {{3.0, 1.0, 1.2},
                                                    {2.0, 1.0, 1.0},    // the last step above the ramp
-                                                   {0.5, 1.0, 0.9},    // touching, still approaching
+                                                   {0.5, 1.0, 0.9},    // touching: the springs take energy
                                                    {0.3, 1.0, 0.8},
                                                    {0.1, 1.0, 0.7},
                                                    {0.0, 0.0, 0.5},    // stopped: the impact
@@ -237,6 +237,17 @@ TEST_CASE("the energy before an impact is the one at the last step before the ve
         REQUIRE(m.impacts.size() == 1);
         CHECK(m.impacts[0].time_s == 5.0 / s.fidelity.step_hz);
         CHECK(m.impacts[0].kinetic_before_J == 1.0);
+        CHECK(m.impacts[0].kinetic_after_J == 0.5);
+    }
+    SECTION("a vertex falling freely inside the tolerance, as Box2D's does before its contact skin") {
+        const Measurements m = measure_landing(s, {{3.0, 1.0, 1.2},
+                                                   {2.0, 1.0, 1.0},
+                                                   {0.5, 1.0, 1.02},  // touching, still gaining energy
+                                                   {0.2, 1.0, 1.04},
+                                                   {0.0, 0.0, 0.5},
+                                                   {0.0, 0.0, 0.5}});
+        REQUIRE(m.impacts.size() == 1);
+        CHECK(m.impacts[0].kinetic_before_J == 1.04);
         CHECK(m.impacts[0].kinetic_after_J == 0.5);
     }
     SECTION("a landing stopped in the step it touched") {
