@@ -9,6 +9,7 @@
 #include "sim/measurements.h"
 #include "sim/scene.h"
 #include "sim/shell_pose.h"
+#include "sim/shell_tracker.h"
 
 namespace polyroll::dem3d {
 
@@ -30,18 +31,20 @@ std::vector<StateRow> parse_states_csv(const std::string& text);
 // holds grains.
 TrajectorySample trajectory_sample(const StateRow& r, const StateRow& release, bool has_fill);
 
-struct TrackRules {
-    int grains = 0;              // in the box at release
-    double energy_scale_J = 0.0; // total mass x g x pivot radius: the scale of the run's energies
-    // A landing vertex nearer the ramp than this touches it (the 3D shell meets the ramp with the
-    // spheres along its edges, so its vertices stay about their radius above the surface).
-    double contact_tolerance_m = 0.0;
-};
+// The rules' model-specific part (sim/shell_tracker.h): measure_states sets the divergence messages'
+// wording for the box; the caller gives the grains, the energy scale and the contact tolerance (the
+// 3D shell meets the ramp with the spheres along its edges, so its vertices stay about their radius
+// above the surface).
+using polyroll::TrackRules;
 
-// Measures the rows as the tracker measures a Box2D run: face impacts (with the energy before, at the
-// landing, and kKineticDelay_s after), trajectory rows at run.sample_hz, rest, the end of the ramp,
-// the time limit, the terminal velocity and the energy books; non-finite numbers, grains leaving the
-// box or energy created end it as diverged, saying when and why.
+// The row as the shared rules observe it; the fill's offset where the box holds grains.
+ObservedState observed_state(const StateRow& r, bool has_fill);
+
+// Measures the rows by the rules a Box2D run is measured by (the same ShellTracker): face impacts
+// (with the energy before, at the landing, and kKineticDelay_s after), trajectory rows at
+// run.sample_hz, rest, the end of the ramp, the time limit, the terminal velocity and the energy
+// books; non-finite numbers, grains leaving the box or energy created end it as diverged, saying when
+// and why.
 Measurements measure_states(const Scene& scene, const std::vector<StateRow>& rows, const TrackRules& rules);
 
 }  // namespace polyroll::dem3d
