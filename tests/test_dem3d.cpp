@@ -163,7 +163,10 @@ TEST_CASE("dem3d: a saved Yade output is read and measured as the run that wrote
     // deg, seed 1 (states.csv, setup.json, IN.json and the first two frames of grains.csv). That run
     // stopped at its first impact 0.026 m down the ramp, all 241 grains inside.
     const std::filesystem::path dir = std::filesystem::path(POLYROLL_SOURCE_DIR) / "tests" / "data" / "dem3d";
-    const Scene s = test::with_model(test::scene_with({{"ramp", {{"angle_deg", 14.0}}}}), Model::dem3d);
+    // That run's edge spheres were 1 mm.
+    const Scene s = test::with_model(test::scene_with({{"shell", {{"preset", "hexagon-small"}, {"vertex_radius_m", 0.001}}},
+                                                       {"ramp", {{"angle_deg", 14.0}}}}),
+                                     Model::dem3d);
     // The saved input is what this scene gives the script today.
     CHECK(json::parse(test::read_file(dir / "IN.json")) == script_input(s, s.run.sample_hz));
     const Dem3dOutput out = read_output(s, dir);

@@ -117,8 +117,8 @@ TEST_CASE("polyroll run --model dem3d: a missing Yade or a bad 3D field is one l
 
 TEST_CASE("polyroll run --vertex-radius: out of its range or wider than half the wall, one line and exit 2",
           "[cli][vertex]") {
-    // 0.1 mm to 5 mm, and at most half the wall (1 mm in the small shells' 2 mm walls).
-    for (const char* bad : {"--vertex-radius 0", "--vertex-radius 0.006", "--vertex-radius 0.0015"}) {
+    // 0 to 5 mm, and at most half the wall (1 mm in the small shells' 2 mm walls).
+    for (const char* bad : {"--vertex-radius -0.001", "--vertex-radius 0.006", "--vertex-radius 0.0015"}) {
         const Output o = run_polyroll(std::string("run --model grains ") + bad);
         INFO(bad << ": " << o.out);
         CHECK(o.exit_code == 2);

@@ -32,9 +32,11 @@ using polyroll::test::table_without_wall_time;
 
 const polyroll::test::Scratch scratch("sweep-");
 
-// A cheap grid: empty shells and a few grains, draft fidelity, short runs; one point out of range.
+// A cheap grid: empty shells and a few grains, short runs; one point out of range. Standard fidelity:
+// at draft a grain of a filled shell tumbling at 30 deg slips through a wall now and then (measured: 2
+// of 18 runs at 35-45 deg), and this grid's in-range points must all finish.
 SweepPlan tiny_plan() {
-    json base = {{"fidelity", "draft"}, {"run", {{"time_limit_s", 0.6}}}, {"ramp", {{"preset", "wooden"}}}};
+    json base = {{"fidelity", "standard"}, {"run", {{"time_limit_s", 0.6}}}, {"ramp", {{"preset", "wooden"}}}};
     std::vector<SweepAxis> axes = {
         {"shell.sides", "--sides", {6, 8}},
         {"fill.ratio", "--fill", {0.0, 0.1, 1.5}},

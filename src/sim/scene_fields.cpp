@@ -129,9 +129,10 @@ std::vector<SceneField> make_table() {
             .range(0.0, 1.0).max_open()
             .help("share of the mass in the two lids; null: walls and lids of one material, split by volume"),
         Row("shell.vertex_radius_m", T::number, member<&Scene::shell, &ShellParams::vertex_radius_m>())
-            .range(0.0001, 0.005).max_of(max_vertex_radius_m, {"shell.wall_thickness_m"}).unit("m").flag("--vertex-radius")
+            .range(0.0, 0.005).max_of(max_vertex_radius_m, {"shell.wall_thickness_m"}).unit("m").flag("--vertex-radius")
             .help("radius of the rounding of the shell's outer vertices, the corners it rolls over (the grain "
-                  "simulation and the 3D reference; the reduced models keep sharp vertices)"),
+                  "simulation and the 3D reference; 0 as sharp as each engine makes them: Box2D's skin, 0.1 mm "
+                  "spheres in 3D; the reduced models keep sharp vertices)"),
 
         // --- fill: how much of the inside the grains fill, and the grains (assets/materials.json)
         Row("fill.ratio", T::number, member<&Scene::fill, &FillParams::ratio>())

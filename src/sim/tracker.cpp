@@ -6,12 +6,15 @@
 #include <fmt/format.h>
 
 #include "sim/ramp_profile.h"
+#include "sim/vertex_rounding.h"
+#include "sim/world_parts.h"
 
 namespace polyroll {
 
 namespace {
 // A landing vertex closer to the ramp than this counts as touching it. Box2D keeps shapes about two
-// skins (0.02 engine units) apart; 0.05 units leaves room for that and for the linear slop.
+// skins (0.02 engine units) apart; 0.05 units leaves room for that and for the linear slop. A
+// rounded vertex (vertex_rounding.h) lands on its arc with the sharp corner that much higher again.
 constexpr double kContactToleranceUnits = 0.05;
 // Share of the engine's speed cap (2 units per engine step) at which a run is declared diverged.
 constexpr double kSpeedCapShare = 0.8;
@@ -22,7 +25,9 @@ TrackRules box2d_rules(const SimWorld& w) {
     TrackRules r;
     r.grains = static_cast<int>(w.grains.size());
     r.energy_scale_J = total_mass_kg * w.scene.run.gravity_m_s2 * w.shell_props.pivot_radius_m;
-    r.contact_tolerance_m = kContactToleranceUnits / w.units.units_per_m;
+    ShellParams engine_shell = w.scene.shell;
+    engine_shell.vertex_radius_m = world_parts::engine_vertex_radius_m(w);
+    r.contact_tolerance_m = kContactToleranceUnits / w.units.units_per_m + vertex_rounding_lift_max_m(engine_shell);
     r.grains_leave_through = "the shell through its walls";
     r.remedy = "use a finer fidelity";
     return r;

@@ -1,6 +1,8 @@
 // The ramp and the shell, held and let go: see world_parts.h.
 #include "sim/world_parts.h"
 
+#include <cmath>
+
 #include "sim/vertex_rounding.h"
 
 namespace polyroll::world_parts {
@@ -89,7 +91,26 @@ void add_shell(SimWorld& w, const ShellPose& pose) {
     }
     if (radius_m <= 0.0) return;
     // The arcs: circles tangent to both faces' outer lines. A circle has no skin, so it is grown by
-    // the polygons' own to stay flush with the faces beside it.
+    // the polygons' own to stay flush with the faces beside it. Between two cut sides and the arc a
+    // wedge from the inner corner would be left open, a gap a fast grain could slip into: a triangle
+    // closes it, so the corner is as solid as a sharp one.
+    for (int i = 0; i < n; ++i) {
+        const geom::Vec2 v = w.outer_local_m[i];
+        const geom::Vec2 before = w.outer_local_m[(i + n - 1) % n], after = w.outer_local_m[(i + 1) % n];
+        b2Vec2 wedge[3] = {to_b2(w.inner_local_m[i], u), to_b2(v + (cut_m / geom::length(before - v)) * (before - v), u),
+                           to_b2(v + (cut_m / geom::length(after - v)) * (after - v), u)};
+        // Box2D welds points nearer than half its linear slop (and refuses the shape left); a wedge that
+        // narrow leaves no gap a grain could find, so it is not needed (many sides, a small radius).
+        if (b2Distance(wedge[1], wedge[2]) < 2.0f * b2_linearSlop) continue;
+        b2PolygonShape shape;
+        shape.Set(wedge, 3);
+        b2FixtureDef fd;
+        fd.shape = &shape;
+        fd.density = 1.0f;
+        fd.friction = static_cast<float>(w.scene.ramp.friction);
+        fd.restitution = 0.0f;
+        w.shell->CreateFixture(&fd);
+    }
     for (const geom::Vec2& c : vertex_arc_centres_m(engine_shell(w))) {
         b2CircleShape arc;
         arc.m_p = to_b2(c, u);

@@ -1,6 +1,7 @@
 // The 3D reference's input: see dem3d_input.h.
 #include "sim/dem3d/dem3d_input.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sim/fill_plan.h"
@@ -24,6 +25,11 @@ int grain_count(const Scene& s) {
 
 namespace {
 
+// The smallest edge sphere: the spheres' soft contacts with the ramp overlap about a tenth of a
+// millimetre under the shell's weight (1 ms contacts), so a sharper vertex is not one this engine can
+// make; shell.vertex_radius_m below it (0: as sharp as the engine makes it) is this.
+constexpr double kMinEdgeSphereRadius_m = 0.0001;
+
 json points(const std::vector<geom::Vec2>& poly) {
     json a = json::array();
     for (const geom::Vec2& p : poly) a.push_back({p.x, p.y});
@@ -31,6 +37,8 @@ json points(const std::vector<geom::Vec2>& poly) {
 }
 
 }  // namespace
+
+double edge_sphere_radius_m(const Scene& s) { return std::max(s.shell.vertex_radius_m, kMinEdgeSphereRadius_m); }
 
 json script_input(const Scene& s, double frames_hz) {
     const ShellProperties p = shell_properties(s.shell);
@@ -77,7 +85,7 @@ json script_input(const Scene& s, double frames_hz) {
                  {"restitution", m.restitution}};
     j["dem3d"] = {{"contact_time_s", s.dem3d.contact_time_s},
                   {"time_step_share", s.dem3d.time_step_share},
-                  {"edge_radius_m", s.shell.vertex_radius_m},
+                  {"edge_radius_m", edge_sphere_radius_m(s)},
                   {"channel_width_m", s.dem3d.channel_width_m.value_or(0.0)}};  // 0: no channel
     j["step_hz"] = s.fidelity.step_hz;
     j["time_limit_s"] = s.run.time_limit_s;

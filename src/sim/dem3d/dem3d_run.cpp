@@ -20,6 +20,7 @@
 #include "sim/fill_plan.h"
 #include "sim/models/reveal.h"
 #include "sim/shell_properties.h"
+#include "sim/vertex_rounding.h"
 
 namespace polyroll::dem3d {
 
@@ -78,9 +79,9 @@ private:
 };
 
 // A 3D shell touches the ramp with the spheres along its edges, set in from each outer vertex until
-// they touch both faces (a rounded corner): a vertex touching the ramp is a fraction of their radius
-// below its surface (0.16 mm for the hexagon's 1 mm spheres). A vertex within this margin above the
-// surface counts as touching, as the tracker's tolerance does for Box2D's skin.
+// they touch both faces (the rounded corner of vertex_rounding.h): when they touch, the sharp vertex
+// stands vertex_rounding_lift_max_m above the surface, less the spheres' soft overlap. A vertex
+// within that and this margin counts as touching, as the tracker's tolerance does for Box2D's skin.
 constexpr double kContactMargin_m = 0.00025;
 
 }  // namespace
@@ -146,7 +147,9 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
     TrackRules rules;
     rules.grains = r.grains;
     rules.energy_scale_J = (r.shell.mass_kg + r.fill_mass_kg) * scene.run.gravity_m_s2 * r.shell.pivot_radius_m;
-    rules.contact_tolerance_m = kContactMargin_m;
+    ShellParams edges = scene.shell;
+    edges.vertex_radius_m = edge_sphere_radius_m(scene);
+    rules.contact_tolerance_m = kContactMargin_m + vertex_rounding_lift_max_m(edges);
     r.measured = measure_states(scene, out.rows, rules);
     if (engine.time_step_s > 0.0) r.steps = std::lround(r.measured.end_time_s / engine.time_step_s);
     return out;
