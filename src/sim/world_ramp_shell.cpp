@@ -41,6 +41,17 @@ double engine_vertex_radius_m(const SimWorld& w) {
 }
 
 namespace {
+// One fixture of the shell: the ramp's friction on it (Box2D mixes two fixtures' as sqrt(a b), and the
+// shell's contact with the ramp is set by ContactMaterials anyway), no bounce.
+void add_shell_part(SimWorld& w, const b2Shape& shape) {
+    b2FixtureDef fd;
+    fd.shape = &shape;
+    fd.density = 1.0f;  // replaced by the real mass data on release
+    fd.friction = static_cast<float>(w.scene.ramp.friction);
+    fd.restitution = 0.0f;
+    w.shell->CreateFixture(&fd);
+}
+
 // The shell as the engine holds it: the scene's, with the engine's vertex radius.
 ShellParams engine_shell(const SimWorld& w) {
     ShellParams s = w.scene.shell;
@@ -82,12 +93,7 @@ void add_shell(SimWorld& w, const ShellPose& pose) {
                           to_b2(w.outer_local_m[j] - cut_m * along, u), to_b2(w.inner_local_m[j], u)};
         b2PolygonShape shape;
         shape.Set(quad, 4);
-        b2FixtureDef fd;
-        fd.shape = &shape;
-        fd.density = 1.0f;  // replaced by the real mass data on release
-        fd.friction = static_cast<float>(w.scene.ramp.friction);
-        fd.restitution = 0.0f;
-        w.shell->CreateFixture(&fd);
+        add_shell_part(w, shape);
     }
     if (radius_m <= 0.0) return;
     // The arcs: circles tangent to both faces' outer lines. A circle has no skin, so it is grown by
@@ -104,23 +110,13 @@ void add_shell(SimWorld& w, const ShellPose& pose) {
         if (b2Distance(wedge[1], wedge[2]) < 2.0f * b2_linearSlop) continue;
         b2PolygonShape shape;
         shape.Set(wedge, 3);
-        b2FixtureDef fd;
-        fd.shape = &shape;
-        fd.density = 1.0f;
-        fd.friction = static_cast<float>(w.scene.ramp.friction);
-        fd.restitution = 0.0f;
-        w.shell->CreateFixture(&fd);
+        add_shell_part(w, shape);
     }
     for (const geom::Vec2& c : vertex_arc_centres_m(engine_shell(w))) {
         b2CircleShape arc;
         arc.m_p = to_b2(c, u);
         arc.m_radius = static_cast<float>(u.to_units(radius_m)) + b2_polygonRadius;
-        b2FixtureDef fd;
-        fd.shape = &arc;
-        fd.density = 1.0f;  // replaced by the real mass data on release
-        fd.friction = static_cast<float>(w.scene.ramp.friction);
-        fd.restitution = 0.0f;
-        w.shell->CreateFixture(&fd);
+        add_shell_part(w, arc);
     }
 }
 
