@@ -50,11 +50,8 @@ RecordedRun record_grain_run(const Scene& scene) {
     while (sim.step()) record();
     record();  // the step that ended the run
     r.measured = sim.measured();
-    double total_mass_kg = w.shell_props.mass_kg;
-    for (const PlannedGrain& g : w.fill.grains) total_mass_kg += g.mass_kg;
-    r.rules.grains = static_cast<int>(w.grains.size());
-    r.rules.energy_scale_J = total_mass_kg * scene.run.gravity_m_s2 * w.shell_props.pivot_radius_m;
-    r.rules.contact_tolerance_m = 0.05 / w.units.units_per_m;  // tracker.cpp's, in engine units
+    // The grain model's own rules; measure_states gives the divergences the 3D box's wording.
+    r.rules = box2d_track_rules(w);
     return r;
 }
 

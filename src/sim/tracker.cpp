@@ -19,7 +19,15 @@ constexpr double kContactToleranceUnits = 0.05;
 // Share of the engine's speed cap (2 units per engine step) at which a run is declared diverged.
 constexpr double kSpeedCapShare = 0.8;
 
-TrackRules box2d_rules(const SimWorld& w) {
+ShellPose box2d_release(const SimWorld& w) {
+    ShellPose p;
+    p.angle_rad = w.shell->GetAngle();
+    p.centre_m = {w.start_centre_x_m, w.shell->GetPosition().y / w.units.units_per_m};
+    return p;
+}
+}  // namespace
+
+TrackRules box2d_track_rules(const SimWorld& w) {
     double total_mass_kg = w.shell_props.mass_kg;
     for (const PlannedGrain& g : w.fill.grains) total_mass_kg += g.mass_kg;
     TrackRules r;
@@ -33,16 +41,8 @@ TrackRules box2d_rules(const SimWorld& w) {
     return r;
 }
 
-ShellPose box2d_release(const SimWorld& w) {
-    ShellPose p;
-    p.angle_rad = w.shell->GetAngle();
-    p.centre_m = {w.start_centre_x_m, w.shell->GetPosition().y / w.units.units_per_m};
-    return p;
-}
-}  // namespace
-
 Tracker::Tracker(const SimWorld& w)
-    : w_(w), rules_(w.scene, box2d_release(w), box2d_rules(w), [this] { return check_grains(); }) {
+    : w_(w), rules_(w.scene, box2d_release(w), box2d_track_rules(w), [this] { return check_grains(); }) {
     upm_ = w.units.units_per_m;
     speed_cap_m_s_ = w.units.speed_cap_m_s(w.scene.fidelity);
     step_dt_s_ = 1.0 / w.scene.fidelity.step_hz;

@@ -11,6 +11,10 @@
 
 namespace polyroll {
 
+// The rules the grain model's states are measured by: its grain count, energy scale and landing
+// tolerance (the engine's gap to the ramp and a rounded vertex's lift), and its divergence wording.
+TrackRules box2d_track_rules(const SimWorld& w);
+
 class Tracker {
 public:
     explicit Tracker(const SimWorld& world);
