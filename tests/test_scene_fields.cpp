@@ -116,7 +116,7 @@ TEST_CASE("validation messages from the table are the ones the code always gave"
     CHECK(test::scene_error_of(R"({"ramp": {"angle_deg": 90}})") ==
           "ramp.angle_deg = 90 (from test) is out of range (allowed: from 0 to 89 degrees)");
     CHECK(test::scene_error_of(R"({"shell": {"wall_thickness_m": 0}})") ==
-          "shell.wall_thickness_m = 0 (from test) is out of range (allowed: above 0 to 0.0168 m)");
+          "shell.wall_thickness_m = 0 (from test) is out of range (allowed: above 0 to 0.0168 m (at most half of shell.inner_circumradius_m))");
     CHECK(test::scene_error_of(R"({"shell": {"lid_mass_fraction": 1}})") ==
           "shell.lid_mass_fraction = 1 (from test) is out of range (allowed: from 0 to 1, exclusive)");
     CHECK(test::scene_error_of(R"({"run": {"sample_hz": 5000}})") ==

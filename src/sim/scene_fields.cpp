@@ -117,7 +117,8 @@ std::vector<SceneField> make_table() {
         Row("shell.inner_circumradius_m", T::number, member<&Scene::shell, &ShellParams::inner_circumradius_m>())
             .range(0.005, 1.0).unit("m").help("inside centre-to-vertex radius R"),
         Row("shell.wall_thickness_m", T::number, member<&Scene::shell, &ShellParams::wall_thickness_m>())
-            .range(0.0, 0.0).min_open().max_of(max_wall_thickness_m, {"shell.inner_circumradius_m"}).unit("m")
+            .range(0.0, 0.0).min_open().max_of(max_wall_thickness_m, {"shell.inner_circumradius_m"})
+            .unit("m", "(at most half of shell.inner_circumradius_m)")
             .help("side walls' thickness, perpendicular to each face"),
         Row("shell.depth_m", T::number, member<&Scene::shell, &ShellParams::depth_m>())
             .range(0.001, 2.0).unit("m").help("inside length along the roll axis, between the lids"),
@@ -129,7 +130,8 @@ std::vector<SceneField> make_table() {
             .range(0.0, 1.0).max_open()
             .help("share of the mass in the two lids; null: walls and lids of one material, split by volume"),
         Row("shell.vertex_radius_m", T::number, member<&Scene::shell, &ShellParams::vertex_radius_m>())
-            .range(0.0, 0.005).max_of(max_vertex_radius_m, {"shell.wall_thickness_m"}).unit("m").flag("--vertex-radius")
+            .range(0.0, 0.005).max_of(max_vertex_radius_m, {"shell.wall_thickness_m"})
+            .unit("m", "(at most 5 mm and half of shell.wall_thickness_m)").flag("--vertex-radius")
             .help("radius of the rounding of the shell's outer vertices, the corners it rolls over (the grain "
                   "simulation and the 3D reference; 0 as sharp as each engine makes them: Box2D's skin, 0.1 mm "
                   "spheres in 3D; the reduced models keep sharp vertices)"),
@@ -145,7 +147,7 @@ std::vector<SceneField> make_table() {
             member<&Scene::fill, &FillParams::material, &MaterialParams::diameter_m>())
             .range(0.0005, 0.0)
             .max_of(max_grain_diameter_m, {"shell.sides", "shell.inner_circumradius_m", "fill.material.diameter_spread"})
-            .unit("m").help("mean grain diameter"),
+            .unit("m", "(at most the inside apothem over 1 + fill.material.diameter_spread)").help("mean grain diameter"),
         Row("fill.material.diameter_spread", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::diameter_spread>())
             .range(0.0, 0.5).help("grain diameters are uniform in d (1 +- spread)"),
