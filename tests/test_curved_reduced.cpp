@@ -102,7 +102,8 @@ Outcome outcome_of(const RunResult& r) {
 // 3%, "an empty shell rolls alike in the rigid model and the grain simulation"); a stop within 5% of
 // the distance or half a side, whichever is more; the energy dissipated by the end within 5% (both
 // book the track's own potential).
-void check_alike(const Outcome& model, const Outcome& grains, double side_m, double vt_share = 0.03) {
+void check_alike(const Outcome& model, const Outcome& grains, double side_m, double vt_share = 0.03,
+                 double dissipated_share = 0.05) {
     INFO("behaviour " << to_string(model.behaviour) << " / " << to_string(grains.behaviour) << ", D "
                       << model.distance_m << " / " << grains.distance_m << " m, Vt "
                       << model.terminal_m_s.value_or(-1.0) << " / " << grains.terminal_m_s.value_or(-1.0)
@@ -116,7 +117,7 @@ void check_alike(const Outcome& model, const Outcome& grains, double side_m, dou
         CHECK(std::fabs(model.distance_m - grains.distance_m) <=
               std::max(0.05 * grains.distance_m, 0.5 * side_m));
     }
-    CHECK(model.dissipated_J == Approx(grains.dissipated_J).epsilon(0.05));
+    CHECK(model.dissipated_J == Approx(grains.dissipated_J).epsilon(dissipated_share));
 }
 
 }  // namespace
@@ -137,23 +138,22 @@ TEST_CASE("curved track: the rigid model's empty shell behaves as the grain engi
         const RunResult grains = run_scene(test::with_model(s, Model::grains));
         REQUIRE(rigid.model_valid);
         check_alike(outcome_of(rigid), outcome_of(grains), rigid.shell.outer_side_m);
-        // The unrolled track's gravity does a little more work than its height falls, by about the
-        // centre's height x curvature (1e-3 of the drop): the model books its impact losses as they
-        // happen, so that shows as energy created, within the bound the engine's curved runs meet
-        // (test_ramp_profile.cpp).
-        CHECK(rigid.measured.max_energy_gain_J < 1e-3);
+        // Gravity held at the pivot's slope would do a little more work than the track's height
+        // falls (about the centre's height x curvature, 1e-3 of the drop, adding up face after face);
+        // the model turns it so the books close at every landing (rolling_polygon.cpp,
+        // face_work_up). What is left is the swing within a face: below 1e-4 of the height fallen
+        // (measured 0.7-3.7e-5; 9e-4 for the hexagon at 10 deg before the turn).
+        const double fallen_J = -rigid.measured.trajectory.back().potential_J;
+        REQUIRE(fallen_J > 0.0);
+        CHECK(rigid.measured.max_energy_gain_J < 1e-4 * fallen_J);
     }
 }
 
 TEST_CASE("curved track: auto runs empty and full shells with the reduced models as the grain engine runs them",
           "[ramp_profile][curved][auto][slow]") {
-    struct Case {
-        const char* shell;
-        double fill, angle_deg;
-    };
-    for (const Case& c : {Case{"octagon-small", 0.0, 25.0}, Case{"hexagon-small", 1.0, 12.0}}) {
-        INFO(c.shell << " fill " << c.fill << " at " << c.angle_deg << " deg");
-        const Scene s = shell_on_track(c.shell, c.fill, c.angle_deg, 1.7, Model::automatic);
+    // A full hexagon rolling down without lifting off: one run each.
+    {
+        const Scene s = shell_on_track("hexagon-small", 1.0, 12.0, 1.7, Model::automatic);
         const RunResult a = run_scene(s);
         REQUIRE(a.model_choice);
         CHECK(a.model_choice->model == Model::rigid);
@@ -162,6 +162,37 @@ TEST_CASE("curved track: auto runs empty and full shells with the reduced models
         const RunResult g = run_scene(test::with_model(s, Model::grains));
         // A full shell's Box2D discs rattle in their packing at every impact (docs/physics.md, Full
         // shells), which the rigid polygon leaves out: measured 10% slower here, so 15% for it.
-        check_alike(outcome_of(a), outcome_of(g), a.shell.outer_side_m, c.fill > 0.0 ? 0.15 : 0.03);
+        check_alike(outcome_of(a), outcome_of(g), a.shell.outer_side_m, 0.15);
     }
+    // An empty octagon at 25 deg hops down the lower track (the rigid model goes on as a free body):
+    // a bouncing run is chaotic, and a twentieth of a degree moves the energy it loses by 10-35% in
+    // either model (measured at 24.9-25.1 deg), so one angle compares luck. Five angles a twentieth
+    // of a degree apart: the same behaviour at each, and the means within what their spread allows
+    // (measured 2026-11-28: Vt 3% apart, the energy dissipated 10%; grain engine's spread 0.13-0.20 J).
+    Outcome model_mean, grains_mean;
+    double side_m = 0.0;
+    const int angles = 5;
+    for (int i = 0; i < angles; ++i) {
+        const double angle_deg = 24.9 + 0.05 * i;
+        INFO("octagon-small fill 0 at " << angle_deg << " deg");
+        const Scene s = shell_on_track("octagon-small", 0.0, angle_deg, 1.7, Model::automatic);
+        const RunResult a = run_scene(s);
+        REQUIRE(a.model_choice);
+        CHECK(a.model_choice->model == Model::rigid);
+        CHECK(model_that_ran(a) == Model::rigid);
+        CHECK(a.grains == 0);
+        const RunResult g = run_scene(test::with_model(s, Model::grains));
+        const Outcome m = outcome_of(a), e = outcome_of(g);
+        REQUIRE(m.behaviour == Behaviour::rolled_to_end);
+        REQUIRE(e.behaviour == Behaviour::rolled_to_end);
+        REQUIRE(m.terminal_m_s);
+        REQUIRE(e.terminal_m_s);
+        model_mean.terminal_m_s = model_mean.terminal_m_s.value_or(0.0) + *m.terminal_m_s / angles;
+        grains_mean.terminal_m_s = grains_mean.terminal_m_s.value_or(0.0) + *e.terminal_m_s / angles;
+        model_mean.dissipated_J += m.dissipated_J / angles;
+        grains_mean.dissipated_J += e.dissipated_J / angles;
+        side_m = a.shell.outer_side_m;
+    }
+    model_mean.behaviour = grains_mean.behaviour = Behaviour::rolled_to_end;
+    check_alike(model_mean, grains_mean, side_m, 0.05, 0.15);
 }
