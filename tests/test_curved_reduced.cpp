@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <utility>
 
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
@@ -149,17 +150,26 @@ TEST_CASE("curved track: the rigid model's empty shell behaves as the grain engi
     }
 }
 
+namespace {
+
+// The scene run by `auto`, which must pick the rigid model and run no grains, and by the grain engine.
+std::pair<RunResult, RunResult> auto_and_grains(const Scene& s) {
+    RunResult a = run_scene(s);
+    REQUIRE(a.model_choice);
+    CHECK(a.model_choice->model == Model::rigid);
+    CHECK(model_that_ran(a) == Model::rigid);
+    CHECK(a.grains == 0);
+    return {std::move(a), run_scene(test::with_model(s, Model::grains))};
+}
+
+}  // namespace
+
 TEST_CASE("curved track: auto runs empty and full shells with the reduced models as the grain engine runs them",
           "[ramp_profile][curved][auto][slow]") {
     // A full hexagon rolling down without lifting off: one run each.
     {
         const Scene s = shell_on_track("hexagon-small", 1.0, 12.0, 1.7, Model::automatic);
-        const RunResult a = run_scene(s);
-        REQUIRE(a.model_choice);
-        CHECK(a.model_choice->model == Model::rigid);
-        CHECK(model_that_ran(a) == Model::rigid);
-        CHECK(a.grains == 0);
-        const RunResult g = run_scene(test::with_model(s, Model::grains));
+        const auto [a, g] = auto_and_grains(s);
         // A full shell's Box2D discs rattle in their packing at every impact (docs/physics.md, Full
         // shells), which the rigid polygon leaves out: measured 10% slower here, so 15% for it.
         check_alike(outcome_of(a), outcome_of(g), a.shell.outer_side_m, 0.15);
@@ -176,12 +186,7 @@ TEST_CASE("curved track: auto runs empty and full shells with the reduced models
         const double angle_deg = 24.9 + 0.05 * i;
         INFO("octagon-small fill 0 at " << angle_deg << " deg");
         const Scene s = shell_on_track("octagon-small", 0.0, angle_deg, 1.7, Model::automatic);
-        const RunResult a = run_scene(s);
-        REQUIRE(a.model_choice);
-        CHECK(a.model_choice->model == Model::rigid);
-        CHECK(model_that_ran(a) == Model::rigid);
-        CHECK(a.grains == 0);
-        const RunResult g = run_scene(test::with_model(s, Model::grains));
+        const auto [a, g] = auto_and_grains(s);
         const Outcome m = outcome_of(a), e = outcome_of(g);
         REQUIRE(m.behaviour == Behaviour::rolled_to_end);
         REQUIRE(e.behaviour == Behaviour::rolled_to_end);
