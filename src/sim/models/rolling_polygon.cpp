@@ -199,8 +199,8 @@ Vec2 Roller::up_at(double x_m) const {
 // The run books the track's own height as its potential (potential_abs), and on a curved track
 // that height changes across the shell's height too (ramp_profile.h): gravity held at the pivot's
 // slope over a face does a little more work than the booked height falls (a share of about
-// kappa y, y the centre of mass's height), and the excess adds up face after face (measured before
-// this: 1.8e-6 J a face, the empty small hexagon at 10 deg on a track sagging 1.7 deg/m). So the
+// kappa y, y the centre of mass's height), and the excess adds up face after face (without the turn,
+// 1.8e-6 J a face for the empty small hexagon at 10 deg on a track sagging 1.7 deg/m). So the
 // vertical is turned, within that order of the pivot's slope, until the work from the landing on
 // face k-1 to the landing on face k equals the fall of the booked height between them: the energy
 // closes at every impact, and a rock back onto face k-1 returns it exactly.
