@@ -141,6 +141,11 @@ private:
     Vec2 up_at(double x_m) const;
     // The vertical the motion about pivot k sees on a curved track: see make_pivot.
     Vec2 face_work_up(long k, Vec2 up_pivot) const;
+    // The centre of mass in the ramp frame, turned by phi (its cosine and sine) about vertex k.
+    Vec2 centre_of_mass_about(long k, double cos_phi, double sin_phi) const {
+        return Vec2{static_cast<double>(k) * side_, 0.0} +
+               turned_back(body_.centre_of_mass_m - vertex(k), cos_phi, sin_phi);
+    }
     bool has_fill_ = false;
 
     MassProperties body_;
@@ -205,10 +210,7 @@ Vec2 Roller::up_at(double x_m) const {
 // face k-1 to the landing on face k equals the fall of the booked height between them: the energy
 // closes at every impact, and a rock back onto face k-1 returns it exactly.
 Vec2 Roller::face_work_up(long k, Vec2 up_pivot) const {
-    const Vec2 r0 = body_.centre_of_mass_m - vertex(k);
-    auto centre_of_mass_at = [&](double phi) {
-        return Vec2{k * side_, 0.0} + turned_back(r0, std::cos(phi), std::sin(phi));
-    };
+    auto centre_of_mass_at = [&](double phi) { return centre_of_mass_about(k, std::cos(phi), std::sin(phi)); };
     const Vec2 a = centre_of_mass_at(face_angle(k - 1)), b = centre_of_mass_at(face_angle(k));
     const Vec2 d = b - a;
     const double fall = tr_.height_at_m(b.x, b.y) - tr_.height_at_m(a.x, a.y);
@@ -256,7 +258,7 @@ Roller::Pivot Roller::make_pivot(long k) const {
 double Roller::potential_abs(double phi) const { return potential_abs(std::cos(phi), std::sin(phi)); }
 
 double Roller::potential_abs(double cos_phi, double sin_phi) const {
-    const Vec2 cm = Vec2{piv_.k * side_, 0.0} + turned_back(body_.centre_of_mass_m - vertex(piv_.k), cos_phi, sin_phi);
+    const Vec2 cm = centre_of_mass_about(piv_.k, cos_phi, sin_phi);
     // A curved track's own height, as the grain tracker books it: the per-pivot slope is the model's
     // approximation of the motion, not of the energy.
     if (tr_.curved()) return body_.mass_kg * g_ * tr_.height_at_m(cm.x, cm.y);
