@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "sim/bare_engine.h"
 #include "sim/results_io.h"
 #include "sim/world_builder.h"
 #include "test_helpers.h"
@@ -286,4 +287,26 @@ TEST_CASE("one disc per grain: energy never created and every disc stays inside"
     const RunResult r = checked_run(s);
     CHECK(r.grains > 200);
     CHECK(!r.measured.impacts.empty());
+}
+
+// polyroll bench --scaling reads the engine's load through measure_engine_load: the grains it built,
+// a time spent stepping, and Box2D's contacts split into touching and merely near (their enlarged
+// boxes overlapping). The large hexagon's smaller discs (a deeper box: sim/disc_size.h) sit closer
+// to one another than Box2D's fixed margin, so each disc keeps more contacts there: the measured
+// reason its grains cost more each (docs/engine-cost.md).
+TEST_CASE("the engine's load: grains, contacts near and touching, per disc", "[runs][bench]") {
+    const Scene small = test::scene_with(json::parse(R"({"run": {"model": "grains"}})"));
+    const EngineLoad a = measure_engine_load(small, 300);
+    CHECK(a.grains == 124);
+    CHECK(a.wall_s > 0.0);
+    CHECK(a.touching_per_grain > 0.5);
+    CHECK(a.contacts_per_grain > 2.0 * a.touching_per_grain);
+
+    const Scene large = test::scene_with(
+        json::parse(R"({"shell": {"preset": "hexagon-large"}, "fill": {"ratio": 0.5}, "run": {"model": "grains"}})"));
+    const EngineLoad b = measure_engine_load(large, 300);
+    CHECK(b.grains > 1400);
+    CHECK(b.contacts_per_grain > 1.3 * a.contacts_per_grain);
+    // Touching contacts per disc are a property of the packing, about the same in both piles.
+    CHECK(b.touching_per_grain == Approx(a.touching_per_grain).epsilon(0.5));
 }

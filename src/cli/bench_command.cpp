@@ -10,6 +10,7 @@
 #include "cli/bench_dem3d.h"
 #include "cli/bench_models.h"
 #include "cli/bench_render.h"
+#include "cli/bench_scaling.h"
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/assets.h"
@@ -29,10 +30,15 @@ struct BenchOptions {
     bool render_only = false, no_render = false, no_calibration = false;
     bool auto_only = false;
     bool dem3d_only = false, no_dem3d = false;
+    bool scaling_only = false, no_scaling = false;
     int ensemble = 0;  // with auto_only: members per shell of the ensemble table; 0: none
 };
 
 using Clock = std::chrono::steady_clock;
+
+// Simulated seconds after the release for the grain-count rows: long enough for the first impacts,
+// where the pile starts to tumble and its contacts churn.
+constexpr double kScalingSimS = 1.5;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -45,6 +51,10 @@ int bench(const BenchOptions& o) {
     }
     if (o.dem3d_only) {
         bench_dem3d(base, std::nullopt);
+        return kExitOk;
+    }
+    if (o.scaling_only) {
+        bench_scaling(base.fidelity.preset, kScalingSimS, o.repeats);
         return kExitOk;
     }
     if (o.render_only) {
@@ -89,6 +99,7 @@ int bench(const BenchOptions& o) {
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
     bench_models(base, o.repeats, grain_run_s);
+    if (!o.no_scaling) bench_scaling(base.fidelity.preset, kScalingSimS, o.repeats);
     if (!o.no_dem3d) bench_dem3d(base, grain_run_s);
     if (!o.no_calibration) bench_calibration("standard");
     if (!o.no_render) bench_rendering(base, o.repeats);
@@ -118,6 +129,12 @@ Action add_bench_command(CLI::App& app) {
         "--dem3d", opts->dem3d_only, "measure only the 3D reference (--model dem3d: one Yade run, about a minute)");
     sub->add_flag("--no-dem3d", opts->no_dem3d, "skip the 3D reference's row (one Yade run, about a minute)")
         ->excludes(dem3d_flag);
+    CLI::Option* scaling_flag = sub->add_flag(
+        "--scaling", opts->scaling_only,
+        "measure only the grain engine's cost against the grains: six BB scenes from 124 to about 2,200 discs, "
+        "the cost per disc and step and Box2D's contacts per disc");
+    sub->add_flag("--no-scaling", opts->no_scaling, "skip the grain engine's cost against the grains")
+        ->excludes(scaling_flag);
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     sub->add_flag("--no-calibration", opts->no_calibration,
                   "skip the calibration cost (one evaluation of the bundled observations at standard: about 3 minutes on one core)");

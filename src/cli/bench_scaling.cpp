@@ -1,0 +1,108 @@
+// The grain engine's cost against the grains in polyroll bench: see bench_scaling.h.
+#include "cli/bench_scaling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "sim/assets.h"
+#include "sim/bare_engine.h"
+#include "sim/scene_json.h"
+#include "sim/shell_label.h"
+
+namespace polyroll::cli {
+
+namespace {
+
+struct ScalingScene {
+    const char* shell;
+    double fill_ratio;
+};
+
+// BBs on the air track at 20 degrees, the default scene's ramp: the small shells' fills span the
+// experiment's small polygons, the large hexagon's its largest piles (the `hexagon-large-bb`
+// preset is the half-full one).
+constexpr ScalingScene kScenes[] = {
+    {"hexagon-small", 0.25}, {"hexagon-small", 0.5},  {"decagon-small", 0.75},
+    {"hexagon-large", 0.25}, {"hexagon-large", 0.5}, {"hexagon-large", 0.75},
+};
+
+Scene scaling_scene(const ScalingScene& row, const std::string& fidelity) {
+    nlohmann::ordered_json doc = {
+        {"shell", {{"preset", row.shell}}},
+        {"fill", {{"ratio", row.fill_ratio}, {"material", "bb"}}},
+        {"ramp", {{"preset", "air-track"}, {"angle_deg", 20.0}}},
+        {"fidelity", {{"preset", fidelity}}},
+    };
+    return resolve_scene({SceneLayer{doc, "polyroll bench --scaling", {}}});
+}
+
+struct Row {
+    Scene scene;
+    EngineLoad load;
+    double s_per_step = 0.0;  // engine steps (substeps included)
+};
+
+// Least squares of ln(cost per step) on ln(grains + 1): the budget's power law.
+struct PowerLaw {
+    double exponent = 0.0, s_per_grain_step = 0.0;
+};
+PowerLaw fit_power_law(const std::vector<Row>& rows) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    const double n = static_cast<double>(rows.size());
+    for (const Row& r : rows) {
+        const double x = std::log(r.load.grains + 1.0), y = std::log(r.s_per_step);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    PowerLaw p;
+    p.exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    p.s_per_grain_step = std::exp((sy - p.exponent * sx) / n);
+    return p;
+}
+
+}  // namespace
+
+void bench_scaling(const std::string& fidelity, double sim_s, int repeats) {
+    fmt::print("\ngrain engine against grains: BBs on the air track at 20 deg, {} fidelity, {:g} s after the release "
+               "stepped bare, best of {}; one core\n",
+               fidelity, sim_s, repeats);
+    fmt::print("{:<34} {:>7} {:>10} {:>12} {:>10} {:>12} {:>14} {:>10}\n", "scene", "grains", "ms_step",
+               "us_grain_step", "x_first", "x_real_time", "contacts/grain", "touching");
+    std::vector<Row> rows;
+    for (const ScalingScene& spec : kScenes) {
+        Row row;
+        row.scene = scaling_scene(spec, fidelity);
+        const long steps = std::lround(sim_s * row.scene.fidelity.step_hz);
+        for (int rep = 0; rep < repeats; ++rep) {
+            const EngineLoad load = measure_engine_load(row.scene, steps);
+            if (rep == 0 || load.wall_s < row.load.wall_s) row.load = load;
+        }
+        // Per engine step, as the budget counts them.
+        row.s_per_step = row.load.wall_s / static_cast<double>(steps * row.scene.fidelity.substeps);
+        const double us_per_grain_step = 1e6 * row.s_per_step / std::max(1, row.load.grains);
+        const double first = rows.empty() ? us_per_grain_step
+                                          : 1e6 * rows.front().s_per_step / std::max(1, rows.front().load.grains);
+        fmt::print("{:<34} {:>7} {:>10.3f} {:>12.2f} {:>10.2f} {:>12.3f} {:>14.1f} {:>10.1f}\n",
+                   fmt::format("{}, r = {:g}", shell_label(row.scene), spec.fill_ratio), row.load.grains,
+                   1e3 * row.s_per_step, us_per_grain_step, us_per_grain_step / first,
+                   static_cast<double>(steps) / row.scene.fidelity.step_hz / row.load.wall_s,
+                   row.load.contacts_per_grain, row.load.touching_per_grain);
+        std::fflush(stdout);
+        rows.push_back(row);
+    }
+    const PowerLaw fit = fit_power_law(rows);
+    const auto& budget = assets::file("sandbox-budget.json").at("values");
+    fmt::print("fitted: cost per step = {:.3g} s x (grains + 1)^{:.2f}; the window's budget "
+               "(assets/sandbox-budget.json) says {:.3g} s x (grains + 1)^{:.2f}\n",
+               fit.s_per_grain_step, fit.exponent, budget.at("physics_s_per_grain_step").get<double>(),
+               budget.at("cost_exponent").get<double>());
+    fmt::print("us_grain_step: engine time per disc and step; x_first: that against the first row; contacts/grain: "
+               "Box2D's contacts (pairs of fixtures whose boxes, enlarged by 0.1 engine units and four steps' travel, "
+               "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch.\n");
+}
+
+}  // namespace polyroll::cli

@@ -1,0 +1,15 @@
+// The grain engine's cost against the number of grains in polyroll bench: the experiment's BB
+// scenes from the small hexagon's 124 discs to the large hexagon three quarters full, the cost per
+// disc and step, Box2D's contacts per disc behind it, and the power law the window's budget uses
+// (assets/sandbox-budget.json) fitted to the rows.
+#pragma once
+
+#include <string>
+
+namespace polyroll::cli {
+
+// Each scene built and settled, then `sim_s` simulated seconds after the release stepped bare (no
+// tracker), best of `repeats`, at the fidelity preset `fidelity`, one core.
+void bench_scaling(const std::string& fidelity, double sim_s, int repeats);
+
+}  // namespace polyroll::cli
