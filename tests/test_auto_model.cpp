@@ -190,7 +190,7 @@ TEST_CASE("auto hands a shell to Box2D at the step before a contact the free rig
 TEST_CASE("auto hands the rigid model's shell on where it would slip, not only where it would lift off",
           "[runs][models][handover][auto]") {
     // The empty hexagon at 20 deg never lifts off, but just before each impact its no-slip rolling
-    // needs a friction force 16.7 times the normal force (README, polyroll bench --auto): the ramp's
+    // needs a friction force 16.7 times the normal force (docs/guide.md, polyroll bench --auto): the ramp's
     // 0.9 cannot give it, and the free rigid body takes over there, sliding, with no Box2D.
     const Scene s = empty_scene(6, 20.0);
     const Scene rigid = with_model(s, Model::rigid);
