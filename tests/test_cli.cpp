@@ -212,6 +212,39 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
     fs::remove_all(dir);
 }
 
+// --set reaches any field of a scene file from run, render, compare and bench, as sweep, validate and
+// calibrate have it: one value, over the scene file, beside the named flags but never against them.
+TEST_CASE("run --set FIELD=VALUE sets any scene field; a bad one is refused in one line", "[cli][bad-input]") {
+    const fs::path out = scratch("set-run");
+    const Result r = run_polyroll("run --fill 0.25 --time-limit 0.2 --set fill.material.wall_friction=0.05 "
+                                  "--set fill.material.grains_per_disc=null --set ramp.preset=wooden --out " +
+                                  out.string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    std::ifstream in(out / "summary.json");
+    const auto scene = nlohmann::json::parse(in).at("scene");
+    CHECK(scene.at("fill").at("material").at("wall_friction") == 0.05);
+    CHECK(scene.at("fill").at("material").at("grains_per_disc").is_null());
+    CHECK(scene.at("ramp").at("preset") == "wooden");
+
+    const fs::path refused = scratch("set-refused");
+    struct Case {
+        std::string args;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {"run --set fill.material.wall_friction=0.05,0.1", {"--set fill.material.wall_friction=0.05,0.1", "one value"}},
+        {"run --set fill.colour=1", {"'fill.colour' is not a scene field", "allowed:", "ramp.angle_deg"}},
+        {"run --set ramp.angle_deg=12 --angle 10", {"--set ramp.angle_deg and --angle both set", "allowed: one"}},
+        {"run --set fill.material.wall_friction=-1", {"fill.material.wall_friction = -1", "--set", "allowed: from 0"}},
+        {"run --set ramp.angle_deg=12 --set ramp.angle_deg=13", {"--set ramp.angle_deg is given twice"}},
+        {"run --set angle=12", {"'angle' is not a scene field"}},
+        {"run --set =12", {"is not FIELD=VALUE"}},
+        {"compare --set run.model=rigid", {"--set run.model: not allowed here"}},
+    };
+    for (const Case& c : cases) expect_refused(kPolyrollExe + " " + c.args + " --out " + refused.string(), c.words, refused);
+}
+
 TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") {
     const fs::path out = scratch("good-run");
     // A trailing slash, as shells complete folder names: the files line joins it as a path.

@@ -8,10 +8,14 @@
 #include <system_error>
 #include <type_traits>
 
+#include <fmt/format.h>
+
+#include "sim/errors.h"
 #include "sim/json_path.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
+#include "sweep/sweep_plan.h"
 
 namespace polyroll::cli {
 
@@ -53,8 +57,13 @@ void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::s
 }
 
 void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without) {
+    without_ = without;
     scene_option_ = app.add_option("--scene", scene_file_, "scene file (JSON); flags given too override it")
                         ->group("Scene");
+    app.add_option("--set", sets_,
+                   "any scene field: FIELD=VALUE, e.g. --set fill.material.wall_friction=0.05 (repeatable; fields "
+                   "as in a scene file; null unsets an optional field); over the scene file, beside the flags")
+        ->group("Scene");
     // One flag per field that has one (sim/scene_fields.cpp), in scene-file order.
     std::vector<const SceneField*> fields;
     for (const SceneField& f : scene_fields())
@@ -73,6 +82,27 @@ void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without
     }
 }
 
+std::vector<std::pair<std::string, json>> SceneOptions::parsed_sets() const {
+    std::vector<std::pair<std::string, json>> out;
+    for (const std::string& s : sets_) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
+        const std::string field = s.substr(0, eq), flag = "--set " + field;
+        sweep::check_scene_field(field, flag);
+        if (std::find(without_.begin(), without_.end(), field) != without_.end())
+            throw InputError(fmt::format("{}: not allowed here (this command sets {} itself)", flag, field));
+        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
+        if (v.size() != 1)
+            throw InputError(fmt::format("{}={}: one value (allowed: a single value; polyroll sweep takes lists)",
+                                         flag, s.substr(eq + 1)));
+        for (const auto& [done, value] : out)
+            if (done == field) throw InputError(fmt::format("{} is given twice (allowed: once)", flag));
+        out.emplace_back(field, v.front());
+    }
+    return out;
+}
+
 Scene SceneOptions::resolve() const {
     std::vector<SceneLayer> layers;
     if (scene_option_ && scene_option_->count() > 0) layers.push_back(read_scene_file(scene_file_));
@@ -83,6 +113,16 @@ Scene SceneOptions::resolve() const {
         if (f.option->count() == 0) continue;
         cli.field_labels.emplace_back(f.field, f.option->get_name());
         node_at(cli.doc, f.field) = f.value();
+    }
+    for (const std::pair<std::string, json>& set : parsed_sets()) {
+        const std::string& field = set.first;
+        const auto by_flag = std::find_if(cli.field_labels.begin(), cli.field_labels.end(),
+                                          [&field](const auto& label) { return label.first == field; });
+        if (by_flag != cli.field_labels.end())
+            throw InputError(fmt::format("--set {} and {} both set {} (allowed: one of them)", field, by_flag->second,
+                                         field));
+        cli.field_labels.emplace_back(field, "--set " + field);
+        node_at(cli.doc, field) = set.second;
     }
     layers.push_back(cli);
     return resolve_scene(layers);

@@ -23,7 +23,8 @@ std::string default_note(const SceneField& f);
 class SceneOptions {
 public:
     // Registers one flag per field that has one, but the fields in `without` (paths, e.g. "run.model":
-    // a command that sets that field itself does not list a flag it would ignore).
+    // a command that sets that field itself does not list a flag it would ignore), and --set for
+    // any other field.
     void add_to(CLI::App& app, const std::vector<std::string>& without = {});
     // Resolves and validates the scene; throws InputError.
     Scene resolve() const;
@@ -37,9 +38,14 @@ private:
     template <class T>
     void add_flag(CLI::App& app, const std::string& name, const std::string& field, const std::string& help);
 
+    // --set FIELD=VALUE: any field of a scene file, as sweep, validate and calibrate take it.
+    std::vector<std::pair<std::string, nlohmann::ordered_json>> parsed_sets() const;
+
     std::string scene_file_;
     CLI::Option* scene_option_ = nullptr;
     std::vector<Flag> flags_;
+    std::vector<std::string> sets_;
+    std::vector<std::string> without_;  // fields the command sets itself: no flag, and refused by --set
 };
 
 }  // namespace polyroll::cli
