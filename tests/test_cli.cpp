@@ -214,7 +214,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
 
 // --set reaches any field of a scene file from run, render, compare and bench, as sweep, validate and
 // calibrate have it: one value, over the scene file, beside the named flags but never against them.
-TEST_CASE("run --set FIELD=VALUE sets any scene field; a bad one is refused in one line", "[cli][bad-input]") {
+TEST_CASE("run --set FIELD=VALUE sets any scene field, and a bad one is refused in one line", "[cli][bad-input]") {
     const fs::path out = scratch("set-run");
     const Result r = run_polyroll("run --fill 0.25 --time-limit 0.2 --set fill.material.wall_friction=0.05 "
                                   "--set fill.material.grains_per_disc=null --set ramp.preset=wooden --out " +

@@ -505,3 +505,65 @@ TEST_CASE("the tipped release in the reduced models: the pile as poured on the f
         CHECK(b.measured.trajectory.back().angle_deg == a.measured.trajectory.back().angle_deg);
     }
 }
+
+// What the window and the frames draw for a fill no grain stands for (RunSnapshot::fill_region_local_m):
+// the whole inside of a full shell, the rigid model's fill frozen as at release, the segment model's
+// levelled again at each impact; nothing where the grains are drawn one by one.
+TEST_CASE("a fill held as one body is in the snapshot as one region, as the model holds it", "[models][snapshot]") {
+    auto area = [](const std::vector<Vec2>& p) { return geom::polygon_properties(p).area; };
+    auto run_for = [](const Scene& s, double seconds) {
+        std::unique_ptr<ModelRun> run = start_run(s);
+        const long steps = std::lround(seconds * s.fidelity.step_hz);
+        for (long i = 0; i < steps && run->step();) ++i;
+        return run;
+    };
+
+    SECTION("a full shell under auto: the whole inside, at release and rolling") {
+        const Scene s = scene_with(nlohmann::ordered_json::parse(R"({"fill": {"ratio": 1.0}, "ramp": {"angle_deg": 12}})"));
+        const auto run = run_for(s, 0.5);
+        const RunSnapshot snap = run->snapshot();
+        REQUIRE(snap.time_s > 0.4);
+        CHECK(snap.grains.empty());
+        CHECK(area(snap.fill_region_local_m) == Approx(area(snap.inner_local_m)).epsilon(1e-9));
+    }
+    SECTION("rigid: the share r of the inside, the same region in the shell's frame throughout") {
+        const Scene s = test::with_model(scene_with(nlohmann::ordered_json::parse(R"({"fill": {"ratio": 0.25}, "ramp": {"angle_deg": 25}})")),
+                                   Model::rigid);
+        const auto run = start_run(s);
+        const std::vector<Vec2> at_release = run->snapshot().fill_region_local_m;
+        CHECK(area(at_release) == Approx(0.25 * area(run->snapshot().inner_local_m)).epsilon(1e-6));
+        for (int i = 0; i < 400 && run->step(); ++i) {
+        }
+        const RunSnapshot later = run->snapshot();
+        REQUIRE(later.impacts >= 1);
+        REQUIRE(later.fill_region_local_m.size() == at_release.size());
+        for (size_t i = 0; i < at_release.size(); ++i) {
+            CHECK(later.fill_region_local_m[i].x == at_release[i].x);
+            CHECK(later.fill_region_local_m[i].y == at_release[i].y);
+        }
+    }
+    SECTION("segments: levelled again at each impact, the same share") {
+        const Scene s = test::with_model(scene_with(nlohmann::ordered_json::parse(R"({"fill": {"ratio": 0.25}, "ramp": {"angle_deg": 25}})")),
+                                   Model::segments);
+        const auto run = start_run(s);
+        const RunSnapshot first = run->snapshot();
+        const std::vector<Vec2> at_release = first.fill_region_local_m;
+        RunSnapshot later = first;
+        for (int i = 0; i < 2000 && run->step(); ++i) {
+            later = run->snapshot();
+            if (later.impacts >= 1) break;
+        }
+        REQUIRE(later.impacts >= 1);
+        CHECK(area(later.fill_region_local_m) == Approx(0.25 * area(later.inner_local_m)).epsilon(1e-6));
+        // Levelled with the shell turned by about one side: the region in the shell's frame has moved.
+        const Vec2 c0 = geom::polygon_properties(at_release).centroid;
+        const Vec2 c1 = geom::polygon_properties(later.fill_region_local_m).centroid;
+        CHECK(geom::length(c1 - c0) > 0.2 * geom::length(c0));
+    }
+    SECTION("grains: each grain drawn, no region") {
+        const Scene s = test::with_model(scene_with(nlohmann::ordered_json::parse(R"({"fill": {"ratio": 0.25}})")), Model::grains);
+        const RunSnapshot snap = start_run(s)->snapshot();
+        CHECK_FALSE(snap.grains.empty());
+        CHECK(snap.fill_region_local_m.empty());
+    }
+}

@@ -27,10 +27,10 @@ struct BenchOptions {
     SceneOptions scene;
     int repeats = 3;
     std::vector<std::string> presets;
-    bool render_only = false, no_render = false, no_calibration = false;
+    bool render_only = false, no_render = false;
     bool auto_only = false;
-    bool dem3d_only = false, no_dem3d = false;
-    bool scaling_only = false, no_scaling = false;
+    // The slow rows opt in, each alone (--dem3d, --calibration, --scaling) or all with --all.
+    bool dem3d_only = false, calibration_only = false, scaling_only = false, all = false;
     int ensemble = 0;  // with auto_only: members per shell of the ensemble table; 0: none
 };
 
@@ -55,6 +55,10 @@ int bench(const BenchOptions& o) {
     }
     if (o.scaling_only) {
         bench_scaling(base.fidelity.preset, kScalingSimS, o.repeats);
+        return kExitOk;
+    }
+    if (o.calibration_only) {
+        bench_calibration("standard");
         return kExitOk;
     }
     if (o.render_only) {
@@ -99,9 +103,11 @@ int bench(const BenchOptions& o) {
     fmt::print("run_x_rt: simulated seconds per wall second with the tracker; bare_x_rt: Box2D stepping alone;\n"
                "overhead: tracker cost above bare stepping; build_s: building and settling the grains.\n");
     bench_models(base, o.repeats, grain_run_s);
-    if (!o.no_scaling) bench_scaling(base.fidelity.preset, kScalingSimS, o.repeats);
-    if (!o.no_dem3d) bench_dem3d(base, grain_run_s);
-    if (!o.no_calibration) bench_calibration("standard");
+    if (o.all) {
+        bench_scaling(base.fidelity.preset, kScalingSimS, o.repeats);
+        bench_dem3d(base, grain_run_s);
+        bench_calibration("standard");
+    }
     if (!o.no_render) bench_rendering(base, o.repeats);
     return kExitOk;
 }
@@ -112,6 +118,15 @@ Action add_bench_command(CLI::App& app) {
     auto opts = std::make_shared<BenchOptions>();
     CLI::App* sub = app.add_subcommand("bench", "measure speed: real-time factor per fidelity preset, and overhead "
                                                 "over bare Box2D stepping");
+    sub->footer(
+        "Without flags: the scene at each fidelity preset, the reduced models and headless rendering, on one core. "
+        "The slow rows opt in.\n"
+        "Examples:\n"
+        "  polyroll bench                                   # the default scene\n"
+        "  polyroll bench --sides 8 --fill 0.375 --angle 13 --presets standard\n"
+        "  polyroll bench --auto                            # auto against grains on the empty shells\n"
+        "  polyroll bench --scaling --repeats 1             # cost per disc from 124 to 2,221 discs\n"
+        "  polyroll bench --all                             # everything, the 3D reference and calibration too");
     opts->scene.add_to(*sub);
     sub->add_option("--repeats", opts->repeats, "runs per preset; the best is reported")
         ->check(CLI::Range(1, 100));
@@ -127,17 +142,22 @@ Action add_bench_command(CLI::App& app) {
         ->needs(auto_flag);
     CLI::Option* dem3d_flag = sub->add_flag(
         "--dem3d", opts->dem3d_only, "measure only the 3D reference (--model dem3d: one Yade run, about a minute)");
-    sub->add_flag("--no-dem3d", opts->no_dem3d, "skip the 3D reference's row (one Yade run, about a minute)")
-        ->excludes(dem3d_flag);
     CLI::Option* scaling_flag = sub->add_flag(
         "--scaling", opts->scaling_only,
         "measure only the grain engine's cost against the grains: six BB scenes from 124 to about 2,200 discs, "
-        "the cost per disc and step and Box2D's contacts per disc");
-    sub->add_flag("--no-scaling", opts->no_scaling, "skip the grain engine's cost against the grains")
-        ->excludes(scaling_flag);
+        "the cost per disc and step and Box2D's contacts per disc (about 30 s a repeat)");
+    CLI::Option* calibration_flag = sub->add_flag(
+        "--calibration", opts->calibration_only,
+        "measure only the calibration's cost: one evaluation of the bundled observations at standard (about 3 "
+        "minutes on one core) and the three-parameter fit it projects");
+    sub->add_flag("--all", opts->all,
+                  "the default tables, then the grain-count rows, the 3D reference and the calibration's cost "
+                  "(several minutes: the calibration row alone takes about 3 on one core)")
+        ->excludes(dem3d_flag)
+        ->excludes(scaling_flag)
+        ->excludes(calibration_flag)
+        ->excludes(auto_flag);
     sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
-    sub->add_flag("--no-calibration", opts->no_calibration,
-                  "skip the calibration cost (one evaluation of the bundled observations at standard: about 3 minutes on one core)");
     return [opts] { return bench(*opts); };
 }
 

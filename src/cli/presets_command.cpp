@@ -62,8 +62,12 @@ Action add_presets_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps and fidelity levels");
     sub->footer(fmt::format("The presets are the files of assets/, compiled in. {}=DIR reads any of them from DIR "
                             "instead (e.g. DIR/materials.json with a material of your own), for every command and "
-                            "polyroll-sandbox.",
-                            assets::kDirectoryVariable));
+                            "polyroll-sandbox.\n"
+                            "Examples:\n"
+                            "  polyroll presets\n"
+                            "  polyroll presets --json > presets.json\n"
+                            "  {}=my-assets polyroll presets       # my-assets/materials.json and the rest",
+                            assets::kDirectoryVariable, assets::kDirectoryVariable));
     sub->add_flag("--json", *as_json, "print them, with their sources, as JSON");
     return [as_json] { return list(*as_json); };
 }

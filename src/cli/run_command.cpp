@@ -177,6 +177,7 @@ Action add_run_command(CLI::App& app) {
         "  polyroll run\n"
         "  polyroll run --sides 8 --fill 0.375 --material rice --angle 14 --out runs/oct-rice\n"
         "  polyroll run --scene my-scene.json --json\n"
+        "  polyroll run --set fill.material.wall_friction=0.05 --set ramp.length_m=1.5\n"
         "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 1 other failure.");
     opts->scene.add_to(*sub);
     sub->add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv")->group("Output");

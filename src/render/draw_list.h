@@ -29,6 +29,7 @@ enum class Tag : std::uint8_t {
     shell_outline,
     lid_dot,
     grain,
+    fill_region,  // a fill held as one body (a full shell, the reduced models), drawn as one region
     panel,
     plot,
     inset_frame,

@@ -96,6 +96,13 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
     if (n < 3 || inner.size() != n) return;
     for (size_t i = 1; i + 1 < n; ++i)
         out.triangles.push_back({inner[0], inner[i], inner[i + 1], palette::shell_inside, Tag::shell_inside});
+    // A fill the model holds as one body, in the grains' colour, turning with the shell (a convex
+    // region: a fan from its first corner covers it).
+    std::vector<Px> fill;
+    for (const Vec2& v : s.fill_region_local_m)
+        fill.push_back(cam.to_px(ramp_to_world(s.shell_centre_m + geom::rotate(v, s.shell_angle_rad), s.ramp_angle_deg)));
+    for (size_t i = 1; i + 1 < fill.size(); ++i)
+        out.triangles.push_back({fill[0], fill[i], fill[i + 1], material_colour(s.material), Tag::fill_region});
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
         out.triangles.push_back({inner[i], outer[i], outer[j], st.shell_wall, Tag::shell_wall});

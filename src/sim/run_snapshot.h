@@ -44,6 +44,11 @@ struct RunSnapshot {
     geom::Vec2 shell_centre_m;
     double shell_angle_rad = 0.0;  // counter-clockwise in the ramp frame
     std::vector<GrainState> grains;
+    // The fill as one region, in the shell's own frame (counter-clockwise), where the model holds it
+    // as a body rather than as grains: the whole inside of a full shell, the rigid model's fill frozen
+    // as at release, the segment model's levelled at its last impact. Empty where grains are drawn
+    // one by one, or there is no fill.
+    std::vector<geom::Vec2> fill_region_local_m;
     TrajectorySample now;  // the tracker's latest measurement (position, speed)
     int impacts = 0;
     std::vector<SpeedPoint> speed_history;  // the tracker's samples so far

@@ -74,6 +74,9 @@ RunSnapshot FreeBodyRun::snapshot() const {
     s.shell_centre_m = st.pose.centre_m;
     s.shell_angle_rad = st.pose.angle_rad;
     set_measured(s, sample_now(), shown_);
+    // auto carries only empty and full shells on as a free body (model_registry.h): a full one's
+    // fill is the whole inside.
+    if (scene_.fill.ratio >= 1.0) s.fill_region_local_m = s.inner_local_m;
     return s;
 }
 

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/models/composite_body.h"
 #include "sim/models/reduced_models.h"
 #include "sim/models/reveal.h"
+#include "sim/ramp_profile.h"
 #include "sim/shell_pose.h"
 
 namespace polyroll::models {
@@ -65,7 +67,22 @@ RunSnapshot ReducedRun::snapshot() const {
     s.shell_centre_m = pose.centre_m;
     s.shell_angle_rad = pose.angle_rad;
     set_measured(s, now, shown_);
+    s.fill_region_local_m = fill_region_at(s.inner_local_m, s.time_s);
     return s;
+}
+
+std::vector<geom::Vec2> ReducedRun::fill_region_at(const std::vector<geom::Vec2>& inner, double time_s) const {
+    if (scene_.fill.ratio <= 0.0) return {};
+    // The frozen fill keeps its shape at release; the levelled one takes the level of its last impact.
+    double levelled_at_s = 0.0;
+    if (fill_ == FillMotion::relevel)
+        for (const FaceImpact& i : shown_.impacts)
+            if (i.time_s <= time_s) levelled_at_s = i.time_s;
+    const TrajectorySample at = sample_at(pose_track(), levelled_at_s);
+    const ShellPose then = rolling_pose(scene_, at.position_m, at.angle_deg);
+    const geom::Vec2 g = gravity_at_m_s2(scene_.ramp, scene_.run.gravity_m_s2, then.centre_m.x);
+    const geom::Vec2 up_ramp = (-1.0 / geom::length(g)) * g;
+    return fill_segments(inner, geom::rotate(up_ramp, -then.angle_rad), std::min(scene_.fill.ratio, 1.0), 1.0).region;
 }
 
 TrajectorySample ReducedRun::state_for_hand_over() const {

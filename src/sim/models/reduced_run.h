@@ -29,6 +29,9 @@ private:
     const std::vector<TrajectorySample>& pose_track() const;
     TrajectorySample now() const;  // at time_s(), held at the end
     TrajectorySample state_for_hand_over() const;  // now(), without computing the pose track
+    // The fill's region at `time_s` in the shell's frame (RunSnapshot::fill_region_local_m), inside
+    // the shell's `inner` polygon.
+    std::vector<geom::Vec2> fill_region_at(const std::vector<geom::Vec2>& inner, double time_s) const;
 
     FillMotion fill_;
     bool until_invalid_ = false;
