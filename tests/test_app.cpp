@@ -25,6 +25,7 @@
 #include "app/scene_view.h"
 #include "app/sim_clock.h"
 #include "app/slider_text.h"
+#include "app/text_wrap.h"
 #include "app/view_control.h"
 #include "render/font.h"
 #include "render/ticks.h"
@@ -753,4 +754,28 @@ TEST_CASE("a scene file gives one lane whose controls rebuild the same scene, an
     CHECK(scenes_for(s).front().run.seed == 5);
     CHECK_THROWS_AS(state_for_scene_file((dir / "missing.json").string()), InputError);
     std::filesystem::remove_all(dir);
+}
+
+// The panel's prose breaks only at spaces: ImGui's wrapping split "(7.00 s)" after its decimal point.
+TEST_CASE("the panel's prose wraps at spaces only, never inside a number", "[app][text]") {
+    // One unit per character: the width counts characters.
+    const auto chars = [](std::string_view t) { return static_cast<float>(t.size()); };
+    const std::string race = "the empty one reaches the end first (7.00 s), the full one 0.3 s later";
+    for (float width = 6.0f; width <= 40.0f; width += 1.0f) {
+        const std::vector<std::string> lines = polyroll::app::wrap_at_spaces(race, width, chars);
+        std::string joined;
+        for (const std::string& l : lines) {
+            INFO("width " << width << ": '" << l << "'");
+            // Each line fits, unless it is one word wider than the width.
+            CHECK((l.size() <= width || l.find(' ') == std::string::npos));
+            CHECK((l.empty() || (l.front() != ' ' && l.back() != ' ')));
+            joined += (joined.empty() ? "" : " ") + l;
+        }
+        // Nothing lost or split: the lines joined by spaces are the text, and "(7.00" stays whole.
+        CHECK(joined == race);
+        CHECK(std::any_of(lines.begin(), lines.end(), [](const std::string& l) { return l.find("(7.00") != std::string::npos; }));
+    }
+    // Line breaks in the text are kept, and an empty text is one empty line.
+    CHECK(polyroll::app::wrap_at_spaces("a b\nc", 10.0f, chars) == std::vector<std::string>{"a b", "c"});
+    CHECK(polyroll::app::wrap_at_spaces("", 10.0f, chars) == std::vector<std::string>{""});
 }

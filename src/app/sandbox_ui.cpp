@@ -17,11 +17,13 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -35,6 +37,7 @@
 #include "app/sandbox_presets.h"
 #include "app/scene_view.h"
 #include "app/slider_text.h"
+#include "app/text_wrap.h"
 #include "render/colour.h"
 #include "render/overlay.h"
 #include "render/ticks.h"
@@ -62,6 +65,18 @@ const ImVec4 kWarnColour = im_vec(render::palette::warning_text);
 ImVec4 on_panel(ImVec4 c, bool high_contrast) {
     if (high_contrast) return c;
     return {0.5f * (c.x + 1.0f), 0.5f * (c.y + 1.0f), 0.5f * (c.z + 1.0f), c.w};
+}
+
+// Prose wrapped to the width left, broken only at spaces (app/text_wrap.h): ImGui's own wrapping
+// splits a number after its decimal point.
+void text_wrapped(const std::string& text) {
+    // The font's own advance, unrounded (CalcTextSize rounds up to a whole pixel, which pushed
+    // words that fit onto the next line).
+    const auto measure = [](std::string_view t) {
+        return ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, t.data(), t.data() + t.size()).x;
+    };
+    for (const std::string& line : wrap_at_spaces(text, ImGui::GetContentRegionAvail().x, measure))
+        ImGui::TextUnformatted(line.c_str());
 }
 
 // A tooltip for the last item: what the control is and its unit.
@@ -224,7 +239,7 @@ bool panel_high_contrast = true;
 void clamp_note_here(const SceneField& f) {
     if (last_clamp_note.empty() || last_clamp_field != f.path) return;
     ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, panel_high_contrast));
-    ImGui::TextWrapped("%s", last_clamp_note.c_str());
+    text_wrapped(last_clamp_note);
     ImGui::PopStyleColor();
 }
 
@@ -317,7 +332,7 @@ bool radio_control(const ControlRow& row, const SceneField& f, Edit e) {
 void heading(const char* text) {
     ImGui::Spacing();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", text);
+    text_wrapped(text);
     ImGui::PopStyleColor();
     ImGui::Separator();
 }
@@ -336,7 +351,7 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
             return PresetPanel{};
         }
     }();
-    if (!error.empty()) ImGui::TextWrapped("%s", error.c_str());
+    if (!error.empty()) text_wrapped(error);
     auto button = [&](const PresetButton& b, const std::string& text, bool first_in_row) {
         if (!first_in_row) same_line_if_fits(button_w(text.c_str()));
         ImGui::PushID(b.preset.c_str());
@@ -387,7 +402,7 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
     }
     if (!loaded.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("%s", loaded.c_str());
+        text_wrapped(loaded);
         ImGui::PopStyleColor();
     }
 }
@@ -453,7 +468,7 @@ void budget_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
     const BudgetChoice& offer = *ctx.budget_offer;
     const bool warn = c.reduced() || !c.fits;
     if (warn) ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-    ImGui::TextWrapped("%s", budget_statement(c, offer, budget_figures()).c_str());
+    text_wrapped(budget_statement(c, offer, budget_figures()));
     if (warn) ImGui::PopStyleColor();
     if (c.reduced()) {
         if (ImGui::Button("Back to the scene as asked")) {
@@ -498,7 +513,7 @@ void view_controls(SandboxState& s, const UiContext& ctx, UiRequests& req) {
         fmt::format("{:g}x{:g} pixels).", kUiScaleWindowWidthPx, kUiScaleWindowHeightPx));
     if (ctx.ui_scale_shown < s.ui_scale) {
         ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-        ImGui::TextWrapped("shown at %.2f\u00D7: the largest this window size fits", ctx.ui_scale_shown);
+        text_wrapped(fmt::format("shown at {:.2f}\u00D7: the largest this window size fits", ctx.ui_scale_shown));
         ImGui::PopStyleColor();
     }
     ImGui::Checkbox("projector theme (high contrast)", &s.high_contrast);
@@ -703,7 +718,7 @@ void restart_controls(SandboxState& s) {
     tip("On: every change rebuilds the scene and starts again (a slider when let go). Off: changes wait for Reset.");
     if (s.changes_pending && !s.restart_on_change) {
         ImGui::PushStyleColor(ImGuiCol_Text, on_panel(kWarnColour, s.high_contrast));
-        ImGui::TextWrapped("controls changed: Reset applies them");
+        text_wrapped("controls changed: Reset applies them");
         ImGui::PopStyleColor();
     }
 }
@@ -886,6 +901,8 @@ void readout_table(const SandboxState& s, const UiContext& ctx, const std::vecto
             for (size_t i = 0; i < r.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (S.table_fits && !model) ImGui::TextUnformatted((r[i].*row.field).c_str());
+                // ImGui's wrapping keeps the table's column layout (text_wrapped here narrowed the
+                // first column and added a scroll bar), at the cost of a number split now and then.
                 else ImGui::TextWrapped("%s", (r[i].*row.field).c_str());
                 // auto's reason under the pointer, on the lane's model entry.
                 if (model && !r[i].model_reason.empty()) tip(r[i].model_reason);
