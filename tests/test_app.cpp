@@ -728,6 +728,24 @@ TEST_CASE("the demonstration presets are named for what they show and come first
     CHECK(panel.rows.front().buttons.front().angle_deg == 20.0);
 }
 
+// The rows' heading says "half full"; a button whose preset is not half full says its own fill (the
+// large hexagon's rice preset is full).
+TEST_CASE("the preset rows say their fill where it is not half full", "[app]") {
+    const PresetPanel panel = preset_panel();
+    std::map<std::string, std::string> text;  // preset -> button text
+    for (const PresetRow& row : panel.rows)
+        for (const PresetButton& b : row.buttons) text[b.preset] = row_button_text(b);
+    CHECK(text.at("hexagon-bb") == "BBs 20\u00B0");
+    CHECK(text.at("hexagon-large-rice") == "rice full 20\u00B0");
+    CHECK(preset_rows_heading(panel) == "the experiment's polygons, half full unless the button says:");
+    PresetPanel half = panel;
+    for (PresetRow& row : half.rows)
+        for (PresetButton& b : row.buttons) b.fill_ratio = kRowFillRatio;
+    CHECK(preset_rows_heading(half) == "the experiment's polygons, half full:");
+    PresetButton third{"p", "BBs", "", 14.0, 0.375};
+    CHECK(row_button_text(third) == "BBs r = 0.375 14\u00B0");
+}
+
 TEST_CASE("the UI scale shown fits the window", "[app]") {
     CHECK(fitted_ui_scale(2.0f, 800, 600) == Approx(1.0f));
     CHECK(fitted_ui_scale(2.0f, 1920, 1080) == Approx(2.0f));

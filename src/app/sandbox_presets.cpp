@@ -53,7 +53,7 @@ PresetPanel preset_panel() {
         const SandboxPreset preset = sandbox_preset(name);
         const std::vector<Scene> lanes = resolve_preset(preset);
         PresetButton button{name, name, fmt::format("Preset '{}': {}", name, preset.description),
-                            lanes.front().ramp.angle_deg};
+                            lanes.front().ramp.angle_deg, lanes.front().fill.ratio};
         if (entry.contains("demo")) {
             button.label = entry.at("demo").get<std::string>();
             panel.demos.push_back(button);
@@ -71,6 +71,19 @@ PresetPanel preset_panel() {
         it->buttons.push_back(button);
     }
     return panel;
+}
+
+std::string row_button_text(const PresetButton& b) {
+    if (b.fill_ratio == kRowFillRatio) return fmt::format("{} {:g}\u00B0", b.label, b.angle_deg);
+    const std::string fill = b.fill_ratio >= 1.0 ? "full" : b.fill_ratio <= 0.0 ? "empty" : fmt::format("r = {:g}", b.fill_ratio);
+    return fmt::format("{} {} {:g}\u00B0", b.label, fill, b.angle_deg);
+}
+
+std::string preset_rows_heading(const PresetPanel& panel) {
+    bool all_half = true;
+    for (const PresetRow& row : panel.rows)
+        for (const PresetButton& b : row.buttons) all_half = all_half && b.fill_ratio == kRowFillRatio;
+    return all_half ? "the experiment's polygons, half full:" : "the experiment's polygons, half full unless the button says:";
 }
 
 }  // namespace polyroll::app

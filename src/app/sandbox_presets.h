@@ -36,7 +36,11 @@ struct PresetButton {
     std::string label;    // the button's text
     std::string tooltip;  // "Preset 'hexagon-bb': the hexagon (small) half full of BBs ..."
     double angle_deg = 0.0;  // the first lane's ramp angle, shown on the button beside the label
+    double fill_ratio = 0.0;  // the first lane's fill ratio
 };
+// The rows' fill ratio the heading names: the rows show the experiment's polygons half full, and
+// a button whose fill differs says its own.
+inline constexpr double kRowFillRatio = 0.5;
 struct PresetRow {
     std::string label;  // "hexagon"
     std::vector<PresetButton> buttons;
@@ -48,6 +52,13 @@ struct PresetPanel {
 };
 // Throws InputError for a preset that does not resolve.
 PresetPanel preset_panel();
+
+// A row button's text: its label and angle ("rice 20°"), and its fill where it is not the rows'
+// ("rice full 20°", "BBs r = 0.375 14°").
+std::string row_button_text(const PresetButton& b);
+
+// The heading over the rows: "half full" only where every row button is.
+std::string preset_rows_heading(const PresetPanel& panel);
 
 inline constexpr const char* kDefaultSandboxPreset = "default";
 

@@ -69,13 +69,13 @@ ImVec4 on_panel(ImVec4 c, bool high_contrast) {
 
 // Prose wrapped to the width left, broken only at spaces (app/text_wrap.h): ImGui's own wrapping
 // splits a number after its decimal point.
-void text_wrapped(const std::string& text) {
+void text_wrapped(const std::string& text, float min_width = 0.0f) {
     // The font's own advance, unrounded (CalcTextSize rounds up to a whole pixel, which pushed
     // words that fit onto the next line).
     const auto measure = [](std::string_view t) {
         return ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, t.data(), t.data() + t.size()).x;
     };
-    for (const std::string& line : wrap_at_spaces(text, ImGui::GetContentRegionAvail().x, measure))
+    for (const std::string& line : wrap_at_spaces(text, std::max(ImGui::GetContentRegionAvail().x, min_width), measure))
         ImGui::TextUnformatted(line.c_str());
 }
 
@@ -371,7 +371,9 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
         button(b, b.label, first);
         first = false;
     }
-    ImGui::TextDisabled("the experiment's polygons, half full:");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    text_wrapped(preset_rows_heading(panel));
+    ImGui::PopStyleColor();
     const float label_w = ImGui::GetFontSize() * 7.5f;
     for (const PresetRow& row : panel.rows) {
         ImGui::AlignTextToFramePadding();
@@ -379,7 +381,7 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
         bool first_in_row = true;
         for (const PresetButton& b : row.buttons) {
             // The angle on the button: the presets of one polygon differ in it.
-            const std::string text = fmt::format("{} {:g}\u00B0", b.label, b.angle_deg);
+            const std::string text = row_button_text(b);
             // The first material button lines up in a column after the polygon names, when it fits.
             if (first_in_row && label_w + button_w(text.c_str()) <= ImGui::GetContentRegionAvail().x) {
                 ImGui::SameLine(label_w);
@@ -813,6 +815,9 @@ std::vector<LaneReadout> lane_readouts(const UiContext& ctx) {
     return r;
 }
 
+// The model entry wraps in its cell no narrower than this text (two lines at most for auto's).
+constexpr const char* kModelEntryMinText = "auto: free body";
+
 // How the readouts strip is shared between the table and the plots.
 struct StripLayout {
     float table_w = 0, plot_w = 0, tab_h = 0;
@@ -838,7 +843,7 @@ StripLayout strip_layout(const std::vector<LaneReadout>& r, ImVec2 avail) {
         // alone): the table is as wide as the other entries, or as "auto: free body" (two lines at most).
         for (const ReadoutRow& row : readout_rows())
             if (row.field != &LaneReadout::model) w = std::max(w, ImGui::CalcTextSize((lr.*row.field).c_str()).x);
-        w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize("auto: free body").x));
+        w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize(kModelEntryMinText).x));
         needed_w += w + cell_pad;
     }
     StripLayout S;
@@ -901,9 +906,9 @@ void readout_table(const SandboxState& s, const UiContext& ctx, const std::vecto
             for (size_t i = 0; i < r.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (S.table_fits && !model) ImGui::TextUnformatted((r[i].*row.field).c_str());
-                // ImGui's wrapping keeps the table's column layout (text_wrapped here narrowed the
-                // first column and added a scroll bar), at the cost of a number split now and then.
-                else ImGui::TextWrapped("%s", (r[i].*row.field).c_str());
+                // The model entry wraps no narrower than "auto: free body", the width strip_layout
+                // gives it (a cell sized to its content would otherwise wrap word by word).
+                else text_wrapped(r[i].*row.field, ImGui::CalcTextSize(kModelEntryMinText).x);
                 // auto's reason under the pointer, on the lane's model entry.
                 if (model && !r[i].model_reason.empty()) tip(r[i].model_reason);
             }
