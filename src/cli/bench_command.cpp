@@ -129,7 +129,7 @@ Action add_bench_command(CLI::App& app) {
         "  polyroll bench --all                             # everything, the 3D reference and calibration too");
     opts->scene.add_to(*sub);
     sub->add_option("--repeats", opts->repeats,
-                    "runs per preset, the best reported (default 1: about 90 s for the default tables; 3 for "
+                    "runs per preset, the best reported (default 1: about 100 s for the default tables; 3 for "
                     "figures to compare)")
         ->check(CLI::Range(1, 100));
     sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
