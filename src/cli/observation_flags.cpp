@@ -5,10 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "cli/scene_options.h"
 #include "sim/errors.h"
 #include "sim/scene_fields.h"
 #include "sweep/grid_values.h"
-#include "sweep/sweep_plan.h"
 
 namespace polyroll::cli {
 
@@ -44,16 +44,10 @@ std::vector<std::pair<std::string, json>> observation_overrides(const Observatio
         out.emplace_back(std::string(f.path), v.front());
     }
     for (const std::string& s : a.sets) {
-        const auto eq = s.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
-        const std::string field = s.substr(0, eq), flag = "--set " + field;
-        sweep::check_scene_field(field, flag);
-        if (field == "run.seed") throw InputError("--set run.seed: not allowed (--seeds N gives the seeds)");
-        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
-        if (v.size() != 1) throw InputError(fmt::format("{}: one value (allowed: a single value, applied to every observation)", flag));
-        out.erase(std::remove_if(out.begin(), out.end(), [&](const auto& o) { return o.first == field; }), out.end());
-        out.emplace_back(field, v.front());
+        std::pair<std::string, json> set = parse_set_flag(s);
+        if (set.first == "run.seed") throw InputError("--set run.seed: not allowed (--seeds N gives the seeds)");
+        out.erase(std::remove_if(out.begin(), out.end(), [&](const auto& o) { return o.first == set.first; }), out.end());
+        out.push_back(std::move(set));
     }
     return out;
 }

@@ -82,23 +82,28 @@ void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without
     }
 }
 
+std::pair<std::string, json> parse_set_flag(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", text));
+    const std::string field = text.substr(0, eq), flag = "--set " + field, value = text.substr(eq + 1);
+    sweep::check_scene_field(field, flag);
+    const std::vector<json> v = sweep::parse_grid_values(flag, value);
+    if (v.size() != 1)
+        throw InputError(fmt::format("{}={}: one value (allowed: a single value; polyroll sweep takes lists)", flag, value));
+    return {field, v.front()};
+}
+
 std::vector<std::pair<std::string, json>> SceneOptions::parsed_sets() const {
     std::vector<std::pair<std::string, json>> out;
     for (const std::string& s : sets_) {
-        const auto eq = s.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw InputError(fmt::format("--set '{}' is not FIELD=VALUE (e.g. --set fill.material.wall_friction=0.05)", s));
-        const std::string field = s.substr(0, eq), flag = "--set " + field;
-        sweep::check_scene_field(field, flag);
-        if (std::find(without_.begin(), without_.end(), field) != without_.end())
-            throw InputError(fmt::format("{}: not allowed here (this command sets {} itself)", flag, field));
-        const std::vector<json> v = sweep::parse_grid_values(flag, s.substr(eq + 1));
-        if (v.size() != 1)
-            throw InputError(fmt::format("{}={}: one value (allowed: a single value; polyroll sweep takes lists)",
-                                         flag, s.substr(eq + 1)));
-        for (const auto& [done, value] : out)
-            if (done == field) throw InputError(fmt::format("{} is given twice (allowed: once)", flag));
-        out.emplace_back(field, v.front());
+        std::pair<std::string, json> set = parse_set_flag(s);
+        const std::string flag = "--set " + set.first;
+        if (std::find(without_.begin(), without_.end(), set.first) != without_.end())
+            throw InputError(fmt::format("{}: not allowed here (this command sets {} itself)", flag, set.first));
+        for (const auto& done : out)
+            if (done.first == set.first) throw InputError(fmt::format("{} is given twice (allowed: once)", flag));
+        out.push_back(std::move(set));
     }
     return out;
 }

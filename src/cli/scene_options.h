@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -19,6 +20,11 @@ namespace polyroll::cli {
 // The field's value in the default scene (assets/defaults.json) as help shows it: "(default: 20)";
 // "" when it has none or the assets cannot be read while help is set up (the command reports that).
 std::string default_note(const SceneField& f);
+
+// One --set FIELD=VALUE, as every command that takes it reads it: the field checked against the
+// scene's paths, one value parsed as a scene file holds it (null unsets an optional field).
+// InputError naming the text otherwise, a list included (sweep reads its lists itself).
+std::pair<std::string, nlohmann::ordered_json> parse_set_flag(const std::string& text);
 
 class SceneOptions {
 public:
