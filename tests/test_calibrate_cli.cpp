@@ -193,6 +193,33 @@ TEST_CASE("calibrate: Ctrl-C exits 130 and the same command resumes", "[calibrat
     fs::remove_all(scratch);
 }
 
+TEST_CASE("calibrate: the plan and its estimate come before the first evaluation, and --plan-only stops there",
+          "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-plan", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006));
+    const fs::path out = scratch / "out";
+    const std::string cmd = kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+                            obs.string() + " --seeds 3 --jobs 1 --out " + out.string();
+    const auto plan = run_command(cmd + " --max-evals 4 --plan-only");
+    INFO(plan.out);
+    REQUIRE(plan.exit_code == 0);
+    CHECK_THAT(plan.out, Catch::Contains("1 field against 1 observation") && Catch::Contains("3 seeds a scene"));
+    CHECK_THAT(plan.out, Catch::Contains("fill.material.restitution") && Catch::Contains("from 0.3 to 0.95, start 0.5"));
+    CHECK_THAT(plan.out, Catch::Contains("3 runs a candidate; 5 candidates at most"));
+    CHECK_THAT(plan.out, Catch::Contains("estimated at most") && Catch::Contains("in all with 1 job"));
+    CHECK_THAT(plan.out, !Catch::Contains("evaluation 0/"));
+    CHECK_FALSE(fs::exists(out));  // nothing written
+    // Without --plan-only the same lines come first, then the evaluations.
+    const auto ran = run_command(cmd + " --max-evals 0");
+    INFO(ran.out);
+    REQUIRE(ran.exit_code == 0);
+    const auto estimate = ran.out.find("estimated at most"), first = ran.out.find("evaluation 0/0");
+    REQUIRE(estimate != std::string::npos);
+    REQUIRE(first != std::string::npos);
+    CHECK(estimate < first);
+    fs::remove_all(scratch);
+}
+
 TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[calibrate][cli][bad-input]") {
     const fs::path scratch = polyroll::test::scratch_dir("calibrate-bad", true);
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";

@@ -107,6 +107,12 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
         {"--jobs 1025 --out " + out.string(), {"--jobs 1025 is out of range (allowed: 1 to 1024)"}},
         // One name for the field flag: --param was an alias of --set.
         {"--param shell.depth_m=0.05 --out " + out.string(), {"unknown flag '--param'"}},
+        // A plan over the bounds needs --large: 62 x 101 x 179 x 5 runs (a plan.json of about 900 MB), or
+        // 420 runs of up to an hour simulated each on one core.
+        {"--sides 3:64:1 --fill 0:1:0.01 --angle 0:89:0.5 --seeds 5 --plan-only --out " + out.string(),
+         {"5604490 runs", "--sides 62 x --fill 101 x --angle 179 x --seeds 5", "more than 100000", "--large"}},
+        {"--fill 0.5 --angle 10:30:1 --seeds 20 --time-limit 3600 --jobs 1 --out " + out.string(),
+         {"420 runs estimated at up to", "more than 100 h", "--large to confirm"}},
     };
     for (const Case& c : cases) polyroll::test::expect_refused(kPolyrollExe + " sweep " + c.args, c.words, out);
     // A non-empty folder that is no sweep: the message suggests what sweep has, not --force.

@@ -105,8 +105,19 @@ TEST_CASE("validate: a tiny observations file is run, scored and resumed", "[val
                                    " --seeds 1 --fidelity draft "
                                    "--time-limit 1.5 -q --out " + out.string());
     CHECK(other.exit_code == 2);
-    CHECK_THAT(other.out, Catch::Contains("holds a different validation"));
+    CHECK_THAT(other.out, Catch::Contains("holds a different validation") && Catch::Contains("--out with a new folder"));
     CHECK(read_file(out / "scorecard.csv") == csv);
+
+    // More seeds extend the folder: the six runs done are kept, three more run, all nine are scored.
+    const auto more = run_command(kNoMatplotlib + kPolyrollExe + " validate --observations " + obs.string() +
+                                  " --seeds 3 --fidelity draft --time-limit 1.5 --jobs 2 -q --out " + out.string());
+    INFO(more.out);
+    REQUIRE(more.exit_code == 0);
+    CHECK_THAT(more.out, Catch::Contains("extends the validation in") && Catch::Contains("6 runs were planned there, 9 now"));
+    CHECK_THAT(more.out, Catch::Contains("3 run now") && Catch::Contains("6 found done before"));
+    const auto extended = nlohmann::json::parse(read_file(out / "scorecard.json"));
+    CHECK(extended["seeds"] == 3);
+    CHECK(extended["observations"][1]["runs"].size() == 6);
     fs::remove_all(scratch);
 }
 

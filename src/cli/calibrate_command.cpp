@@ -21,6 +21,7 @@
 #include "sweep/grid_values.h"
 #include "sweep/progress.h"
 #include "sweep/results_table.h"
+#include "sweep/run_cost.h"
 #include "sweep/scorecard.h"
 
 namespace polyroll::cli {
@@ -42,7 +43,7 @@ struct CalibrateArgs {
     std::string params, observations, out = "runs/calibrate", algorithm = "sbplx", shard;
     std::vector<std::string> starts;  // FIELD=VALUE
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
-    bool force = false, quiet = false;
+    bool force = false, quiet = false, plan_only = false;
     ObservationSceneFlags scene;
 };
 
@@ -255,6 +256,31 @@ void print_outcome(const fs::path& dir, const sweep::CalibrationSetup& setup, co
                (dir / "evaluations.csv").string(), (dir / "scorecard.csv").string());
 }
 
+// The plan before the first evaluation, as validate prints its own: what is fitted, how many runs a
+// candidate takes and at most how long, so that a calibration of an hour says so before it starts.
+void print_plan(const sweep::CalibrationSetup& setup, int jobs) {
+    auto at_start = setup.overrides;
+    for (const auto& p : setup.params) at_start.emplace_back(p.path, p.start);
+    const sweep::ValidationPlan vp = sweep::make_validation_plan(setup.file, setup.seeds, at_start);
+    fmt::print("polyroll calibrate: {} field{} against {} observation{} of {}, {} seed{} a scene\n", setup.params.size(),
+               setup.params.size() == 1 ? "" : "s", setup.file.observations.size(),
+               setup.file.observations.size() == 1 ? "" : "s", setup.file.origin, setup.seeds,
+               setup.seeds == 1 ? "" : "s");
+    for (const auto& p : setup.params)
+        fmt::print("  {:<32} from {:g} to {:g}, start {:.6g} ({})\n", p.path, p.lo, p.hi, p.start, p.start_from);
+    double cost_s = 0.0;
+    for (const sweep::PlannedRun& r : vp.plan.runs) cost_s += sweep::max_run_seconds(vp.plan, r);
+    const double candidate_s = cost_s / std::max(1, std::min<int>(jobs, static_cast<int>(vp.plan.runs.size())));
+    const int candidates = setup.max_evaluations + 1;
+    fmt::print("  {} runs a candidate; {} candidates at most (the scene's own values, then --max-evals {})\n",
+               vp.plan.runs.size(), candidates, setup.max_evaluations);
+    fmt::print("  estimated at most {} a candidate and {} in all with {} job{} (each run to its time limit; runs "
+               "that stop sooner take less)\n",
+               sweep::duration_text(candidate_s), sweep::duration_text(candidate_s * candidates), jobs,
+               jobs == 1 ? "" : "s");
+    std::fflush(stdout);
+}
+
 int run(const CalibrateArgs& a) {
     check_search_flags(a);
     std::optional<std::pair<int, int>> shard;
@@ -263,11 +289,13 @@ int run(const CalibrateArgs& a) {
     const fs::path dir = a.out;
     const json setup_doc = setup_json(setup);
     const std::string command = command_text(a);
+    const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (!a.quiet || a.plan_only) print_plan(setup, jobs);
+    if (a.plan_only) return kExitOk;  // nothing written: the folder's plan grows with the search
     start_folder(a, setup, setup_doc, shard.has_value(), command);
 
     // Ctrl-C at any moment, during a candidate's sweep or between two, stops at the next sweep.
     const InterruptScope interrupt_scope("polyroll calibrate");
-    const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     sweep::CalibrationRuns runs(dir, setup, [&](const sweep::SweepPlan& plan) {
         sweep::SweepOptions o;
         o.dir = dir;
@@ -318,6 +346,7 @@ Action add_calibrate_command(CLI::App& app) {
         "Examples:\n"
         "  polyroll calibrate --params fill.material.restitution,fill.material.friction,ramp.friction --jobs 2\n"
         "  polyroll calibrate --params ramp.friction=0.4:1.0 --observations my-lab.json --fidelity draft\n"
+        "  polyroll calibrate --params ramp.friction --plan-only   # the plan and its time, nothing run\n"
         "The same command resumes (a larger --max-evals continues). Exit codes: 0 done, 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
     sub->add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)")->required();
@@ -336,6 +365,8 @@ Action add_calibrate_command(CLI::App& app) {
         ->group("Running");
     sub->add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
                                          "(the same command, other K, sharing --out) run the rest")
+        ->group("Running");
+    sub->add_flag("--plan-only", a->plan_only, "print the plan and its estimated time, run nothing, write nothing")
         ->group("Running");
     sub->add_flag("--force", a->force, "start over in a folder holding something else")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress lines")->group("Running");

@@ -56,7 +56,7 @@ struct SweepArgs {
     std::string seed_list;
     int seeds = 0;
     std::string out, from, merge, shard;
-    bool plan_only = false, trajectories = false, retry_failed = false, quiet = false;
+    bool plan_only = false, trajectories = false, retry_failed = false, quiet = false, large = false;
     int jobs = 0;
     std::vector<CLI::Option*> scene_options;  // every option that defines the grid
 };
@@ -72,6 +72,25 @@ std::vector<json> ascending(const std::string& flag, const std::string& text, st
     std::stable_sort(values.begin(), values.end(), less);
     notes.push_back(fmt::format("{} {} runs in ascending order", flag, text));
     return values;
+}
+
+// Plans beyond these are refused unless --large confirms them: a mistyped step (--fill 0:1:0.001)
+// should cost a line, not a plan.json of hundreds of megabytes or a week of both cores.
+constexpr double kRunsWithoutLarge = 100000;
+constexpr double kHoursWithoutLarge = 100;
+
+// The number of runs a grid makes, from its axes alone, refused over the bound before any run is built.
+void check_grid_size(const SweepArgs& a, const std::vector<sweep::SweepAxis>& axes) {
+    double runs = 1;
+    std::string sizes;
+    for (const sweep::SweepAxis& ax : axes) {
+        runs *= static_cast<double>(ax.values.size());
+        sizes += fmt::format("{}{} {}", sizes.empty() ? "" : " x ", ax.flag, ax.values.size());
+    }
+    if (runs <= kRunsWithoutLarge || a.large) return;
+    throw InputError(fmt::format("sweep: {:.0f} runs ({}) is more than {:.0f}; allowed: fewer values, or --large to "
+                                 "confirm a plan that big",
+                                 runs, sizes, kRunsWithoutLarge));
 }
 
 sweep::SweepPlan plan_from_args(const SweepArgs& a, std::vector<std::string>& notes) {
@@ -106,6 +125,7 @@ sweep::SweepPlan plan_from_args(const SweepArgs& a, std::vector<std::string>& no
     } else if (!a.seed_list.empty()) {
         axes.push_back({"run.seed", "--seed", sweep::parse_grid_values("--seed", a.seed_list)});
     }
+    check_grid_size(a, axes);
     return sweep::make_grid_plan(base, axes);
 }
 
@@ -218,6 +238,12 @@ int run(const SweepArgs& a) {
         if (check.invalid > 0)
             throw InputError(fmt::format("sweep: {}; {} of {} runs cannot run, so none was started", check.first_invalid,
                                          check.invalid, plan.runs.size()));
+        const double hours = check.max_cost_s / std::max(1, jobs) / 3600.0;
+        if (hours > kHoursWithoutLarge && !a.large)
+            throw InputError(fmt::format("sweep: {} runs estimated at up to {} with {} job{}, more than {:.0f} h; "
+                                         "allowed: fewer values, a shorter --time-limit, or --large to confirm",
+                                         plan.runs.size(), duration_text(check.max_cost_s / std::max(1, jobs)), jobs,
+                                         jobs == 1 ? "" : "s", kHoursWithoutLarge));
         std::error_code ec;
         if (fs::exists(sweep::plan_path(dir), ec)) {
             // Resuming: the folder's plan must be this command's.
@@ -325,6 +351,9 @@ Action add_sweep_command(CLI::App& app) {
         ->group("Running");
     sub->add_flag("--trajectories", a->trajectories, "also write each run's trajectory.csv")->group("Running");
     sub->add_flag("--retry-failed", a->retry_failed, "run again the runs recorded as failed")->group("Running");
+    sub->add_flag("--large", a->large, "confirm a plan of more than 100000 runs or 100 estimated hours (refused "
+                                       "without it)")
+        ->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
     return [a] { return run(*a); };
 }

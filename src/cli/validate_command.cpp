@@ -20,6 +20,7 @@
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/observations.h"
+#include "sweep/plan_extension.h"
 #include "sweep/progress.h"
 #include "sweep/results_table.h"
 #include "sweep/run_cost.h"
@@ -117,15 +118,23 @@ int run(const ValidateArgs& a) {
     if (fs::exists(sweep::plan_path(dir), ec)) {
         // Resuming: the folder's plan must be this command's (or --force starts over).
         const sweep::SweepPlan existing = sweep::read_plan(dir);
-        if (sweep::plan_to_json(existing) == sweep::plan_to_json(vp.plan))
+        const std::string refusal = sweep::extension_refusal(existing, vp.plan);
+        if (sweep::plan_to_json(existing) == sweep::plan_to_json(vp.plan)) {
             fresh = false;
-        else if (!a.force)
-            throw InputError(fmt::format("--out {}: holds a different validation (its plan.json has {} runs, this "
-                                         "command {}); allowed: a new folder, the same command to resume, or --force "
-                                         "to start over",
-                                         a.out, existing.runs.size(), vp.plan.runs.size()));
-        else
+        } else if (a.force) {
             remove_old_validation(dir);  // its tables and runs are of another plan: never mixed with this one's
+        } else if (refusal.empty()) {
+            // More seeds (or more observations) for the same scenes: the runs done are kept, by id.
+            sweep::extend_plan(dir, vp.plan);
+            fresh = false;
+            fmt::print("polyroll validate: extends the validation in {}: {} runs were planned there, {} now\n", a.out,
+                       existing.runs.size(), vp.plan.runs.size());
+        } else {
+            throw InputError(fmt::format("--out {}: holds a different validation (its plan.json has {} runs, this "
+                                         "command {}: {}); allowed: --out with a new folder, the same command to "
+                                         "resume, more seeds or observations to extend it, or --force to start over",
+                                         a.out, existing.runs.size(), vp.plan.runs.size(), refusal));
+        }
     }
     if (fresh) {
         prepare_output_dir(dir, a.force);
@@ -196,7 +205,8 @@ Action add_validate_command(CLI::App& app) {
         "  polyroll validate ... --shard 2/4    # one slice; then the same command without --shard scores\n"
         "Figures (D against theta, the behaviour map; PNG, SVG and CSV) go to OUT/figures/ when python3-matplotlib\n"
         "is installed; without it the scorecard is still written.\n"
-        "The same command resumes. Exit codes: 0 ran (agreement or not is in the scorecard), 2 bad input,\n"
+        "The same command resumes; with more seeds it extends the folder, keeping the runs done. Exit codes:\n"
+        "0 ran (agreement or not is in the scorecard), 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
     sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
     sub->add_option("--only", a->only, "run only the observation with this id (repeat the flag or give a list a,b; "
@@ -204,7 +214,7 @@ Action add_validate_command(CLI::App& app) {
         ->delimiter(',');
     sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
     sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
-                                     "figures/ (default runs/validate); the same command there resumes");
+                                     "figures/ (default runs/validate); the same command there resumes, more seeds extend it");
     // 0 is refused as sweep's and tradeoff's --jobs 0 are (leaving the flag out means all cores).
     sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
         ->check(CLI::Range(1, 1024))
