@@ -16,6 +16,7 @@
 #include "app/divergence.h"
 #include "app/export_files.h"
 #include "app/lane_set.h"
+#include "app/page_settings.h"
 #include "app/plot_data.h"
 #include "app/readouts.h"
 #include "sim/scene_names.h"
@@ -655,6 +656,12 @@ TEST_CASE("the status line makes one speed statement: the chosen rate, or what t
           "playing at 0.031\u00D7 real time: this scene costs more than 1/4\u00D7 slow motion here");
     // Paused or ended: the clock's last verdict no longer applies.
     CHECK(speed_statement(1, false, false, 0.24) == "real time");
+    // The line says "playing" once, and a capture claims no rate at all.
+    CHECK(status_line(1.2, "\u25B6 playing", behind) ==
+          "t = 1.20 s   \u25B6 playing at 0.24\u00D7 real time: this scene costs more than real time here");
+    CHECK(status_line(1.2, "\u25B6 playing", "real time") == "t = 1.20 s   \u25B6 playing   real time");
+    CHECK(status_line(0.5, "\u275A\u275A paused", "real time") == "t = 0.50 s   \u275A\u275A paused   real time");
+    CHECK(std::string(kCaptureSpeedStatement).find("real time") == std::string::npos);
 }
 
 TEST_CASE("a value typed outside a control's range is clamped with a note saying so", "[app]") {
@@ -744,6 +751,36 @@ TEST_CASE("the preset rows say their fill where it is not half full", "[app]") {
     CHECK(preset_rows_heading(half) == "the experiment's polygons, half full:");
     PresetButton third{"p", "BBs", "", 14.0, 0.375};
     CHECK(row_button_text(third) == "BBs r = 0.375 14\u00B0");
+}
+
+TEST_CASE("a preset stays lit only while the scene is the preset's, and the polygon box says custom for another n",
+          "[app]") {
+    SandboxState s = state_for_preset("hexagon-bb");
+    CHECK(shows_loaded_preset(s));
+    // Flags (and the page's address) over the preset: n, r or theta changed, no preset lit.
+    for (const auto& flag : std::vector<std::pair<std::string, std::string>>{{"sides", "8"}, {"fill", "0.375"},
+                                                                               {"angle", "14"}}) {
+        SandboxState changed = state_for_preset("hexagon-bb");
+        apply_page_settings(parse_window_flags({flag}), changed);
+        INFO(flag.first);
+        CHECK_FALSE(shows_loaded_preset(changed));
+    }
+    // The same value as the preset's changes nothing; a preset named by the flags is lit.
+    SandboxState same = state_for_preset("hexagon-bb");
+    apply_page_settings(parse_window_flags({{"sides", "6"}}), same);
+    CHECK(shows_loaded_preset(same));
+    SandboxState named = state_for_preset("default");
+    apply_page_settings(parse_window_flags({{"preset", "octagon-bb"}}), named);
+    CHECK(shows_loaded_preset(named));
+    // Loading a preset again lights it again.
+    s.lanes[0].controls.sides = 8;
+    CHECK_FALSE(shows_loaded_preset(s));
+    load_preset(s, "hexagon-bb");
+    CHECK(shows_loaded_preset(s));
+    // The polygon box: the preset's name for its own n, "custom" for another.
+    CHECK(polygon_combo_text("hexagon-small", 6) == "hexagon-small");
+    CHECK(polygon_combo_text("hexagon-small", 8) == "custom: hexagon-small with n = 8");
+    CHECK(polygon_combo_text("octagon-small", 8) == "octagon-small");
 }
 
 TEST_CASE("the UI scale shown fits the window", "[app]") {

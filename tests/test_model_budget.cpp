@@ -32,8 +32,10 @@ BudgetFigures figures(double cost_per_grain_step) {
     return f;
 }
 
+// The large hexagon full of rice, every grain stepped (under auto a full shell is one rigid body).
 Scene big_rice() {
-    return test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 1.0}, {"material", "rice"}}}});
+    return test::with_model(
+        test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 1.0}, {"material", "rice"}}}}), Model::grains);
 }
 
 double fill_mass_kg(const Scene& s) {
@@ -59,6 +61,28 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
             CHECK(c.fits);
             CHECK(apply_choice({s}, f, c)[0].fill.material.diameter_m == s.fill.material.diameter_m);
         }
+    }
+    SECTION("a full shell under auto steps no grains until it is handed over, and the panel says so") {
+        const BudgetFigures f = figures(0.7 / (grains * 1000.0) * 4.0);  // the grains four times too slow
+        const Scene full_auto = test::with_model(big_rice(), Model::automatic);
+        const BudgetChoice c = offered_level({full_auto}, f, f.physics_s_per_grain_step, false);
+        CHECK(!c.reduced());  // nothing offered: nothing is stepped grain by grain
+        CHECK(c.fits);
+        CHECK(c.grains_asked == 0.0);
+        CHECK(c.grains_on_hand_over == Approx(grains));
+        CHECK_FALSE(c.fits_after_hand_over);
+        const std::string said = budget_statement(c, c, f);
+        CHECK_THAT(said, Catch::StartsWith("The scene as asked; it keeps real time on this computer."));
+        CHECK_THAT(said, Catch::Contains(fmt::format("its grains (about {}) take over and play slower than real time",
+                                                     std::lround(grains / 10.0) * 10)));
+        CHECK_THAT(said, !Catch::Contains("costs more than real time"));
+        // Beside a lane that does step its grains, only that lane's are counted and offered.
+        const Scene half = test::with_model(
+            test::scene_with({{"shell", "hexagon-small"}, {"fill", {{"ratio", 0.5}, {"material", "bb"}}}}),
+            Model::automatic);
+        const BudgetChoice race = offered_level({full_auto, half}, f, f.physics_s_per_grain_step, false);
+        CHECK(race.grains_asked == Approx(0.9 * estimated_grain_count(half)));
+        CHECK(race.grains_on_hand_over == Approx(grains));
     }
     SECTION("a machine fast enough keeps the big scene as asked") {
         // 0.7 s of physics per simulated second buys 0.7 / 1e-7 grain steps: 7,000 grains at 1,000 steps/s.

@@ -267,4 +267,15 @@ Model model_from(const std::string& name) {
     throw InputError(fmt::format("model '{}' is not one the window runs (allowed: {})", name, join(allowed)));
 }
 
+std::string polygon_combo_text(const std::string& polygon, int sides) {
+    if (polygon.empty()) return {};
+    try {
+        const auto& values = assets::preset_entry(assets::Kind::polygon, polygon).at("values");
+        if (!values.contains("sides") || values["sides"].get<int>() == sides) return polygon;
+    } catch (const std::exception&) {
+        return polygon;
+    }
+    return fmt::format("custom: {} with n = {}", polygon, sides);
+}
+
 }  // namespace polyroll::app

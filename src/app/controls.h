@@ -26,6 +26,7 @@ struct LaneControls {
     std::string material;       // material preset (assets/materials.json)
     double grain_friction = 0.0;     // advanced: grain on grain
     double grain_restitution = 0.0;  // advanced: grain on grain and on walls
+    bool operator==(const LaneControls&) const = default;
 };
 
 // What all lanes share: the ramp they race on and how the physics is computed.
@@ -38,6 +39,7 @@ struct SharedControls {
     Model model = Model::automatic;  // overwritten from the scene (run.model); auto as in defaults.json
     std::string fidelity;       // fidelity preset (assets/fidelity.json)
     std::uint64_t seed = 1;     // the grain packing's seed: the same seed, the same run
+    bool operator==(const SharedControls&) const = default;
 };
 
 // Which controls a row's value belongs to: each lane's own, or the one set all lanes share.
@@ -108,5 +110,9 @@ Scene lane_scene(const nlohmann::ordered_json& base, const LaneControls& lane, c
 
 // The model of a name the window offers: one of window_model_names() (InputError otherwise).
 Model model_from(const std::string& name);
+
+// What the closed polygon box says: the preset's name while n is the preset's own, else
+// "custom: NAME with n = N" (the preset's size, wall and mass with another number of sides).
+std::string polygon_combo_text(const std::string& polygon, int sides);
 
 }  // namespace polyroll::app

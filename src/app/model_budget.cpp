@@ -47,10 +47,15 @@ BudgetFigures load_figures() {
 // Engine steps per simulated second.
 double engine_hz(const Scene& s) { return s.fidelity.step_hz * s.fidelity.substeps; }
 
-// The grains a lane may step: none for a model without grains or an empty shell; for auto, those of the
-// model it may hand over to (the registry's may_step_grains).
+// The grains a lane steps: none for a model without grains or an empty shell; for auto, those of the
+// model it starts with (a full shell is one rigid body until a hand-over).
 double grains_of(const Scene& s, double packing) {
-    return may_step_grains(s) ? packing * estimated_grain_count(s) : 0.0;
+    return steps_grains_from_start(s) ? packing * estimated_grain_count(s) : 0.0;
+}
+
+// The grains a lane steps only once auto hands it over to the grains.
+double grains_after_hand_over(const Scene& s, double packing) {
+    return may_step_grains(s) && !steps_grains_from_start(s) ? packing * estimated_grain_count(s) : 0.0;
 }
 
 // A level only coarsens: a scene already at a coarser step than the level's keeps its own.
@@ -108,6 +113,14 @@ BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, 
     for (const Scene& s : stepped) c.grains_chosen += grains_of(s, f.packing);
     c.cost_chosen = estimated_cost_s(stepped, cost_per_grain_step, f);
     c.fits = c.cost_chosen <= f.physics_share;
+    double cost_after = 0.0;
+    for (const Scene& s : stepped) {
+        const double later = grains_after_hand_over(s, f.packing);
+        c.grains_on_hand_over += later;
+        cost_after += grain_steps_per_engine_step(later > 0 ? later : grains_of(s, f.packing), f.cost_exponent) *
+                      engine_hz(s) * cost_per_grain_step;
+    }
+    c.fits_after_hand_over = cost_after <= f.physics_share;
     return c;
 }
 
@@ -181,7 +194,15 @@ std::string budget_statement(const BudgetChoice& stepped, const BudgetChoice& of
                            level_label(l), grains_text(stepped.grains_asked), grains_text(stepped.grains_chosen),
                            stepped.fits ? "" : ", still slower than real time here", level_errors(l, f));
     }
-    if (stepped.fits) return "The scene as asked; it keeps real time on this computer.";
+    // A full shell under auto steps no grains unless it is handed over: said, never counted as stepped.
+    const std::string later =
+        stepped.grains_on_hand_over > 0
+            ? fmt::format(" A full shell runs as one rigid body and steps no grains; if it lifts off or slips, its "
+                          "grains (about {}) take over{}.",
+                          grains_text(stepped.grains_on_hand_over),
+                          stepped.fits_after_hand_over ? "" : " and play slower than real time here")
+            : std::string();
+    if (stepped.fits) return "The scene as asked; it keeps real time on this computer." + later;
     std::string said = fmt::format("The scene as asked (about {} grains) costs more than real time on this computer: it "
                                    "plays slower (the line over the scene says how much), never differently.",
                                    grains_text(stepped.grains_asked));
@@ -193,7 +214,7 @@ std::string budget_statement(const BudgetChoice& stepped, const BudgetChoice& of
                             offer.fits ? "keeps" : "comes closer to", level_errors(l, f));
     }
     if (stepped.measured) said += " Measured on this computer.";
-    return said;
+    return said + later;
 }
 
 }  // namespace polyroll::app

@@ -53,13 +53,17 @@ struct BudgetChoice {
     double cost_per_grain_step = 0.0; // the figure the estimate used
     bool measured = false;            // that figure was measured in this window (else the asset's)
     bool fits = true;                 // the chosen model is expected to keep real time
+    // Lanes that step no grains until auto hands them over (a full shell that lifts off or slips):
+    // their grains, as chosen, and whether the lanes would still keep real time once they do.
+    double grains_on_hand_over = 0.0;
+    bool fits_after_hand_over = true;
 
     bool reduced() const { return level >= 0; }
 };
 
 // The physics seconds one simulated second of these lanes costs: (grains + 1)^exponent x engine steps
-// per second x the cost per grain step, summed over the lanes. Reduced models (rigid, segments) and
-// empty shells count as no grains.
+// per second x the cost per grain step, summed over the lanes. Reduced models (rigid, segments),
+// empty shells and full shells under auto (one rigid body until a hand-over) count as no grains.
 double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f);
 // The grain steps one engine step of a lane of `grains` grains counts for (the measured cost's unit).
 double grain_steps_per_engine_step(double grains, double cost_exponent);

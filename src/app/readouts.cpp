@@ -88,6 +88,13 @@ std::string budget_status(const BudgetLevel& level) {
     return fmt::format("Cheaper model, picked in the panel: {}", level_label(level));
 }
 
+std::string status_line(double time_s, const std::string& state, const std::string& speed) {
+    const std::string playing = "\u25B6 playing";
+    if (state == playing && speed.rfind("playing ", 0) == 0)
+        return fmt::format("t = {:.2f} s   \u25B6 {}", time_s, speed);
+    return fmt::format("t = {:.2f} s   {}   {}", time_s, state, speed);
+}
+
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio) {
     std::string asked = slow_divisor == 1
                             ? std::string("real time")

@@ -52,6 +52,15 @@ std::string budget_status(const BudgetLevel& level);
 // `keeping_up` false only counts while stepping; `ratio` is simulated seconds per wall second.
 std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, double ratio);
 
+// A capture's statement instead (--frames, the page's test): each frame advances a fixed 1/60 s, so
+// how fast this computer steps does not show, and no rate is claimed.
+inline constexpr const char* kCaptureSpeedStatement = "captured frame by frame, 1/60 s each";
+
+// The status line: the time, the state ("\u25B6 playing", "paused", "run ended: ...") and the speed
+// statement, said once: "t = 1.20 s   \u25B6 playing at 0.24\u00D7 real time: ...", never "playing
+// playing at".
+std::string status_line(double time_s, const std::string& state, const std::string& speed);
+
 // The panel's note for a value typed (Ctrl+click) outside a control's limits, which the control
 // clamps: "r (fill) = 50 is outside 0 to 1: set to 1." Empty when inside them.
 std::string clamp_note(std::string_view label, double typed, double min, double max);

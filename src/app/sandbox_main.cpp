@@ -300,6 +300,7 @@ private:
         UiRequests req;
         read_shortcuts(s_, req);
         ctx_.running_to_end = last_.running_to_end;
+        ctx_.capture = o_.capture();
         ctx_.run_over = lanes().ready() && last_.run_over() && !last_.running_to_end;
         ctx_.large_font = win_.large_font();
         // The layout is reported for the capture's last frame (--layout-report).

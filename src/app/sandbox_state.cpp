@@ -19,6 +19,16 @@ void load_preset(SandboxState& s, const std::string& name) {
     s.shared = shared_controls_from(scenes.front());
     s.selected_lane = 0;
     s.changes_pending = false;
+    s.preset_lanes.clear();
+    for (const LaneChoice& lane : s.lanes) s.preset_lanes.push_back(lane.controls);
+    s.preset_shared = s.shared;
+}
+
+bool shows_loaded_preset(const SandboxState& s) {
+    if (s.preset.empty() || s.lanes.size() != s.preset_lanes.size() || !(s.shared == s.preset_shared)) return false;
+    for (size_t i = 0; i < s.lanes.size(); ++i)
+        if (!(s.lanes[i].controls == s.preset_lanes[i])) return false;
+    return true;
 }
 
 SandboxState state_for_preset(const std::string& name) {

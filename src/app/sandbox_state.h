@@ -22,6 +22,8 @@ struct LaneChoice {
 
 struct SandboxState {
     std::string preset;                // the sandbox preset last loaded ("" for a scene file)
+    std::vector<LaneControls> preset_lanes;  // its lanes' controls as loaded, to tell when they are changed
+    SharedControls preset_shared;
     std::string scene_file;            // the scene file loaded (--scene), until a preset replaces it
     std::vector<LaneChoice> lanes;     // 1 to kMaxLanes
     SharedControls shared;
@@ -51,6 +53,9 @@ SandboxState state_for_preset(const std::string& name);
 SandboxState state_for_scene_file(const std::string& path);
 // Loads another preset into an existing state, keeping the transport and view choices.
 void load_preset(SandboxState& s, const std::string& name);
+// Whether the lanes are still the loaded preset's as it gave them: its button is highlighted only
+// then (flags, an address or the panel that change n, r, theta, ... leave no preset highlighted).
+bool shows_loaded_preset(const SandboxState& s);
 
 // Every lane's scene from the state; throws InputError for a combination out of range.
 std::vector<Scene> scenes_for(const SandboxState& s);

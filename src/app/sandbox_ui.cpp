@@ -154,10 +154,11 @@ std::string preset_description(assets::Kind kind, const std::string& name) {
     }
 }
 
-// A combo over a preset kind; true when the choice changed.
-bool preset_combo(const char* label, assets::Kind kind, std::string& value) {
+// A combo over a preset kind; true when the choice changed. `shown`, if given, is what the closed
+// combo says instead of the name (a polygon whose n is not its preset's).
+bool preset_combo(const char* label, assets::Kind kind, std::string& value, const std::string& shown_instead = {}) {
     bool changed = false;
-    const std::string shown = value.empty() ? std::string("(custom)") : value;
+    const std::string shown = !shown_instead.empty() ? shown_instead : value.empty() ? std::string("(custom)") : value;
     if (ImGui::BeginCombo(label, shown.c_str())) {
         for (const std::string& name : assets::preset_names(kind)) {
             if (ImGui::Selectable(name.c_str(), name == value) && name != value) {
@@ -264,7 +265,8 @@ std::string panel_note(const ControlRow& row, const SceneField& f) {
 // A combo over the field's presets.
 bool preset_control(const ControlRow& row, const SceneField& f, Edit e) {
     std::string value = std::get<std::string>(row.get(e.lane, e.shared));
-    const bool edited = preset_combo(std::string(control_label(row)).c_str(), *f.kind, value);
+    const std::string shown = row.path == "shell.preset" ? polygon_combo_text(value, e.lane.sides) : std::string();
+    const bool edited = preset_combo(std::string(control_label(row)).c_str(), *f.kind, value, shown);
     if (edited) set_control(e.lane, e.shared, row.path, value);
     tip(field_tip(f, panel_note(row, f)));
     return edited;
@@ -352,10 +354,11 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
         }
     }();
     if (!error.empty()) text_wrapped(error);
+    const bool shown = shows_loaded_preset(s);  // no button lit for a scene the preset no longer is
     auto button = [&](const PresetButton& b, const std::string& text, bool first_in_row) {
         if (!first_in_row) same_line_if_fits(button_w(text.c_str()));
         ImGui::PushID(b.preset.c_str());
-        const bool current = s.preset == b.preset;
+        const bool current = shown && s.preset == b.preset;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         if (ImGui::Button(text.c_str())) req.load_preset = b.preset;
         if (current) ImGui::PopStyleColor();
@@ -397,7 +400,8 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
     if (!s.scene_file.empty()) loaded = "Scene file " + s.scene_file;
     else if (!s.preset.empty()) {
         try {
-            loaded = fmt::format("'{}': {}", s.preset, sandbox_preset(s.preset).description);
+            loaded = fmt::format("{}'{}': {}", shown ? "" : "Changed from ", s.preset,
+                                 sandbox_preset(s.preset).description);
         } catch (const std::exception&) {
             loaded = s.preset;
         }
@@ -1034,8 +1038,9 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
         else state = s.playing ? "\u25B6 playing" : "\u275A\u275A paused";
         const bool stepping = s.playing && !lanes.all_finished() && !lanes.trouble() && !ctx.running_to_end;
         const std::string speed =
-            speed_statement(divisor, stepping, ctx.clock->keeping_up(), ctx.clock->realtime_ratio());
-        lines.push_back({fmt::format("t = {:.2f} s   {}   {}", lanes.time_s(), state, speed), {}});
+            ctx.capture ? std::string(kCaptureSpeedStatement)
+                        : speed_statement(divisor, stepping, ctx.clock->keeping_up(), ctx.clock->realtime_ratio());
+        lines.push_back({status_line(lanes.time_s(), state, speed), {}});
     }
     const ImVec4 error = on_panel(kErrorColour, s.high_contrast), warn = on_panel(kWarnColour, s.high_contrast);
     if (!lanes.build_error().empty()) lines.push_back({"The scene could not be built: " + lanes.build_error(), error});

@@ -33,6 +33,7 @@ struct UiContext {
     const BudgetChoice* budget = nullptr;        // the model the lanes step (as asked, or the level picked)
     const BudgetChoice* budget_offer = nullptr;  // the cheaper model the budget offers for real time
     bool running_to_end = false;
+    bool capture = false;       // --frames: each frame advances a fixed 1/60 s (kCaptureSpeedStatement)
     bool run_over = false;      // every lane ended (or trouble stopped them): Play starts again
     float ui_scale_shown = 1.0f;  // fitted_ui_scale: less than asked in a small window
     std::string control_error;  // the last combination the core refused

@@ -179,6 +179,12 @@ bool may_step_grains(const Scene& scene) {
     });
 }
 
+bool steps_grains_from_start(const Scene& scene) {
+    if (scene.fill.ratio <= 0.0) return false;
+    const ModelTraits& t = model_traits(models_a_run_may_use(scene).front());
+    return t.engine && t.has_grains;
+}
+
 const ModelTraits& model_traits(Model model) { return row(model).traits; }
 
 std::unique_ptr<ModelRun> start_run(const Scene& scene) {

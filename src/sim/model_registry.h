@@ -74,8 +74,12 @@ std::string model_help(const std::vector<Model>& models);
 std::vector<Model> models_a_run_may_use(const Scene& scene);
 // Whether a run of the scene may have Box2D step grains one by one in this process: it has a fill
 // and one of its models has grains in the engine (ModelTraits::engine and has_grains; not the 3D
-// reference, whose grains Yade steps). What the window's physics budget counts.
+// reference, whose grains Yade steps). What the window's coarser grains apply to.
 bool may_step_grains(const Scene& scene);
+// Whether the run steps grains from its start: the model it starts with (auto's first) simulates
+// grains in polyroll's engine. A full shell under auto does not: it starts as one rigid body and
+// steps its grains only if it is handed over.
+bool steps_grains_from_start(const Scene& scene);
 // Throws InputError for Model::automatic, which is a rule, not a model: ask the result (model_that_ran).
 const ModelTraits& model_traits(Model model);
 
