@@ -779,7 +779,7 @@ TEST_CASE("a preset stays lit only while the scene is the preset's, and the poly
     CHECK(shows_loaded_preset(s));
     // The polygon box: the preset's name for its own n, "custom" for another.
     CHECK(polygon_combo_text("hexagon-small", 6) == "hexagon-small");
-    CHECK(polygon_combo_text("hexagon-small", 8) == "custom: hexagon-small with n = 8");
+    CHECK(polygon_combo_text("hexagon-small", 8) == "custom (n = 8)");
     CHECK(polygon_combo_text("octagon-small", 8) == "octagon-small");
 }
 

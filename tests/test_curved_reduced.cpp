@@ -170,8 +170,8 @@ TEST_CASE("curved track: auto runs empty and full shells with the reduced models
     {
         const Scene s = shell_on_track("hexagon-small", 1.0, 12.0, 1.7, Model::automatic);
         const auto [a, g] = auto_and_grains(s);
-        // A full shell's Box2D discs rattle in their packing at every impact (docs/physics.md, Full
-        // shells), which the rigid polygon leaves out: measured 10% slower here, so 15% for it.
+        // A full shell's Box2D discs rattle in their packing at every impact
+        // (docs/studies/full-shells.md), which the rigid polygon leaves out: measured 10% slower here, so 15% for it.
         check_alike(outcome_of(a), outcome_of(g), a.shell.outer_side_m, 0.15);
     }
     // An empty octagon at 25 deg hops down the lower track (the rigid model goes on as a free body):

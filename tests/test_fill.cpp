@@ -171,7 +171,7 @@ TEST_CASE("the bundled materials: BBs and peas two grains per disc, rice in colu
 
 TEST_CASE("the one-layer study's scenes hold the 2D pile in a 3D box one grain deep with the deep box's ratios",
           "[fill]") {
-    // docs/physics.md, "One grain deep": the 3D reference given a pile that cannot spread along the
+    // docs/studies/one-grain-deep.md: the 3D reference given a pile that cannot spread along the
     // roll axis. What its text claims of these files is checked here, so that a change to the discs'
     // packing or the shell's mass model cannot leave the study's scenes meaning something else.
     const std::filesystem::path dir = std::filesystem::path(POLYROLL_SOURCE_DIR) / "docs" / "physics" / "one-layer";

@@ -217,7 +217,7 @@ TEST_CASE("a sliding vertex's series follows its equations of motion and keeps e
 TEST_CASE("an empty shell's Box2D works in millimetres where the step allows, and lands as the free body does",
           "[models][hopping][units]") {
     // Box2D holds each polygon a skin (0.01 units) outside its outline: 0.2 mm between shell and ramp
-    // at 1 cm, which rounds the corners a hopping shell lands on (docs/physics.md, "Against Box2D").
+    // at 1 cm, which rounds the corners a hopping shell lands on (docs/studies/free-body-against-box2d.md).
     CHECK(choose_engine_units(empty_scene(6, 30.0)).units_per_m == 100.0);  // standard: 1 mm would cap at 2 m/s
     const Scene box2d = at_finest_box2d(empty_scene(6, 30.0));
     REQUIRE(choose_engine_units(box2d).units_per_m == 1000.0);

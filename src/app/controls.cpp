@@ -275,7 +275,7 @@ std::string polygon_combo_text(const std::string& polygon, int sides) {
     } catch (const std::exception&) {
         return polygon;
     }
-    return fmt::format("custom: {} with n = {}", polygon, sides);
+    return fmt::format("custom (n = {})", sides);
 }
 
 }  // namespace polyroll::app

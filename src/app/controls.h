@@ -112,7 +112,8 @@ Scene lane_scene(const nlohmann::ordered_json& base, const LaneControls& lane, c
 Model model_from(const std::string& name);
 
 // What the closed polygon box says: the preset's name while n is the preset's own, else
-// "custom: NAME with n = N" (the preset's size, wall and mass with another number of sides).
+// "custom (n = N)": the preset's size, wall and mass with another number of sides (the list still
+// marks the preset; the box is too narrow for both names).
 std::string polygon_combo_text(const std::string& polygon, int sides);
 
 }  // namespace polyroll::app

@@ -17,7 +17,7 @@ void bench_auto(const Scene& base, int repeats);
 
 // The same 16 shells, each run `members` times with its release tilt raised by 0.001 degree a member:
 // where a shell hops, one run's terminal velocity is one draw from a spread that tiny changes in the
-// state at a landing select (docs/physics.md), so auto, grains at the scene's fidelity and the finest
+// state at a landing select (docs/studies/free-body-against-box2d.md), so auto, grains at the scene's fidelity and the finest
 // Box2D are compared by their means and ranges. No timings: one run each.
 void bench_auto_ensemble(const Scene& base, int members);
 

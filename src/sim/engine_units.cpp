@@ -24,7 +24,7 @@ EngineUnits choose_engine_units(const Scene& s) {
         // Box2D keeps every polygon a skin (0.01 units) outside its outline, so at 1 cm the shell
         // touches the ramp 0.2 mm early and rolls on corners rounded by as much, and its linear
         // slop (0.005 units) lets it sink 0.05 mm, against 5 um at 1 mm. Measured on the hopping
-        // empty shells at 80 kHz (docs/physics.md, "Against Box2D"): the 18-gon at 10, 20 and 30
+        // empty shells at 80 kHz (docs/studies/free-body-against-box2d.md): the 18-gon at 10, 20 and 30
         // degrees 3-7% faster than the free rigid body at 1 cm, within 0.4% at 1 mm (a thinner
         // skin alone mended 10 degrees only). The centre is the only body and it cannot pass the
         // bound; the tracker calls a run diverged at 0.8 of the cap (tracker.cpp), hence the

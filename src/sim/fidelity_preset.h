@@ -17,8 +17,8 @@ Scene at_fidelity_preset(Scene scene, const std::string& preset);
 // units there (engine_units.h). Where a shell hops, the grain model's answer still moves with the step
 // at the reference preset, so this is the nearest to its converged answer polyroll has (bench --auto
 // measures against it). Finer is not better: from 320,000 steps a second on, Box2D's single-precision
-// positions and angles advance by only a few units in the last place per step (docs/physics.md,
-// "Against Box2D").
+// positions and angles advance by only a few units in the last place per step
+// (docs/studies/free-body-against-box2d.md).
 Scene at_finest_box2d(Scene scene);
 
 }  // namespace polyroll

@@ -29,7 +29,7 @@ struct ModelChoice {
 
 // A full shell: the grains have no room to move, so shell and fill turn as one rigid polygon (the
 // experiment's full polygons roll as solid ones do). The Box2D discs of a full 2D fill still rattle
-// in their packing's gaps at every impact (docs/physics.md, Full shells).
+// in their packing's gaps at every impact (docs/studies/full-shells.md).
 bool fill_is_solid(const Scene& scene);
 
 // The cheapest model the scene requires (scene.run.model is ignored): see auto_run.cpp.
