@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -101,7 +103,10 @@ inline std::string table_without_wall_time(const std::string& table) {
 
 // A fresh, empty scratch folder (removed first if it exists; created when `create`).
 inline std::filesystem::path scratch_dir(const std::string& name, bool create = false) {
-    const std::filesystem::path p = std::filesystem::temp_directory_path() / ("polyroll-test-" + name);
+    // The process id in the name: two test runs at once on one machine (two builds, a developer
+    // beside CI) never share a folder.
+    const std::filesystem::path p =
+        std::filesystem::temp_directory_path() / ("polyroll-test-" + std::to_string(::getpid()) + "-" + name);
     std::filesystem::remove_all(p);
     if (create) std::filesystem::create_directories(p);
     return p;

@@ -196,3 +196,25 @@ TEST_CASE("a resolved scene's written form resolves to the same scene", "[harden
     const Scene again = resolve_scene({SceneLayer{scene_to_json(s), "again", {}}});
     CHECK(scene_to_json(again) == scene_to_json(s));
 }
+
+TEST_CASE("an empty folder name and a scene description that is not text are refused in one line",
+          "[hardening][bad-input]") {
+    const fs::path dir = scratch("empty-out");
+    fs::create_directories(dir);
+    // An unset shell variable gives --out "": refused, not written into the current folder.
+    for (const char* cmd : {"run --out ''", "render --out ''", "sweep --fill 0 --out ''", "validate --out ''",
+                            "compare --out ''", "sweep --from ''"}) {
+        const auto r = polyroll::test::run_command("cd " + dir.string() + " && " + polyroll::test::kPolyrollExe + " " + cmd);
+        INFO(cmd << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(polyroll::test::line_count(r.out) == 1);
+        CHECK_THAT(r.out, Catch::Contains("'': an empty folder name"));
+    }
+    CHECK(fs::is_empty(dir));  // nothing written where the command ran
+    const fs::path scene = dir / "scene.json";
+    std::ofstream(scene) << R"({"description": 5, "fill": {"ratio": 0.25}})";
+    polyroll::test::expect_refused(polyroll::test::kPolyrollExe + " run --scene " + scene.string() + " --out " +
+                                       (dir / "out").string(),
+                                   {"description is 5", "a text in quotes"}, dir / "out");
+    fs::remove_all(dir);
+}

@@ -152,7 +152,7 @@ TEST_CASE("polyroll render writes the run's files as polyroll run does", "[rende
     const std::string scene = "--time-limit 0.2 --sides 8 --fill 0.375 --material peas --angle 12";
     const Cli run = run_cli("run " + scene + " --out " + (base / "run").string());
     REQUIRE(run.exit_code == 0);
-    const Cli render = run_cli("render " + scene + " --size 160x90 --fps 20 --hold 0.5 --out " + (base / "frames").string());
+    const Cli render = run_cli("render " + scene + " --size 320x180 --fps 20 --hold 0.5 --out " + (base / "frames").string());
     INFO(render.out);
     REQUIRE(render.exit_code == 0);
     CHECK(render.out.find("frame 15/15") != std::string::npos);  // progress: 0.2 s x 20 + 1, and 10 held
@@ -175,13 +175,15 @@ TEST_CASE("polyroll render refuses bad flags with one line, exit 2 and nothing w
         std::vector<std::string> words;
     };
     const std::vector<Case> cases = {
-        {"--size 0x0", {"--size 0x0", "16"}},
+        {"--size 0x0", {"--size 0x0", "320"}},
+        {"--size 100x100", {"--size 100x100", "320", "180"}},  // unreadable: refused
         {"--size 1280", {"--size 1280", "WIDTHxHEIGHT"}},
         {"--size 99999x720", {"--size 99999x720", "7680"}},
         {"--fps 0", {"--fps 0", "1 to 240"}},
         {"--fps 1000", {"--fps 1000", "1 to 240"}},
         {"--slow 0", {"--slow 0", "1 to 100"}},
         {"--color-by mood", {"--color-by mood", "material, speed"}},
+        {"--colour-by mood", {"--colour-by mood", "material, speed"}},  // echoed as typed
         {"--video /nonexistent-folder/x.mp4", {"/nonexistent-folder", "does not exist"}},
         // Checked before any frame is drawn, not found by ffmpeg after them all.
         {"--video x.txt", {"--video x.txt", "not a video format .txt", ".mp4, .mkv or .mov"}},
@@ -213,7 +215,7 @@ TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[rend
     REQUIRE(polyroll::test::run_command("command -v ffmpeg && command -v ffprobe").exit_code == 0);
     const fs::path base = scratch("video-made");
     // Odd sides: the video pads them to even ones (yuv420p needs even sides).
-    const Cli r = run_cli("render --time-limit 0.5 --fps 10 --size 65x37 --hold 0 --out " + (base / "f").string() +
+    const Cli r = run_cli("render --time-limit 0.5 --fps 10 --size 321x181 --hold 0 --out " + (base / "f").string() +
                           " --video " + (base / "v.mp4").string());
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -226,7 +228,7 @@ TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[rend
         "-of csv=p=0 " + (base / "v.mp4").string());
     INFO(probe.out);
     REQUIRE(probe.exit_code == 0);
-    CHECK(probe.out == "66,38," + std::to_string(frames) + "\n");
+    CHECK(probe.out == "322,182," + std::to_string(frames) + "\n");
     // Nothing but the video and the frames' folder: ffmpeg's temporary was renamed into place.
     const auto entries = std::distance(fs::directory_iterator(base), fs::directory_iterator());
     CHECK(entries == 2);
@@ -236,7 +238,7 @@ TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[rend
 TEST_CASE("render with --video but no ffmpeg says how to get it and still writes the frames", "[render][cli]") {
     const fs::path base = scratch("video");
     // An empty PATH hides any installed ffmpeg.
-    const Cli r = run_cli("render --time-limit 0.1 --size 64x36 --hold 0 --out " + (base / "f").string() +
+    const Cli r = run_cli("render --time-limit 0.1 --size 320x180 --hold 0 --out " + (base / "f").string() +
                                " --video " + (base / "v.mp4").string(),
                            "env PATH=/nonexistent");
     INFO(r.out);
@@ -252,7 +254,7 @@ TEST_CASE("render --video may go into the --out folder the render creates", "[re
     // frames/x.mp4 with --out frames was refused because frames/ did not exist yet. Without
     // ffmpeg on PATH the render runs and says so (exit 1), which shows the video's folder was accepted.
     const fs::path base = scratch("video-in-out");
-    const Cli r = run_cli("render --time-limit 0.1 --size 64x36 --hold 0 --out " + (base / "f").string() +
+    const Cli r = run_cli("render --time-limit 0.1 --size 320x180 --hold 0 --out " + (base / "f").string() +
                               " --video " + (base / "f" / "v.mp4").string(),
                           "env PATH=/nonexistent");
     INFO(r.out);
@@ -276,7 +278,7 @@ TEST_CASE("polyroll render plays every model: the reduced models' frames turn th
         const std::string scene = std::string("--time-limit 1 --model ") + model;
         const fs::path run_dir = base / (std::string(model) + "-run"), frames = base / model;
         REQUIRE(run_cli("run " + scene + " --out " + run_dir.string()).exit_code == 0);
-        const Cli render = run_cli("render " + scene + " --size 160x90 --fps 10 --hold 0 --out " + frames.string());
+        const Cli render = run_cli("render " + scene + " --size 320x180 --fps 10 --hold 0 --out " + frames.string());
         INFO(render.out);
         REQUIRE(render.exit_code == 0);
         // 1 s at 10 frames/s: frames at 0, 0.1, ..., 1 s.

@@ -27,7 +27,7 @@ using Run = polyroll::test::CommandResult;
 
 Run run(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
-// This file's scratch folders, created fresh: scratch("smoke") is /tmp/polyroll-test-sandbox-smoke/.
+// This file's scratch folders, created fresh: scratch("smoke") is /tmp/polyroll-test-PID-sandbox-smoke/.
 const polyroll::test::Scratch scratch("sandbox-", true);
 
 using polyroll::test::kSandboxExe;

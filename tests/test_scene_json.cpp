@@ -88,7 +88,7 @@ TEST_CASE("too many grains are refused before anything is built", "[scene][bad-i
 
 TEST_CASE("scene files: malformed JSON, a directory, a missing file", "[scene][bad-input]") {
     namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "polyroll-test-scene-files";
+    const fs::path dir = polyroll::test::scratch_dir("scene-files");
     fs::create_directories(dir);
     const fs::path bad = dir / "bad.json";
     std::ofstream(bad) << R"({"shell": {"sides": 6,}})";

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -196,5 +197,38 @@ TEST_CASE("sweep: the grid and its time echoed first, lists out of order run asc
     CHECK(failed.exit_code == 1);
     CHECK_THAT(failed.out, Catch::Contains("first failure  invalid point: fill.ratio = 25"));
     CHECK_THAT(failed.out, Catch::Contains("every run failed; the first: invalid point: fill.ratio = 25"));
+    fs::remove_all(out);
+}
+
+TEST_CASE("sweep: results.csv names the model each run used and no preset polygon for another n", "[sweep][cli]") {
+    const fs::path out = scratch("model-used");
+    const Result r = shell(kPolyrollExe + " sweep --sides 6,7 --fill 0,0.25 --fidelity draft --time-limit 0.1 -q --jobs 2 "
+                           "--out " + out.string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const std::string table = read_file(out / "results.csv");
+    INFO(table);
+    const auto lines = [&] {
+        std::vector<std::vector<std::string>> rows;
+        std::istringstream in(table);
+        for (std::string line; std::getline(in, line);) {
+            std::vector<std::string> cells;
+            std::stringstream ls(line);
+            for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
+            rows.push_back(cells);
+        }
+        return rows;
+    }();
+    REQUIRE(lines.size() == 5);
+    const auto col = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(lines[0].begin(), lines[0].end(), name) - lines[0].begin());
+    };
+    for (std::size_t i = 1; i < lines.size(); ++i) {
+        const auto& row = lines[i];
+        CHECK(row[col("model")] == "auto");  // as asked
+        // auto: an empty shell runs the rigid model, a partly filled one the grains.
+        CHECK(row[col("model_used")] == (row[col("fill_ratio")] == "0" ? "rigid" : "grains"));
+        CHECK(row[col("polygon")] == (row[col("sides")] == "6" ? "hexagon-small" : "custom"));
+    }
     fs::remove_all(out);
 }

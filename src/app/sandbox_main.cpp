@@ -72,6 +72,7 @@ struct Options {
     float ui_scale = kDefaultUiScale;
     bool follow = false;
     std::string colour_by = "material";
+    std::string colour_flag = "--color-by";  // as typed, for messages: --color-by or --colour-by
     bool paused = false;
     std::string coarser = "none";  // a cheaper model picked by its key (model_budget.h), or none
     // The page's keys as flags (page_settings.h), checked as the address is: (key, value) as given.
@@ -108,7 +109,7 @@ void check(Options& o) {
     if (o.theme != "projector" && o.theme != "dark")
         throw InputError(fmt::format("--theme {}: unknown (allowed: projector, dark)", o.theme));
     if (o.colour_by != "material" && o.colour_by != "speed")
-        throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
+        throw InputError(fmt::format("{} {}: unknown (allowed: material, speed)", o.colour_flag, o.colour_by));
     if (!o.layout_report.empty() && o.frames < 1)
         throw InputError(fmt::format("--layout-report {}: needs --frames N (the frame whose layout it writes)",
                                      o.layout_report));
@@ -580,7 +581,15 @@ int sandbox_main(int argc, char** argv) {
                    fmt::format("size of text and controls, {:g} to {:g} (default {:g})", kUiScaleMin, kUiScaleMax,
                                kDefaultUiScale));
     cli.add_flag("--follow", o.follow, "the camera follows the polygon instead of showing the whole ramp");
-    cli.add_option("--color-by,--colour-by", o.colour_by, "grain colours: material (default) or speed");
+    cli.add_option("--color-by", o.colour_by, "grain colours: material (default) or speed");
+    // The same flag in British spelling, echoed as typed in its messages.
+    cli.add_option_function<std::string>(
+        "--colour-by",
+        [&o](const std::string& v) {
+            o.colour_by = v;
+            o.colour_flag = "--colour-by";
+        },
+        "the same as --color-by");
     cli.add_flag("--paused", o.paused, "start paused");
     // The page's address keys as flags of the same names, checked by the same code (page_settings.h).
     const std::vector<std::pair<std::string, std::string>> page_flags = {

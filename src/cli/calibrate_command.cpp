@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
 #include "cli/observation_flags.h"
+#include "sim/message_text.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/json_path.h"
@@ -244,8 +245,9 @@ void print_outcome(const fs::path& dir, const sweep::CalibrationSetup& setup, co
                    std::size_t runs_in_folder) {
     const sweep::Evaluation& before = outcome.evaluations.front();
     const sweep::Evaluation& best = outcome.evaluations[outcome.best];
-    fmt::print("polyroll calibrate: {} evaluations ({}), {} runs in the folder\n", outcome.evaluations.size(),
-               outcome.stop_reason, runs_in_folder);
+    fmt::print("polyroll calibrate: {} ({}), {} in the folder\n",
+               counted(static_cast<long long>(outcome.evaluations.size()), "evaluation"), outcome.stop_reason,
+               counted(static_cast<long long>(runs_in_folder), "run"));
     for (std::size_t i = 0; i < setup.params.size(); ++i)
         fmt::print("  {:<32} {:.6g} (start {:.6g}, bounds {:g} to {:g})\n", setup.params[i].path, best.values[i],
                    setup.params[i].start, setup.params[i].lo, setup.params[i].hi);
@@ -272,8 +274,9 @@ void print_plan(const sweep::CalibrationSetup& setup, int jobs) {
     for (const sweep::PlannedRun& r : vp.plan.runs) cost_s += sweep::max_run_seconds(vp.plan, r);
     const double candidate_s = cost_s / std::max(1, std::min<int>(jobs, static_cast<int>(vp.plan.runs.size())));
     const int candidates = setup.max_evaluations + 1;
-    fmt::print("  {} runs a candidate; {} candidates at most (the scene's own values, then --max-evals {})\n",
-               vp.plan.runs.size(), candidates, setup.max_evaluations);
+    fmt::print("  {} a candidate; {} at most (the scene's own values, then --max-evals {})\n",
+               counted(static_cast<long long>(vp.plan.runs.size()), "run"), counted(candidates, "candidate"),
+               setup.max_evaluations);
     fmt::print("  estimated at most {} a candidate and {} in all with {} job{} (each run to its time limit; runs "
                "that stop sooner take less)\n",
                sweep::duration_text(candidate_s), sweep::duration_text(candidate_s * candidates), jobs,

@@ -49,6 +49,9 @@ bool is_run_folder(const fs::path& dir) {
 // What `polyroll sweep --out`, `run --out` or `compare --out` left in the folder; InputError otherwise.
 FolderKind folder_kind(const std::string& folder) {
     const fs::path dir = folder;
+    std::error_code ec;
+    if (!fs::exists(dir, ec))
+        throw InputError(fmt::format("'{}' does not exist (allowed: a sweep, run or compare folder)", folder));
     if (fs::is_regular_file(dir / "plan.json")) return FolderKind::sweep;
     if (is_run_folder(dir)) return FolderKind::run;
     const std::vector<std::string> models = compare_models();

@@ -44,8 +44,19 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     }
     try {
-        for (auto& [sub, action] : commands)
-            if (sub->parsed()) return action();
+        for (auto& [sub, action] : commands) {
+            if (!sub->parsed()) continue;
+            // A folder flag given as "" (an unset shell variable) would write into the current folder.
+            for (const char* name : {"--out", "--from", "--merge"}) {
+                const CLI::Option* o = sub->get_option_no_throw(name);
+                if (o == nullptr || o->count() == 0) continue;
+                for (const std::string& v : o->results())
+                    if (v.empty())
+                        throw polyroll::InputError(fmt::format("{} '': an empty folder name (allowed: a folder path, "
+                                                               "e.g. {} runs/mine)", name, name));
+            }
+            return action();
+        }
     } catch (const polyroll::InputError& e) {
         fmt::print(stderr, "polyroll: {}\n", polyroll::printable_line(e.what()));
         return kExitBadInput;

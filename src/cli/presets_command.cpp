@@ -30,6 +30,8 @@ int list(bool as_json) {
     if (as_json) {
         nlohmann::ordered_json out;
         for (Kind k : kinds) out[std::string(assets::kind_label(k))] = assets::file(assets::kind_file(k)).at("presets");
+        out["window"] = assets::file("sandbox-presets.json").at("presets");
+        out["observations"] = assets::file("experiment.json").at("observations");
         fmt::print("{}\n", out.dump(2));
         return kExitOk;
     }
@@ -50,7 +52,15 @@ int list(bool as_json) {
         }
         fmt::print("\n");
     }
-    fmt::print("Each value's source (a measurement of the experiment, or a stated choice and why) is in the\n"
+    // The window's whole scenes (polyroll-sandbox --preset NAME, the page's ?preset=NAME) and the
+    // observations validate and calibrate score (--only ID).
+    fmt::print("window presets (assets/sandbox-presets.json; polyroll-sandbox --preset NAME):\n");
+    for (const auto& [name, entry] : assets::file("sandbox-presets.json").at("presets").items())
+        fmt::print("  {:<24} {}\n", name, entry.value("description", std::string()));
+    fmt::print("\nobservations (assets/experiment.json; polyroll validate --only ID):\n");
+    for (const auto& ob : assets::file("experiment.json").at("observations"))
+        fmt::print("  {:<36} {}\n", ob.at("id").get<std::string>(), ob.value("source", std::string()));
+    fmt::print("\nEach value's source (a measurement of the experiment, or a stated choice and why) is in the\n"
                "file named above, under \"sources\"; 'polyroll presets --json' prints them all.\n");
     return kExitOk;
 }
@@ -59,7 +69,8 @@ int list(bool as_json) {
 
 Action add_presets_command(CLI::App& app) {
     auto as_json = std::make_shared<bool>(false);
-    CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps and fidelity levels");
+    CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps, fidelity levels, the "
+                                                  "window's presets and the experiment's observations");
     sub->footer(fmt::format("The presets are the files of assets/, compiled in. {}=DIR reads any of them from DIR "
                             "instead (e.g. DIR/materials.json with a material of your own), for every command and "
                             "polyroll-sandbox.\n"

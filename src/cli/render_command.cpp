@@ -37,7 +37,7 @@ namespace fs = std::filesystem;
 // The limits of the render flags, in one place.
 constexpr double kMaxFps = 240.0;
 constexpr int kMaxSlow = 100;
-constexpr int kMinSide = 16, kMaxWidth = 7680, kMaxHeight = 4320;
+constexpr int kMinWidth = 320, kMinHeight = 180, kMaxWidth = 7680, kMaxHeight = 4320;
 constexpr double kMaxHold = 60.0;
 // The containers ffmpeg writes H.264 into, as --video's extension (lower case).
 constexpr std::array<std::string_view, 3> kVideoExtensions = {".mp4", ".mkv", ".mov"};
@@ -55,6 +55,7 @@ struct RenderOptions {
     double hold_s = 1.0;
     bool follow = false;
     std::string colour_by = "material";
+    std::string colour_flag = "--color-by";  // as typed, for messages: --color-by or --colour-by
     std::string video;
     bool force = false;
 };
@@ -67,10 +68,10 @@ Size parse_size(const std::string& text) {
     static const std::regex pattern(R"(\s*(\d{1,6})\s*[xX]\s*(\d{1,6})\s*)");
     std::smatch m;
     const std::string allowed = fmt::format("allowed: WIDTHxHEIGHT, width {}..{}, height {}..{}, e.g. 1280x720",
-                                            kMinSide, kMaxWidth, kMinSide, kMaxHeight);
+                                            kMinWidth, kMaxWidth, kMinHeight, kMaxHeight);
     if (!std::regex_match(text, m, pattern)) throw InputError(fmt::format("--size {}: not a size ({})", text, allowed));
     const Size s{std::stoi(m[1]), std::stoi(m[2])};
-    if (s.width < kMinSide || s.width > kMaxWidth || s.height < kMinSide || s.height > kMaxHeight)
+    if (s.width < kMinWidth || s.width > kMaxWidth || s.height < kMinHeight || s.height > kMaxHeight)
         throw InputError(fmt::format("--size {}: out of range ({})", text, allowed));
     return s;
 }
@@ -188,7 +189,7 @@ int render(const RenderOptions& o) {
     if (!(o.hold_s >= 0.0 && o.hold_s <= kMaxHold))
         throw InputError(fmt::format("--hold {:g}: out of range (allowed: 0 to {:g} s)", o.hold_s, kMaxHold));
     if (o.colour_by != "material" && o.colour_by != "speed")
-        throw InputError(fmt::format("--color-by {}: unknown (allowed: material, speed)", o.colour_by));
+        throw InputError(fmt::format("{} {}: unknown (allowed: material, speed)", o.colour_flag, o.colour_by));
     std::string ffmpeg;
     if (!o.video.empty()) {
         // Checked before any frame is drawn: a video ffmpeg cannot write was found only after rendering
@@ -317,7 +318,15 @@ Action add_render_command(CLI::App& app) {
     sub->add_option("--hold", opts->hold_s, "seconds of video the final state is held for (default 1)")->group("Output");
     sub->add_flag("--follow", opts->follow, "the camera follows the polygon instead of showing the whole ramp")
         ->group("Output");
-    sub->add_option("--color-by,--colour-by", opts->colour_by, "grain colours: material (default) or speed")
+    sub->add_option("--color-by", opts->colour_by, "grain colours: material (default) or speed")->group("Output");
+    // The same flag in British spelling, echoed as typed in its messages.
+    sub->add_option_function<std::string>(
+           "--colour-by",
+           [opts](const std::string& v) {
+               opts->colour_by = v;
+               opts->colour_flag = "--colour-by";
+           },
+           "the same as --color-by")
         ->group("Output");
     sub->add_option("--video", opts->video,
                     "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4)")

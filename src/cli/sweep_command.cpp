@@ -182,9 +182,9 @@ void print_grid(const sweep::SweepPlan& plan, const GridCheck& c, int jobs, cons
 
 void print_report(const sweep::SweepReport& r, int jobs) {
     const double per_min = r.wall_time_s > 0 ? 60.0 * static_cast<double>(r.ran) / r.wall_time_s : 0.0;
-    fmt::print("polyroll sweep: {} of {} runs done in this session ({} failed), {} found done before; {} with {} "
+    fmt::print("polyroll sweep: {} of {} done in this session ({} failed), {} found done before; {} with {} "
                "job{} ({:.1f} runs/min)\n",
-               r.ran, r.planned - r.already, r.failed, r.already,
+               r.ran, counted(static_cast<long long>(r.planned - r.already), "run"), r.failed, r.already,
                r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s),
                jobs,
                jobs == 1 ? "" : "s", per_min);
@@ -266,7 +266,7 @@ int run(const SweepArgs& a) {
         }
         print_grid(plan, check, jobs, notes);
         if (a.plan_only) {
-            fmt::print("polyroll sweep: plan of {} runs written to {}\n", plan.runs.size(),
+            fmt::print("polyroll sweep: plan of {} written to {}\n", counted(static_cast<long long>(plan.runs.size()), "run"),
                        sweep::plan_path(dir).string());
             fmt::print("  run a slice:  polyroll sweep --from {} --shard K/N\n  then:        polyroll sweep --merge {}\n",
                        a.out, a.out);

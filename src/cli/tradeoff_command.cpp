@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
 #include "figures/figures_script.h"
+#include "sim/message_text.h"
 #include "sim/atomic_file.h"
 #include "sim/dem3d/yade_process.h"
 #include "sim/errors.h"
@@ -46,7 +47,7 @@ std::optional<sweep::TableFile> run_study(const sweep::SweepPlan& plan, const fs
     o.dir = work;
     o.jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     o.quiet = a.quiet;
-    fmt::print("polyroll tradeoff: {} runs into {}\n", plan.runs.size(), work.string());
+    fmt::print("polyroll tradeoff: {} into {}\n", counted(static_cast<long long>(plan.runs.size()), "run"), work.string());
     const sweep::SweepReport r = run_sweep_interruptibly(plan, o, "polyroll tradeoff");
     fmt::print("  {} run in {:.0f} s ({} failed), {} done before\n", r.ran, r.wall_time_s, r.failed, r.already);
     if (r.interrupted) return std::nullopt;
@@ -103,7 +104,8 @@ Action add_tradeoff_command(CLI::App& app) {
         "Runs a fixed set of scenes with every model and preset (resumable: the same command continues),\n"
         "compares each with the converged reference and writes tradeoff.md, points.csv and tradeoff.png.\n"
         "With --dem3d, the 2D cross-section against the 3D reference instead (168 runs, half of them in Yade:\n"
-        "about half an hour on 2 cores): cross-section.md, cross-section.csv and cross-section.png.\n"
+        "35 to 95 minutes measured on 2 cores, as docs/guide.md says): cross-section.md, cross-section.csv and\n"
+        "cross-section.png.\n"
         "Examples:\n"
         "  polyroll tradeoff\n"
         "  polyroll tradeoff --dem3d --out docs/tradeoff");

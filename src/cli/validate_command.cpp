@@ -16,6 +16,7 @@
 #include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
@@ -161,9 +162,10 @@ int run(const ValidateArgs& a) {
         print_plan(file, vp, a.seeds, todo, slice.size(), o.jobs);
     }
     const sweep::SweepReport r = run_sweep_interruptibly(vp.plan, o, "polyroll validate");
-    fmt::print("polyroll validate: {} observation{}, {} runs ({} seed{} each): {} run now ({} failed), {} found done "
-               "before, {}\n",
-               file.observations.size(), file.observations.size() == 1 ? "" : "s", vp.plan.runs.size(), a.seeds, a.seeds == 1 ? "" : "s", r.ran, r.failed, r.already,
+    fmt::print("polyroll validate: {}, {} ({} each): {} run now ({} failed), {} found done before, {}\n",
+               counted(static_cast<long long>(file.observations.size()), "observation"),
+               counted(static_cast<long long>(vp.plan.runs.size()), "run"), counted(a.seeds, "seed"), r.ran, r.failed,
+               r.already,
                r.wall_time_s < 60 ? fmt::format("{:.1f} s", r.wall_time_s) : sweep::Progress::clock_text(r.wall_time_s));
     if (r.interrupted) {
         fmt::print("  interrupted: run the same command again to resume\n");

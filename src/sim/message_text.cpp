@@ -74,4 +74,8 @@ std::string real_time_text(double simulated_s, double wall_s) {
     return factor >= 10.0 ? fmt::format("{:.0f}x real time", factor) : fmt::format("{:.2g}x real time", factor);
 }
 
+std::string counted(long long n, std::string_view noun) {
+    return std::to_string(n) + " " + std::string(noun) + (n == 1 ? "" : "s");
+}
+
 }  // namespace polyroll

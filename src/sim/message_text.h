@@ -24,4 +24,7 @@ std::string json_error_text(std::string_view what);
 // significant digits. "too fast to time" when the clock saw no time pass.
 std::string real_time_text(double simulated_s, double wall_s);
 
+// A count with its noun: "1 run", "24 runs" (the plural adds an s: the nouns counted are regular).
+std::string counted(long long n, std::string_view noun);
+
 }  // namespace polyroll

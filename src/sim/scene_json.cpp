@@ -113,7 +113,12 @@ public:
             throw InputError(fmt::format("{}: a scene must be a JSON object", layer.origin));
         const std::vector<std::string> top = top_sections();
         for (const auto& [key, value] : layer.doc.items()) {
-            if (key == "description") continue;  // free text for the file's author
+            if (key == "description") {  // free text for the file's author
+                if (!value.is_string())
+                    throw InputError(fmt::format("{}: description is {} (allowed: a text in quotes)", layer.origin,
+                                                 value.dump()));
+                continue;
+            }
             if (key == "scene" || key == "results")
                 throw InputError(fmt::format(
                     "{}: unknown key '{}' (a summary.json is not a scene; use its \"scene\" object as the file)",

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
@@ -23,13 +24,25 @@ const std::vector<std::pair<std::string, std::string>> kSceneColumns = {
     {"seed", "run.seed"}};
 
 const std::vector<std::string> kResultColumns = {
-    "status",       "behaviour",  "distance_m",     "terminal_velocity_m_s", "impacts",
+    "status",       "model_used", "behaviour",  "distance_m",     "terminal_velocity_m_s", "impacts",
     "mean_impact_energy_ratio",   "stop_time_s",    "end_time_s",            "grains",
     "grains_inside", "fill_mass_kg", "max_energy_gain_J", "model_valid",     "reason",
     "wall_time_s"};
 
+// The polygon preset, or "custom" when n is not the preset's own (the preset's size with another n).
+std::string polygon_cell(const ShellParams& shell) {
+    if (shell.preset.empty()) return "custom";
+    try {
+        const auto& values = assets::preset_entry(assets::Kind::polygon, shell.preset).at("values");
+        if (values.contains("sides") && values["sides"].get<int>() != shell.sides) return "custom";
+    } catch (const std::exception&) {
+        return shell.preset;
+    }
+    return shell.preset;
+}
+
 std::string scene_value(const Scene& s, const std::string& field) {
-    if (field == "shell.preset") return s.shell.preset;
+    if (field == "shell.preset") return polygon_cell(s.shell);
     if (field == "shell.sides") return std::to_string(s.shell.sides);
     if (field == "fill.material.preset") return s.fill.material.preset;
     if (field == "fill.ratio") return number_cell(s.fill.ratio);
@@ -83,6 +96,11 @@ std::string ResultsTable::row_line(const PlannedRun& run, const RunRecord& rec) 
     if (rec.result) {
         const RunResult& r = *rec.result;
         const Measurements& m = r.measured;
+        // The model that ran: auto's choice, and the one it handed over to if it did.
+        const ModelChoice* choice = r.model_choice ? &*r.model_choice : nullptr;
+        std::string used = to_string(choice ? choice->model : r.scene.run.model);
+        if (choice && choice->hand_over_time_s && choice->then) used += " then " + to_string(*choice->then);
+        c.push_back(used);
         c.push_back(to_string(m.behaviour));
         c.push_back(number_cell(m.distance_m));
         c.push_back(m.terminal_velocity_m_s ? number_cell(*m.terminal_velocity_m_s) : "");
@@ -96,7 +114,7 @@ std::string ResultsTable::row_line(const PlannedRun& run, const RunRecord& rec) 
         c.push_back(number_cell(m.max_energy_gain_J));
         c.push_back(r.model_valid ? "true" : "false");
     } else {
-        for (int i = 0; i < 12; ++i) c.push_back("");
+        for (int i = 0; i < 13; ++i) c.push_back("");  // model_used to model_valid
     }
     c.push_back(rec.reason);
     c.push_back(fmt::format("{:.4f}", rec.wall_time_s));
