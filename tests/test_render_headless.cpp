@@ -262,6 +262,16 @@ TEST_CASE("render --video may go into the --out folder the render creates", "[re
     CHECK(r.out.find("does not exist") == std::string::npos);
     CHECK(r.out.find("ffmpeg is not installed") != std::string::npos);
     CHECK(fs::exists(base / "f" / frame_file_name(1)));
+    // A relative name goes into the --out folder, wherever the command runs.
+    fs::create_directories(base / "elsewhere");
+    const Cli relative = run_cli("render --time-limit 0.1 --size 320x180 --hold 0 --out " + (base / "r").string() +
+                                     " --video v.mp4",
+                                 "cd " + (base / "elsewhere").string() + " && env PATH=/nonexistent");
+    INFO(relative.out);
+    CHECK(relative.exit_code == 1);
+    CHECK(relative.out.find("--video " + (base / "r" / "v.mp4").string() + ": ffmpeg is not installed") !=
+          std::string::npos);
+    CHECK(fs::is_empty(base / "elsewhere"));
     // A folder that is neither --out nor existing is still refused, before anything is written.
     const Cli other = run_cli("render --time-limit 0.1 --out " + (base / "g").string() + " --video " +
                               (base / "h" / "v.mp4").string());

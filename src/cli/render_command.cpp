@@ -179,7 +179,8 @@ void remove_old_frames(const fs::path& dir) {
         if (std::regex_match(e.path().filename().string(), frame)) fs::remove(e.path(), ec);
 }
 
-int render(const RenderOptions& o) {
+int render(const RenderOptions& given) {
+    RenderOptions o = given;
     // Every flag is checked before any work, so bad input leaves nothing behind.
     const Size size = parse_size(o.size);
     if (!(o.fps >= 1.0 && o.fps <= kMaxFps))
@@ -202,6 +203,9 @@ int render(const RenderOptions& o) {
             throw InputError(fmt::format("--video {}: {} (allowed: a file ending in {})", o.video, what,
                                          video_extensions_text()));
         }
+        // A relative --video names a file in the --out folder, beside the frames it is made of (not in
+        // the folder the command ran in); an absolute one goes where it says.
+        if (fs::path(o.video).is_relative()) o.video = (fs::path(o.out) / o.video).string();
         // The video may go into the --out folder this render is about to create, or any existing folder.
         std::error_code ec;
         const fs::path parent = fs::weakly_canonical(fs::absolute(o.video), ec).parent_path();
@@ -329,7 +333,8 @@ Action add_render_command(CLI::App& app) {
            "the same as --color-by")
         ->group("Output");
     sub->add_option("--video", opts->video,
-                    "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4)")
+                    "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4); a "
+                    "relative name goes into the --out folder")
         ->group("Output");
     sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder (old frames are removed)")
         ->group("Output");
