@@ -240,9 +240,10 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
     fs::remove_all(dir);
 }
 
-// --out names the headless render's folder too; run again, the earlier frames stay and the new run
-// goes to a new numbered folder, said on the first line.
-TEST_CASE("without a display the sandbox renders into --out and never over an earlier run", "[app][sandbox]") {
+// --out names the headless render's folder too; run again, the fallback replaces its own earlier
+// render (its marker says so) and never a folder it did not write, said on the first line.
+TEST_CASE("without a display the sandbox renders into --out and replaces only its own earlier render",
+          "[app][sandbox]") {
     const fs::path dir = scratch("fallback-out");
     const std::string cmd =
         "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe + " --out mine/";
@@ -252,19 +253,32 @@ TEST_CASE("without a display the sandbox renders into --out and never over an ea
     CHECK_THAT(first.out, Catch::Contains("(polyroll render --out mine)"));
     REQUIRE(fs::exists(dir / "mine" / "frame_000001.png"));
     CHECK(fs::exists(dir / "mine" / "summary.json"));
+    CHECK(fs::exists(dir / "mine" / ".polyroll-sandbox-fallback"));
     CHECK_FALSE(fs::exists(dir / "runs"));
-    // Marks the earlier run's files, to see that none is written over.
-    std::ofstream(dir / "mine" / "summary.json") << "kept\n";
-    const auto frames_before = std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator());
+    const auto files_before = std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator());
 
+    // Again: the same folder, its frames replaced, no mine-2.
+    std::ofstream(dir / "mine" / "summary.json") << "old\n";
     const Run second = run(cmd);
     INFO(second.out);
     REQUIRE(second.exit_code == 0);
-    CHECK_THAT(second.out, Catch::Contains("(polyroll render --out mine-2; mine/ is not an empty folder and is left "
-                                           "as it is)"));
-    CHECK(fs::exists(dir / "mine-2" / "frame_000001.png"));
-    CHECK(polyroll::test::read_file(dir / "mine" / "summary.json") == "kept\n");
-    CHECK(std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator()) == frames_before);
+    CHECK_THAT(second.out, Catch::Contains("(polyroll render --out mine, replacing this fallback's earlier frames"));
+    CHECK_FALSE(fs::exists(dir / "mine-2"));
+    CHECK(polyroll::test::read_file(dir / "mine" / "summary.json") != "old\n");
+    CHECK(std::distance(fs::directory_iterator(dir / "mine"), fs::directory_iterator()) == files_before);
+
+    // A folder the fallback did not write is left as it is: the render goes to the next number.
+    fs::create_directories(dir / "theirs");
+    std::ofstream(dir / "theirs" / "notes.txt") << "kept\n";
+    const Run third = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe +
+                          " --out theirs");
+    INFO(third.out);
+    REQUIRE(third.exit_code == 0);
+    CHECK_THAT(third.out, Catch::Contains("(polyroll render --out theirs-2; theirs is not this fallback's and is "
+                                          "left as it is)"));
+    CHECK(fs::exists(dir / "theirs-2" / "frame_000001.png"));
+    CHECK(polyroll::test::read_file(dir / "theirs" / "notes.txt") == "kept\n");
+    CHECK(std::distance(fs::directory_iterator(dir / "theirs"), fs::directory_iterator()) == 1);
     fs::remove_all(dir);
 }
 

@@ -24,7 +24,8 @@ namespace {
 bool free_for_a_render(const fs::path& p) {
     std::error_code ec;
     if (!fs::exists(p, ec)) return true;
-    return fs::is_directory(p, ec) && fs::is_empty(p, ec);
+    if (!fs::is_directory(p, ec)) return false;
+    return fs::is_empty(p, ec) || fs::is_regular_file(p / kFallbackMarker, ec);
 }
 
 // The folder `wanted` names, as a path with a last component: "runs/default/" is "runs/default", and
@@ -41,11 +42,11 @@ fs::path named_folder(const fs::path& wanted) {
 
 }  // namespace
 
-// A new numbered folder rather than a refusal or overwriting: this fallback is what the README's
-// main command does on a machine without a display, so running it again must work (a refusal
-// would fail the second try with exit 2, and the sandbox has no --force to offer), and it must
-// never replace the frames of an earlier run, which a user may be keeping. The window's own S and
-// E keys likewise number their files instead of replacing them.
+// This fallback is what the README's main command does on a machine without a display, so running
+// it again must work (a refusal would fail the second try with exit 2, and the sandbox has no
+// --force to offer) without adding another 60 MB of the same frames each time: it replaces its own
+// earlier render, which its marker names. A folder it did not write (no marker) is never touched:
+// the render goes to the next numbered one.
 fs::path fresh_render_folder(const fs::path& wanted) {
     fs::path base = named_folder(wanted);  // not const: returned by move
     if (free_for_a_render(base)) return base;
@@ -60,15 +61,25 @@ int run_headless_instead(const std::string& why, const std::string& out) {
     const std::string exe = sibling_polyroll();
     const fs::path folder = fresh_render_folder(out);
     const std::string kept =
-        folder == named_folder(out) ? "" : fmt::format("; {} is not an empty folder and is left as it is", out);
+        folder == named_folder(out) ? "" : fmt::format("; {} is not this fallback's and is left as it is", out);
+    std::error_code ec;
+    const bool replacing = fs::is_regular_file(folder / kFallbackMarker, ec);
     fmt::print("polyroll-sandbox: no display ({}): rendering the default scene headless instead "
-               "(polyroll render --out {}{})\n",
-               why, folder.string(), kept);
+               "(polyroll render --out {}{}{})\n",
+               why, folder.string(), replacing ? ", replacing this fallback's earlier frames there" : "", kept);
     std::fflush(stdout);
     std::fflush(stderr);
-    // No --force: the folder is new or empty, and render refuses one that filled meanwhile.
+    // The marker first, so the folder is known as this fallback's even if the render is stopped;
+    // --force because the folder then holds the marker (and, replacing, the earlier frames).
+    fs::create_directories(folder, ec);
+    if (FILE* f = std::fopen((folder / kFallbackMarker).c_str(), "w")) {
+        std::fputs("Written by polyroll-sandbox without a display: its next run without one replaces this "
+                   "folder's frames.\n",
+                   f);
+        std::fclose(f);
+    }
     const std::string dir = folder.string();
-    const char* argv[] = {exe.c_str(), "render", "--out", dir.c_str(), nullptr};
+    const char* argv[] = {exe.c_str(), "render", "--out", dir.c_str(), "--force", nullptr};
     ::execv(exe.c_str(), const_cast<char* const*>(argv));
     fmt::print(stderr, "polyroll-sandbox: could not run {}: {}\n", exe, std::strerror(errno));
     return 1;

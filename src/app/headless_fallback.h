@@ -14,13 +14,18 @@ inline constexpr const char* kHeadlessOutDir = "runs/default";
 // The polyroll executable beside this one (the folder of /proc/self/exe).
 std::string sibling_polyroll();
 
-// The folder the render writes into: `wanted` if it does not exist or is empty, otherwise the first
-// of wanted-2, wanted-3, ... that does not exist or is empty. Never a folder holding an earlier run.
+// The file that marks a folder as this fallback's own render: the next fallback render replaces that
+// folder's frames (rerunning the main command must not add 60 MB each time), and no other folder.
+inline constexpr const char* kFallbackMarker = ".polyroll-sandbox-fallback";
+
+// The folder the render writes into: the first of `wanted`, wanted-2, wanted-3, ... that does not
+// exist, is empty, or holds this fallback's marker (its own earlier render). Never a folder another
+// program or the user wrote.
 std::filesystem::path fresh_render_folder(const std::filesystem::path& wanted);
 
-// Prints the line, then replaces this process with `polyroll render --out DIR`, DIR the
-// fresh_render_folder of `out` (the sandbox's --out, or kHeadlessOutDir). Returns only if that
-// could not start (the exit code to use).
+// Prints the line, marks the folder, then replaces this process with `polyroll render --out DIR
+// --force`, DIR the fresh_render_folder of `out` (the sandbox's --out, or kHeadlessOutDir). Returns
+// only if that could not start (the exit code to use).
 int run_headless_instead(const std::string& why, const std::string& out);
 
 }  // namespace polyroll::app
