@@ -100,9 +100,10 @@ def plotted_lines(module, scorecard, runs_by_id):
     band = scorecard["observations"][0]
     fig, _ = module.d_vs_angle_figure(band, runs_by_id[band["id"]])
     lines = {}
-    for line in fig.axes[0].get_lines():
+    for line in fig.axes[0].get_lines():  # a gid drawn as several lines (the median, cut by behaviour): all its points
         if line.get_gid():
-            lines[line.get_gid()] = sorted(zip(map(float, line.get_xdata()), map(float, line.get_ydata())))
+            lines[line.get_gid()] = sorted(lines.get(line.get_gid(), []) +
+                                           list(zip(map(float, line.get_xdata()), map(float, line.get_ydata()))))
     plt.close(fig)
     return lines
 

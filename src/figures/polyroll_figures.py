@@ -38,7 +38,7 @@ BEHAVIOUR_COLOURS = {
     "stopped_at_first_impact": "#4477aa",
     "stopped": "#ee6677",
     "rolled_to_end": "#228833",
-    "time_limit": "#ccbb44",
+    "time_limit": "#997700",  # Tol's dark yellow: his bright #ccbb44 is too pale on white
     "diverged": "#000000",
     "failed": "#bbbbbb",
 }
@@ -302,13 +302,31 @@ def line_text(slope, intercept):
 
 
 def seed_medians(runs):
-    """Per simulated angle: the median, least and greatest drawn D over the runs that did not fail."""
+    """Per simulated angle: the median, least and greatest drawn D over the runs that did not fail, and
+    the behaviour most of them showed."""
     by_angle = defaultdict(list)
     for r in runs:
         if r["outcome"] not in ("failed", "diverged"):
-            by_angle[r["angle_deg"]].append(drawn_distance_m(r))
+            by_angle[r["angle_deg"]].append(r)
     angles = sorted(by_angle)
-    return [(a, float(np.median(by_angle[a])), min(by_angle[a]), max(by_angle[a])) for a in angles]
+    out = []
+    for a in angles:
+        ds = [drawn_distance_m(r) for r in by_angle[a]]
+        out.append((a, float(np.median(ds)), min(ds), max(ds), majority([r["outcome"] for r in by_angle[a]])[0]))
+    return out
+
+
+def same_behaviour_runs(medians):
+    """The medians cut where the behaviour most seeds show changes: a line joins neighbouring angles
+    only within one behaviour (a stop at the first impact at 15 deg and a whole ramp at 20 deg are not
+    a linear rise between them)."""
+    segments = []
+    for m in medians:
+        if segments and segments[-1][-1][4] == m[4]:
+            segments[-1].append(m)
+        else:
+            segments.append([m])
+    return segments
 
 
 def two_point(element, x0, x1, y0=None, y1=None):
@@ -335,7 +353,7 @@ def d_vs_angle_figure(observation, runs):
 
 def draw_d_vs_angle(ax, runs, length_m, band=None, paper_fit=None, sim_fit=None, counted=True):
     """D against theta on one axis from 0 to the ramp's length: every run by its outcome, the median and
-    range over seeds, the experiment's band (lo, hi, tolerance) and fit, and the simulation's fit
+    range over seeds (joined only within one behaviour), the experiment's band (lo, hi, tolerance) and fit, and the simulation's fit
     ((fit, (from, to)) over the third behaviour). Returns the table of what it plots (polyroll validate
     and polyroll figures draw it alike)."""
     table = []
@@ -350,14 +368,15 @@ def draw_d_vs_angle(ax, runs, length_m, band=None, paper_fit=None, sim_fit=None,
     ax.axhline(length_m, ls=":", color="#555555", lw=1, gid="ramp_end", label=f"end of the ramp ({length_m:g} m)")
 
     medians = seed_medians(runs)
-    if medians:
-        xs = [m[0] for m in medians]
-        ax.fill_between(xs, [m[2] for m in medians], [m[3] for m in medians], color="#66ccee", alpha=0.45, lw=0,
-                        gid="seed_range", label="seed range (least to greatest)")
-        ax.plot(xs, [m[1] for m in medians], "-", color="#4477aa", lw=1.3, gid="seed_median",
-                label="median over seeds")
-        table += [dict(element="seed_median", angle_deg=a, distance_m=med, low_m=low, high_m=high)
-                  for a, med, low, high in medians]
+    for k, seg in enumerate(same_behaviour_runs(medians)):
+        xs = [m[0] for m in seg]
+        ax.fill_between(xs, [m[2] for m in seg], [m[3] for m in seg], color="#66ccee", alpha=0.45, lw=0,
+                        gid="seed_range", label="seed range (least to greatest)" if k == 0 else None)
+        # A short tick marks a median alone in its behaviour, which no line joins.
+        ax.plot(xs, [m[1] for m in seg], "-", marker="_", ms=9, color="#4477aa", lw=1.3, gid="seed_median",
+                label="median over seeds" if k == 0 else None)
+    table += [dict(element="seed_median", angle_deg=a, distance_m=med, low_m=low, high_m=high, behaviour=b)
+              for a, med, low, high, b in medians]
 
     for b, style in RUN_STYLES.items():
         mine = [r for r in runs if r["outcome"] == b]
@@ -755,6 +774,7 @@ def d_vs_angle_sweep(rows, lengths, observations):
     fig, axes, legend_ax = panels_with_legend_row(len(groups), legend_rows=4)
     length_m = max((r["ramp_length_m"] for r in runs if math.isfinite(r["ramp_length_m"])), default=1.0)
     table, matched, titles = [], [], []
+    fitted = False
     for ax, (values, grows) in zip(axes, groups):
         name = panel_label(keys, values)
         o = matching_observation(observations, grows)
@@ -763,7 +783,9 @@ def d_vs_angle_sweep(rows, lengths, observations):
             matched.append(o["id"])
             band = (o["angle_range_deg"][0], o["angle_range_deg"][1], o.get("angle_tolerance_deg", 0.0))
             paper_fit = o["linear_fit"]
-        part = draw_d_vs_angle(ax, grows, length_m, band, paper_fit, third_behaviour_fit(grows), counted=False)
+        fit = third_behaviour_fit(grows)
+        fitted = fitted or fit is not None
+        part = draw_d_vs_angle(ax, grows, length_m, band, paper_fit, fit, counted=False)
         table += [dict(t, panel=name) for t in part]
         titles.append(ax.set_title(name + (f"\nexp. {o['id']}" if o else ""), fontsize=7.5, loc="left"))
         ax.tick_params(labelsize=7.5)
@@ -772,9 +794,11 @@ def d_vs_angle_sweep(rows, lengths, observations):
         if not left_panel(ax, axes):
             ax.set_ylabel("")
     shared_legend(legend_ax, axes, ncol=2)
+    # The dashed fit is promised only where a panel draws one.
+    fit_text = (f"dashed: linear fit over the runs that rolled, then stopped (from {MIN_FIT_ANGLES} angles or more)"
+                if fitted else f"no fit drawn: no panel has runs that rolled, then stopped at {MIN_FIT_ANGLES} angles")
     page_title(fig, "Distance before stopping D against ramp angle \u03b8, every run "
-               f"({seeds_count(rows)} seed{'s' if seeds_count(rows) != 1 else ''} per point); "
-               f"dashed: linear fit over the runs that rolled, then stopped (from {MIN_FIT_ANGLES} angles or more)")
+               f"({seeds_count(rows)} seed{'s' if seeds_count(rows) != 1 else ''} per point); " + fit_text)
     fit_titles(fig, titles)
     return fig, table
 
