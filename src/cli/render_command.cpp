@@ -147,8 +147,17 @@ std::string no_ffmpeg_message(const RenderOptions& o) {
 // A progress line: in place on a terminal, otherwise a line every tenth of the way.
 class ProgressLine {
 public:
-    ProgressLine() : tty_(::isatty(STDERR_FILENO) != 0) {}
+    ProgressLine(int width_px, int height_px, std::string folder)
+        : tty_(::isatty(STDERR_FILENO) != 0), width_px_(width_px), height_px_(height_px), folder_(std::move(folder)) {}
     void update(const render::SequenceProgress& p) {
+        // Once the data run has said how many frames there are: the count, the size and where they go,
+        // before the countdown.
+        if (!announced_) {
+            announced_ = true;
+            fmt::print(stderr, "  {} frames of {}x{} into {} (about {:.0f} MB of PNG at this size)\n",
+                       p.frames_expected, width_px_, height_px_, folder_,
+                       static_cast<double>(p.frames_expected) * kPngBytesPerPixel * width_px_ * height_px_ / 1e6);
+        }
         const double fps = p.wall_s > 0 ? static_cast<double>(p.frames_done) / p.wall_s : 0.0;
         const double left = fps > 0 ? static_cast<double>(p.frames_expected - p.frames_done) / fps : 0.0;
         const std::string line = fmt::format("  rendering: frame {}/{}, {:.0f} frames/s, {:.1f} s left", p.frames_done,
@@ -167,7 +176,12 @@ public:
     }
 
 private:
+    // Measured on the default scene at 1280x720: 57 MB for 544 frames, about 0.11 bytes a pixel.
+    static constexpr double kPngBytesPerPixel = 0.11;
     bool tty_;
+    int width_px_, height_px_;
+    std::string folder_;
+    bool announced_ = false;
     long last_tenth_ = 0;
 };
 
@@ -243,7 +257,7 @@ int render(const RenderOptions& given) {
                o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");
     std::fflush(stdout);
     render::SequenceResult res;
-    ProgressLine progress;
+    ProgressLine progress(size.width, size.height, o.out);
     try {
         if (o.force) remove_old_frames(o.out);
         res = render::render_sequence(scene, st, o.out,
