@@ -294,3 +294,30 @@ TEST_CASE("commands creating the same new output folder at once all proceed (sha
     }
     fs::remove_all(base);
 }
+
+TEST_CASE("Ctrl-C in run and render says so in one line and leaves no folder behind", "[hardening][cli]") {
+    const fs::path dir = scratch("ctrl-c");
+    fs::create_directories(dir);
+    // Both still running after 1.5 s: the large hexagon half full steps 1,488 grains (about 30 s), and a
+    // render's data run of the default scene takes about 2.5 s before the first frame.
+    for (const std::string& cmd : {std::string("run --polygon hexagon-large --fill 0.5"), std::string("render")}) {
+        const fs::path out = dir / "out";
+        const auto r = polyroll::test::run_command("timeout --preserve-status -s INT 1.5 " + kPolyrollExe + " " + cmd +
+                                                   " --out " + out.string());
+        INFO(cmd << "\n" << r.out);
+        CHECK(r.exit_code == 130);
+        CHECK_THAT(r.out, Catch::Contains("interrupted (Ctrl-C); the folder") && Catch::Contains("is removed"));
+        CHECK(polyroll::test::line_count(r.out) == (cmd == "render" ? 2u : 1u));  // render's first line, then this
+        CHECK_FALSE(fs::exists(out));
+    }
+    // A folder the command did not make is not removed (--force into an existing one).
+    fs::create_directories(dir / "mine");
+    std::ofstream(dir / "mine" / "notes.txt") << "kept\n";
+    const auto kept = polyroll::test::run_command("timeout --preserve-status -s INT 1.5 " + kPolyrollExe +
+                                                  " run --polygon hexagon-large --fill 0.5 --force --out " +
+                                                  (dir / "mine").string());
+    INFO(kept.out);
+    CHECK(kept.exit_code == 130);
+    CHECK(read_file(dir / "mine" / "notes.txt") == "kept\n");
+    fs::remove_all(dir);
+}

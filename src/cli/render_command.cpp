@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/interrupt_cleanup.h"
 #include "cli/scene_options.h"
 #include "render/frame_encoder.h"
 #include "render/render_sequence.h"
@@ -233,6 +234,7 @@ int render(const RenderOptions& given) {
     }
     const Scene scene = o.scene.resolve();
     const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);
+    const CleanUpOnInterrupt on_interrupt("polyroll render", created);
     if (!o.video.empty() && ffmpeg.empty())
         fmt::print(stderr, "polyroll: note: ffmpeg is not installed: the frames will be written, but no video (how "
                            "to make one follows at the end)\n");
@@ -325,8 +327,9 @@ Action add_render_command(CLI::App& app) {
         "  polyroll render --sides 8 --fill 0.375 --material peas --angle 12 --fps 60 --size 1920x1080 \\\n"
         "      --out frames/oct --video oct.mp4\n"
         "  polyroll render --scene my-scene.json --follow --slow 4 --out frames/slow\n"
-        "Exit codes: 0 done, 2 bad input, 3 the run diverged (frames and files are written), 1 other failure\n"
-        "(including a --video that could not be made; the frames are still written).");
+        "Exit codes: 0 done, 2 bad input, 3 the run diverged (frames and files are written), 130 interrupted (the\n"
+        "folder it made is removed), 1 other failure (including a --video that could not be made; the frames are\n"
+        "still written).");
     opts->scene.add_to(*sub);
     sub->add_option("--out", opts->out, "folder for the frames and the run's files")->required()->group("Output");
     sub->add_option("--size", opts->size, "frame size WIDTHxHEIGHT in pixels (default 1280x720)")->group("Output");

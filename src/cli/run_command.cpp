@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "cli/interrupt_cleanup.h"
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
 #include "sim/dem3d/yade_process.h"
@@ -135,6 +136,7 @@ int run(const RunOptions& o) {
     const Scene scene = o.scene.resolve();
     std::optional<std::filesystem::path> created;
     if (!o.out.empty()) created = prepare_output_dir(o.out, o.force);
+    const CleanUpOnInterrupt on_interrupt("polyroll run", created);
     RunResult r;
     try {
         // The 3D reference takes a minute or more: say how far it has got, on a terminal only.
@@ -178,7 +180,8 @@ Action add_run_command(CLI::App& app) {
         "  polyroll run --sides 8 --fill 0.375 --material rice --angle 14 --out runs/oct-rice\n"
         "  polyroll run --scene my-scene.json --json\n"
         "  polyroll run --set fill.material.wall_friction=0.05 --set ramp.length_m=1.5\n"
-        "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 1 other failure.");
+        "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 130 interrupted (the folder it\n"
+        "made is removed), 1 other failure.");
     opts->scene.add_to(*sub);
     sub->add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv")->group("Output");
     sub->add_flag("--json", opts->json, "print the summary as JSON instead of text")->group("Output");
