@@ -218,3 +218,12 @@ TEST_CASE("an empty folder name and a scene description that is not text are ref
                                    {"description is 5", "a text in quotes"}, dir / "out");
     fs::remove_all(dir);
 }
+
+TEST_CASE("tradeoff into a folder it cannot write names that folder, not its sweep subfolder", "[hardening][bad-input]") {
+    const auto r = polyroll::test::run_command(polyroll::test::kPolyrollExe + " tradeoff --out /proc/polyroll-tradeoff");
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(polyroll::test::line_count(r.out) == 1);
+    CHECK_THAT(r.out, Catch::Contains("--out /proc/polyroll-tradeoff: cannot be written"));
+    CHECK_THAT(r.out, !Catch::Contains("/sweep"));
+}

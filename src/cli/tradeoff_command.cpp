@@ -4,6 +4,8 @@
 #include <optional>
 #include <thread>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include "cli/commands.h"
@@ -54,11 +56,22 @@ std::optional<sweep::TableFile> run_study(const sweep::SweepPlan& plan, const fs
     return sweep::read_table(work / "results.csv");
 }
 
+// The --out folder made (or found) writable before anything else, so that a folder that cannot be
+// written is named as given, not as its sweep/ subfolder the study's runs go into.
+void check_out_folder(const fs::path& out) {
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec || !fs::is_directory(out) || ::access(out.c_str(), W_OK) != 0)
+        throw InputError(fmt::format("--out {}: cannot be written ({}) (allowed: a folder you can write)", out.string(),
+                                     ec ? ec.message() : std::string("not a writable folder")));
+}
+
 // The 2D cross-section against the 3D reference (sweep/cross_section.h).
 int run_cross_section(const TradeoffArgs& a) {
     const fs::path out = a.out;
     const fs::path work = a.work.empty() ? out / "sweep-dem3d" : fs::path(a.work);
     dem3d::yade_command();  // a missing Yade is refused before the 2D half of the runs, not after
+    check_out_folder(out);
     figures::figures_python();
     figures::figures_script();
     const sweep::SweepPlan plan = sweep::cross_section_plan();
@@ -83,6 +96,7 @@ int run(const TradeoffArgs& a) {
     const sweep::SweepPlan plan = sweep::tradeoff_plan();
     figures::figures_python();  // missing matplotlib fails before an hour of runs, not after
     figures::figures_script();
+    check_out_folder(out);
     const std::optional<sweep::TableFile> table = run_study(plan, work, a);
     if (!table) return kExitInterrupted;
     const sweep::TradeoffReport rep = sweep::analyse_tradeoff(plan, *table);
