@@ -45,7 +45,8 @@ private:
     std::optional<PhysicsRequests> requests_;
     std::optional<PhysicsOutcome> outcome_;
     std::exception_ptr error_;
-    bool busy_ = false, stop_ = false;
+    bool busy_ = false;
+    [[maybe_unused]] bool stop_ = false;  // the thread's end: unused by the page's inline worker (src/web/)
     std::thread thread_;  // last: started once everything it uses exists
 };
 
