@@ -15,6 +15,7 @@
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sim/scene_names.h"
+#include "sim/shell_label.h"
 
 namespace polyroll::app {
 
@@ -268,13 +269,10 @@ Model model_from(const std::string& name) {
 }
 
 std::string polygon_combo_text(const std::string& polygon, int sides) {
-    if (polygon.empty()) return {};
-    try {
-        const auto& values = assets::preset_entry(assets::Kind::polygon, polygon).at("values");
-        if (!values.contains("sides") || values["sides"].get<int>() == sides) return polygon;
-    } catch (const std::exception&) {
-        return polygon;
-    }
+    ShellParams shell;
+    shell.preset = polygon;
+    shell.sides = sides;
+    if (polygon.empty() || has_presets_sides(shell)) return polygon;
     return fmt::format("custom (n = {})", sides);
 }
 

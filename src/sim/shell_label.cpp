@@ -41,4 +41,14 @@ std::string shell_label(const Scene& scene) {
     return fmt::format("custom {}, from {}", shape, s.preset);
 }
 
+bool has_presets_sides(const ShellParams& shell) {
+    if (shell.preset.empty()) return false;
+    try {
+        const nlohmann::ordered_json preset = assets::preset_values(assets::Kind::polygon, shell.preset);
+        return !preset.contains("sides") || preset.at("sides").get<int>() == shell.sides;
+    } catch (const std::exception&) {
+        return true;
+    }
+}
+
 }  // namespace polyroll

@@ -17,4 +17,9 @@ std::string polygon_name(int sides);
 // hexagon-small" when more differs; "custom octagon (n = 8)" without a preset.
 std::string shell_label(const Scene& scene);
 
+// Whether a shell named for a polygon preset has that preset's own n (false without a preset, or
+// for another n; true for a preset the assets no longer have, whose values are all there is): the
+// window's polygon box and results.csv's polygon column say "custom" otherwise.
+bool has_presets_sides(const ShellParams& shell);
+
 }  // namespace polyroll

@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
+#include "sim/shell_label.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {
@@ -29,20 +29,8 @@ const std::vector<std::string> kResultColumns = {
     "grains_inside", "fill_mass_kg", "max_energy_gain_J", "model_valid",     "reason",
     "wall_time_s"};
 
-// The polygon preset, or "custom" when n is not the preset's own (the preset's size with another n).
-std::string polygon_cell(const ShellParams& shell) {
-    if (shell.preset.empty()) return "custom";
-    try {
-        const auto& values = assets::preset_entry(assets::Kind::polygon, shell.preset).at("values");
-        if (values.contains("sides") && values["sides"].get<int>() != shell.sides) return "custom";
-    } catch (const std::exception&) {
-        return shell.preset;
-    }
-    return shell.preset;
-}
-
 std::string scene_value(const Scene& s, const std::string& field) {
-    if (field == "shell.preset") return polygon_cell(s.shell);
+    if (field == "shell.preset") return has_presets_sides(s.shell) ? s.shell.preset : "custom";
     if (field == "shell.sides") return std::to_string(s.shell.sides);
     if (field == "fill.material.preset") return s.fill.material.preset;
     if (field == "fill.ratio") return number_cell(s.fill.ratio);
