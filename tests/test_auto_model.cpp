@@ -9,10 +9,10 @@
 
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
-#include "sim/models/reduced_models.h"
+#include "sim/reduced/reduced_models.h"
 #include "sim/results_io.h"
 #include "sim/run_snapshot.h"
-#include "sim/scene_matrices.h"
+#include "sweep/scene_matrices.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -8,8 +8,8 @@
 
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
-#include "sim/models/reduced_models.h"
-#include "sim/models/rolling_polygon.h"
+#include "sim/reduced/reduced_models.h"
+#include "sim/reduced/rolling_polygon.h"
 #include "sim/results_io.h"
 #include "test_helpers.h"
 

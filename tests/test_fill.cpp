@@ -5,9 +5,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "sim/disc_size.h"
+#include "sim/grains/disc_size.h"
 #include "sim/scene_json.h"
-#include "sim/world_builder.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

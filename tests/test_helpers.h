@@ -23,7 +23,7 @@
 #include "sim/model_registry.h"
 #include "sim/scene.h"
 #include "sim/scene_json.h"
-#include "sim/simulation.h"
+#include "sim/grains/simulation.h"
 
 namespace polyroll::test {
 

@@ -8,14 +8,14 @@
 #include <array>
 #include <cmath>
 
-#include "sim/engine_units.h"
+#include "sim/grains/engine_units.h"
 #include "sim/fidelity_preset.h"
-#include "sim/fill_plan.h"
+#include "sim/shell_outline.h"
 #include "sim/model_registry.h"
-#include "sim/models/free_body.h"
-#include "sim/models/free_body_run.h"
-#include "sim/models/reduced_run.h"
-#include "sim/models/slide_motion.h"
+#include "sim/reduced/free_body.h"
+#include "sim/reduced/free_body_run.h"
+#include "sim/reduced/reduced_run.h"
+#include "sim/reduced/slide_motion.h"
 #include "sim/shell_properties.h"
 #include "test_helpers.h"
 

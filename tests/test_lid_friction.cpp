@@ -1,11 +1,11 @@
-// The grains' friction on the lids (sim/lid_friction.h): its load, and that it only ever takes
+// The grains' friction on the lids (sim/grains/lid_friction.h): its load, and that it only ever takes
 // energy out of the fill's sliding relative to the shell while conserving momentum.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "sim/lid_friction.h"
-#include "sim/world_builder.h"
+#include "sim/grains/lid_friction.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

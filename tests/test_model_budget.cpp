@@ -8,11 +8,11 @@
 
 #include <fmt/format.h>
 
-#include "sim/disc_size.h"
+#include "sim/grains/disc_size.h"
 #include "app/model_budget.h"
 #include "app/readouts.h"
 #include "app/sandbox_physics.h"
-#include "sim/fill_plan.h"
+#include "sim/grains/fill_plan.h"
 #include "sim/scene_validate.h"
 #include "test_helpers.h"
 

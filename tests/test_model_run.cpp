@@ -10,8 +10,8 @@
 #include "sim/errors.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
-#include "sim/simulation.h"
-#include "sim/world_builder.h"
+#include "sim/grains/simulation.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -6,16 +6,16 @@
 #include <cmath>
 
 #include "sim/geometry.h"
-#include "sim/models/composite_body.h"
-#include "sim/models/reduced_models.h"
-#include "sim/models/rolling_polygon.h"
+#include "sim/reduced/composite_body.h"
+#include "sim/reduced/reduced_models.h"
+#include "sim/reduced/rolling_polygon.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
 #include "sim/shell_properties.h"
 #include "sim/model_choice.h"
 #include "sim/model_registry.h"
 #include "sim/scene_fields.h"
-#include "sim/world_builder.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

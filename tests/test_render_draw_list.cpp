@@ -15,10 +15,10 @@
 #include "render/snapshot.h"
 #include "render/ticks.h"
 #include "render/world_draw.h"
-#include "sim/disc_size.h"
+#include "sim/grains/disc_size.h"
 #include "sim/geometry.h"
-#include "sim/simulation.h"
-#include "sim/world_builder.h"
+#include "sim/grains/simulation.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sim/geometry.h"
-#include "sim/fill_plan.h"
+#include "sim/shell_outline.h"
 #include "sim/shell_properties.h"
 #include "sim/vertex_rounding.h"
 

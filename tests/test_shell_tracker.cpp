@@ -12,8 +12,8 @@
 #include "sim/dem3d/state_tracker.h"
 #include "sim/shell_properties.h"
 #include "sim/shell_tracker.h"
-#include "sim/tracker.h"
-#include "sim/world_builder.h"
+#include "sim/grains/tracker.h"
+#include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "sim/models/pivot_motion.h"
-#include "sim/models/root_finder.h"
+#include "sim/reduced/pivot_motion.h"
+#include "sim/reduced/root_finder.h"
 
 using namespace polyroll;
 

@@ -4,20 +4,16 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <unistd.h>
 
 #include <fmt/format.h>
+
+#include "process/child_process.h"
 
 namespace polyroll::app {
 
 namespace fs = std::filesystem;
 
-std::string sibling_polyroll() {
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return "polyroll";
-    return (self.parent_path() / "polyroll").string();
-}
+std::string sibling_polyroll() { return process::sibling_executable("polyroll"); }
 
 namespace {
 
@@ -79,8 +75,7 @@ int run_headless_instead(const std::string& why, const std::string& out) {
         std::fclose(f);
     }
     const std::string dir = folder.string();
-    const char* argv[] = {exe.c_str(), "render", "--out", dir.c_str(), "--force", nullptr};
-    ::execv(exe.c_str(), const_cast<char* const*>(argv));
+    process::replace_process({exe, "render", "--out", dir, "--force"});
     fmt::print(stderr, "polyroll-sandbox: could not run {}: {}\n", exe, std::strerror(errno));
     return 1;
 }

@@ -8,7 +8,7 @@
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
-#include "sim/fill_plan.h"
+#include "sim/grains/fill_plan.h"
 #include "sim/model_registry.h"
 #include "sim/scene_validate.h"
 

@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/divergence.h"
-#include "cli/parse_errors.h"
+#include "flags/parse_errors.h"
 #include "app/export_files.h"
 #include "app/headless_fallback.h"
 #include "app/lane_set.h"
@@ -643,7 +643,7 @@ int sandbox_main(int argc, char** argv) {
             {"--colour-by", "material, speed"},
             {"--coarser", levels_list}};
         fmt::print(stderr, "polyroll-sandbox: {}\n",
-                   printable_line(cli::flag_error_text(e, cli, "polyroll-sandbox", allowed)));
+                   printable_line(flags::flag_error_text(e, cli, "polyroll-sandbox", allowed)));
         return kExitBadInput;
     }
     SandboxState state;

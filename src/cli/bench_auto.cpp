@@ -13,8 +13,8 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
-#include "sim/scene_matrices.h"
-#include "sim/models/reduced_models.h"
+#include "sweep/scene_matrices.h"
+#include "sim/reduced/reduced_models.h"
 #include "sim/scene_names.h"
 #include "sim/scene_validate.h"
 

@@ -1,5 +1,5 @@
 // `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells it was adopted on
-// (scenes::auto_shells(), sim/scene_matrices.h): wall time, speed-up, hand-over and how far apart the
+// (scenes::auto_shells(), sweep/scene_matrices.h): wall time, speed-up, hand-over and how far apart the
 // two runs end, with the rigid model alone and one grain run at the reference preset as yardsticks,
 // and what the rigid model's rolling needs (faces that would hop, friction). A benchmark prints;
 // tests/test_auto_model.cpp asserts.

@@ -12,7 +12,7 @@
 #include "sim/errors.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
-#include "sim/scene_matrices.h"
+#include "sweep/scene_matrices.h"
 #include "sim/scene_validate.h"
 
 namespace polyroll::cli {

@@ -14,7 +14,7 @@
 #include "cli/commands.h"
 #include "cli/scene_options.h"
 #include "sim/assets.h"
-#include "sim/bare_engine.h"
+#include "sim/grains/bare_engine.h"
 #include "sim/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/shell_label.h"

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/assets.h"
-#include "sim/bare_engine.h"
+#include "sim/grains/bare_engine.h"
 #include "sim/scene_json.h"
 #include "sim/shell_label.h"
 

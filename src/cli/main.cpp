@@ -8,12 +8,13 @@
 #include <fmt/format.h>
 
 #include "cli/command_table.h"
-#include "cli/parse_errors.h"
+#include "flags/parse_errors.h"
 #include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
 
 int main(int argc, char** argv) {
+    using namespace polyroll;
     using namespace polyroll::cli;
     CLI::App app{"polyroll: hollow polygons partly filled with grains, rolling down an incline (2D, Box2D).\n"
                  "Units are SI (m, kg, s, m/s) and degrees."};
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", polyroll::version_text("polyroll"), "print the version, Box2D's and the build type");
     auto commands = add_all_commands(app);
     // `polyroll help run` is `polyroll run --help`.
-    std::vector<std::string> args = with_help_command(std::vector<std::string>(argv, argv + argc), app);
+    std::vector<std::string> args = flags::with_help_command(std::vector<std::string>(argv, argv + argc), app);
     // Bare `polyroll` asks what the tool does; nothing was mistyped, so it gets `polyroll --help` and exit
     // 0, as cargo, docker, kubectl and pip answer their bare names. A flag with no command is still
     // refused (exit 2): that is a mistake to name.
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // One line naming the bad flag or value, in the program's words; usage is one --help away.
         const std::vector<std::string> given(args.begin() + 1, args.end());
-        fmt::print(stderr, "polyroll: {}\n", polyroll::printable_line(parse_error_text(e, app, given)));
+        fmt::print(stderr, "polyroll: {}\n", polyroll::printable_line(flags::parse_error_text(e, app, given)));
         return kExitBadInput;
     }
     try {

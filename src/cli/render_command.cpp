@@ -4,15 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <regex>
-#include <spawn.h>
 #include <string_view>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -20,14 +16,13 @@
 #include "cli/commands.h"
 #include "cli/interrupt_cleanup.h"
 #include "cli/scene_options.h"
+#include "process/child_process.h"
 #include "render/frame_encoder.h"
 #include "render/render_sequence.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/results_io.h"
 #include "sim/scene_json.h"
-
-extern char** environ;
 
 namespace polyroll::cli {
 
@@ -77,22 +72,6 @@ Size parse_size(const std::string& text) {
     return s;
 }
 
-// The full path of an executable on PATH, or "" when there is none.
-std::string find_on_path(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    if (!path) return {};
-    std::string dirs = path;
-    size_t start = 0;
-    while (start <= dirs.size()) {
-        size_t end = dirs.find(':', start);
-        if (end == std::string::npos) end = dirs.size();
-        const fs::path candidate = fs::path(dirs.substr(start, end - start).empty() ? "." : dirs.substr(start, end - start)) / name;
-        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
-        start = end + 1;
-    }
-    return {};
-}
-
 // ffmpeg writes the video under a temporary name beside it (same extension: it names the format) that
 // is renamed into place once whole, so a killed render never leaves half a video under its name.
 fs::path video_temp_path(const std::string& video) {
@@ -122,18 +101,10 @@ std::string command_line(const std::vector<std::string>& args) {
     return line;
 }
 
-// Runs ffmpeg and waits; returns its exit status (or -1 if it could not start).
+// Runs ffmpeg and waits; returns its exit status (or -1 if it could not start or was killed).
 int run_ffmpeg(const std::vector<std::string>& args) {
-    std::vector<char*> argv;
-    argv.reserve(args.size() + 1);
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    pid_t pid = 0;
-    if (::posix_spawn(&pid, args[0].c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const process::ChildExit e = process::run_child(args);
+    return e.started && e.signal == 0 ? e.exit_code : -1;
 }
 
 std::string no_ffmpeg_message(const RenderOptions& o) {
@@ -230,7 +201,7 @@ int render(const RenderOptions& given) {
             throw InputError(fmt::format("--video {}: the folder {} does not exist (allowed: an existing folder or "
                                          "the --out folder)",
                                          o.video, parent.string()));
-        ffmpeg = find_on_path("ffmpeg");
+        ffmpeg = process::find_on_path("ffmpeg");
     }
     const Scene scene = o.scene.resolve();
     const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);

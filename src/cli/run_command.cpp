@@ -12,10 +12,10 @@
 #include "cli/interrupt_cleanup.h"
 #include "cli/scene_options.h"
 #include "sim/atomic_file.h"
-#include "sim/dem3d/yade_process.h"
 #include "sim/message_text.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
+#include "sim/run_progress.h"
 #include "sim/scene_json.h"
 #include "sim/shell_label.h"
 
@@ -139,16 +139,16 @@ int run(const RunOptions& o) {
     const CleanUpOnInterrupt on_interrupt("polyroll run", created);
     RunResult r;
     try {
-        // The 3D reference takes a minute or more: say how far it has got, on a terminal only.
-        std::optional<dem3d::Progress> previous;
-        if (scene.run.model == Model::dem3d && ::isatty(2))
-            previous = dem3d::set_progress([](double t, double x) {
-                fmt::print(stderr, "\r  3D reference (Yade): {:.2f} s simulated, {:.3f} m rolled   ", t, x);
+        // A model whose runs take minutes (the 3D reference) says how far it has got, on a terminal only.
+        std::optional<ScopedRunProgress> progress;
+        if (may_report_progress(scene) && ::isatty(2))
+            progress.emplace([&scene](double t, double x) {
+                fmt::print(stderr, "\r  {}: {:.2f} s simulated, {:.3f} m rolled   ", to_string(scene.run.model), t, x);
                 std::fflush(stderr);
             });
         r = run_scene(scene);
-        if (previous) {
-            dem3d::set_progress(*previous);
+        if (progress) {
+            progress.reset();
             fmt::print(stderr, "\r{:60}\r", "");
         }
         if (!o.out.empty()) write_run_files(o.out, r);

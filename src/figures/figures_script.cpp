@@ -5,13 +5,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <fmt/format.h>
 
-#include "sim/installed_script.h"
+#include "process/child_process.h"
+#include "process/installed_script.h"
 
 namespace polyroll::figures {
 
@@ -19,26 +16,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Runs argv (argv[0] looked up on PATH) and returns its exit status as a shell would. A probe
+// (silent) takes a program that cannot run as a failed one; the script's own run throws why.
 int spawn(const std::vector<std::string>& argv, bool silent) {
-    std::vector<char*> cargs;
-    cargs.reserve(argv.size() + 1);
-    for (const auto& a : argv) cargs.push_back(const_cast<char*>(a.c_str()));
-    cargs.push_back(nullptr);
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("cannot start a process (fork failed)");
-    if (pid == 0) {
-        if (silent) {
-            const int null = ::open("/dev/null", O_WRONLY);
-            ::dup2(null, 1);
-            ::dup2(null, 2);
-        }
-        ::execvp(cargs[0], cargs.data());
-        ::_exit(127);
-    }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    const process::ChildExit e = process::run_child(argv, {.search_path = true, .silent = silent});
+    if (!e.started && !silent) throw std::runtime_error(e.why_not);
+    return e.status();
 }
 
 }  // namespace
@@ -49,7 +32,7 @@ std::string figures_script() {
 #else
     const char* source_dir = nullptr;
 #endif
-    return installed_script({"polyroll_figures.py", "the figure script", "POLYROLL_FIGURES_DIR", "figures", source_dir});
+    return process::installed_script({"polyroll_figures.py", "the figure script", "POLYROLL_FIGURES_DIR", "figures", source_dir});
 }
 
 std::string figures_python() {

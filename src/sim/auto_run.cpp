@@ -6,7 +6,7 @@
 #include <string>
 
 #include "sim/model_registry.h"
-#include "sim/models/free_body_run.h"
+#include "sim/reduced/free_body_run.h"
 #include "sim/scene_names.h"
 
 namespace polyroll {

@@ -12,10 +12,10 @@
 #endif
 #include "sim/errors.h"
 #include "sim/model_choice.h"
-#include "sim/models/free_body_run.h"
-#include "sim/models/reduced_run.h"
+#include "sim/reduced/free_body_run.h"
+#include "sim/reduced/reduced_run.h"
 #include "sim/scene_json.h"
-#include "sim/simulation.h"
+#include "sim/grains/simulation.h"
 
 namespace polyroll {
 
@@ -100,7 +100,8 @@ const std::vector<ModelRow>& rows() {
           .everyday = false,
           .follows_curved_track = true,
           .cost = RunCost::yade_grains,
-          .auto_may_pick = false},
+          .auto_may_pick = false,
+          .reports_progress = true},
          start_dem3d, nullptr, nullptr},
     };
     return table;
@@ -167,6 +168,11 @@ std::vector<Model> models_a_run_may_use(const Scene& scene) {
     const ModelChoice c = choose_model(scene);
     if (c.then) return {c.model, *c.then};
     return {c.model};
+}
+
+bool may_report_progress(const Scene& scene) {
+    const std::vector<Model> models = models_a_run_may_use(scene);
+    return std::any_of(models.begin(), models.end(), [](Model m) { return model_traits(m).reports_progress; });
 }
 
 bool may_step_grains(const Scene& scene) {

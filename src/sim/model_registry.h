@@ -52,6 +52,8 @@ struct ModelTraits {
     // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it: the
     // rule refuses to pick a model without it.
     bool auto_may_pick = false;
+    // Its runs take minutes, so a run on a terminal says how far it has got (sim/run_progress.h).
+    bool reports_progress = false;
 };
 
 // Every model, in the order `compare` and `bench` list them: the grain simulation first, the
@@ -72,6 +74,8 @@ std::string model_help(const std::vector<Model>& models);
 // The models a run of the scene may use, in order: the one it names, or for auto the one its choice
 // starts with and the one it may hand over to.
 std::vector<Model> models_a_run_may_use(const Scene& scene);
+// Whether a run of the scene may use a model that reports its progress (ModelTraits::reports_progress).
+bool may_report_progress(const Scene& scene);
 // Whether a run of the scene may have Box2D step grains one by one in this process: it has a fill
 // and one of its models has grains in the engine (ModelTraits::engine and has_grains; not the 3D
 // reference, whose grains Yade steps). What the window's coarser grains apply to.

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/engine_units.h"
+#include "sim/grains/engine_units.h"
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
 #include "sim/scene.h"

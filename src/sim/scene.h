@@ -37,9 +37,9 @@ struct MaterialParams {
     double packing_fraction = 0.0;     // poured 3D packing: bulk density / grain density
     // Grain on the two lids (end faces), which a 2D disc never touches: a force on each grain
     // opposing its sliding relative to the shell, with the lateral pressure of the pile above it
-    // (sim/lid_friction.h). 0 leaves the term out.
+    // (sim/grains/lid_friction.h). 0 leaves the term out.
     double lid_friction = 0.0;
-    // What one 2D disc stands for (sim/disc_size.h). Unset: a column of grains through the box's
+    // What one 2D disc stands for (sim/grains/disc_size.h). Unset: a column of grains through the box's
     // depth, so a disc is the grain's size. A number k: k of the 3D fill's grains, so the discs are
     // as many as the fill's grains divided by k, sized to fit the cross-section (k = 1: one disc per
     // grain, each with a grain's mass). A material's value: how fine its 2D pile must be to flow as

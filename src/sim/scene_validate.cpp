@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/disc_size.h"
+#include "sim/grains/disc_size.h"
 #include "sim/errors.h"
 #include "sim/geometry.h"
 #include "sim/model_registry.h"

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/fill_plan.h"
+#include "sim/shell_outline.h"
 #include "sim/sample_clock.h"
 #include "sim/shell_properties.h"
 

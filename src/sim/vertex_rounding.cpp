@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sim/fill_plan.h"
+#include "sim/shell_outline.h"
 
 namespace polyroll {
 

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "sim/assets.h"
-#include "sim/scene_matrices.h"
+#include "sweep/scene_matrices.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {

@@ -11,7 +11,7 @@
 
 #include "sim/assets.h"
 #include "sim/scene_json.h"
-#include "sim/scene_matrices.h"
+#include "sweep/scene_matrices.h"
 #include "sim/shell_properties.h"
 #include "sweep/grid_values.h"
 

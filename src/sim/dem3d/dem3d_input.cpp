@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/fill_plan.h"
+#include "sim/shell_outline.h"
 #include "sim/geometry.h"
 #include "sim/scene_names.h"
 #include "sim/shell_pose.h"

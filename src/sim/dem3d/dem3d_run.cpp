@@ -17,8 +17,8 @@
 
 #include "sim/dem3d/dem3d_input.h"
 #include "sim/dem3d/yade_process.h"
-#include "sim/fill_plan.h"
-#include "sim/models/reveal.h"
+#include "sim/shell_outline.h"
+#include "sim/reduced/reveal.h"
 #include "sim/shell_properties.h"
 #include "sim/vertex_rounding.h"
 

@@ -379,7 +379,7 @@ def grow(sc, share):
 
 class LidLoad:
     """The normal force the grains put on the two lids (N, both together), measured from the contacts,
-    against what polyroll's 2D lid friction assumes for the same pile (src/sim/lid_friction.cpp):
+    against what polyroll's 2D lid friction assumes for the same pile (src/sim/grains/lid_friction.cpp):
     each grain m g (2 K h / depth), h its depth below the pile's top along gravity,
     K = 1 - sin(atan(grain friction)). Summed over sampled rows for their means."""
 

@@ -1,4 +1,4 @@
-// Measurements from a recorded stream of the shell's states: what the tracker (sim/tracker.h) measures
+// Measurements from a recorded stream of the shell's states: what the tracker (sim/grains/tracker.h) measures
 // from the Box2D world, measured by the same rules from the rows the 3D reference writes (states.csv),
 // one per tracker step. Box2D-free, so a saved output can be measured again in the tests.
 #pragma once

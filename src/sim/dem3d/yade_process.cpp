@@ -2,32 +2,25 @@
 #include "sim/dem3d/yade_process.h"
 
 #include <cctype>
-#include <chrono>
-#include <csignal>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
-#include <fcntl.h>
-#include <poll.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#include "process/child_process.h"
+#include "process/installed_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
-#include "sim/installed_script.h"
+#include "sim/run_progress.h"
 
 namespace polyroll::dem3d {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-thread_local Progress t_progress;
 
 bool executable(const fs::path& p) { return ::access(p.c_str(), X_OK) == 0 && fs::is_regular_file(p); }
 
@@ -47,12 +40,7 @@ std::string yade_command() {
         if (executable(env)) return env;
         throw InputError(fmt::format("POLYROLL_YADE={}: not an executable file (unset it to use yade from the PATH)", env));
     }
-    if (const char* path = std::getenv("PATH")) {
-        std::istringstream dirs(path);
-        std::string dir;
-        while (std::getline(dirs, dir, ':'))
-            if (!dir.empty() && executable(fs::path(dir) / "yade")) return (fs::path(dir) / "yade").string();
-    }
+    if (std::string on_path = process::find_on_path("yade"); !on_path.empty()) return on_path;
     throw InputError("--model dem3d needs Yade, which is not installed: run third_party/setup.sh (or apt-get install "
                      "yade) as root");
 }
@@ -63,7 +51,7 @@ std::string script_path() {
 #else
     const char* source_dir = nullptr;
 #endif
-    return installed_script(
+    return process::installed_script(
         {"polyroll_dem3d.py", "the 3D reference's script", "POLYROLL_DEM3D_DIR", "dem3d", source_dir});
 }
 
@@ -76,11 +64,6 @@ double timeout_s() {
         return t;
     }
     return 7200.0;
-}
-
-Progress set_progress(Progress p) {
-    std::swap(t_progress, p);
-    return p;
 }
 
 namespace {
@@ -125,86 +108,26 @@ void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
     write_file_atomic(dir / "IN.json", input.dump(2) + "\n");
     const Launch launch = launch_for(yade, script, dir);
 
-    int out_pipe[2], err_pipe[2];
-    if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0)
-        throw std::runtime_error("cannot start Yade (no pipe)");
-    std::vector<char*> cargs;
-    for (const auto& a : launch.argv) cargs.push_back(const_cast<char*>(a.c_str()));
-    cargs.push_back(nullptr);
-    const pid_t parent = ::getpid();
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error("cannot start Yade (fork failed)");
-    if (pid == 0) {
-        // Its own process group, so a Ctrl-C at the terminal reaches polyroll alone: a sweep lets its
-        // runs in flight finish (the first Ctrl-C), and polyroll decides. It dies with the thread that
-        // started it, so a Ctrl-C that stops polyroll, or a crash, never leaves Yade running.
-        ::setpgid(0, 0);
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-        if (::getppid() != parent) ::_exit(127);
-        ::dup2(out_pipe[1], 1);
-        ::dup2(err_pipe[1], 2);
-        const int null = ::open("/dev/null", O_RDONLY);
-        if (null >= 0) ::dup2(null, 0);
-        ::setenv("OMP_NUM_THREADS", "1", 1);  // one thread: a seed gives the same run twice
-        if (!launch.yade_py.empty()) ::setenv("POLYROLL_YADE_PY", launch.yade_py.c_str(), 1);
-        ::execv(cargs[0], cargs.data());
-        ::_exit(127);
-    }
-    ::close(out_pipe[1]);
-    ::close(err_pipe[1]);
-
-    std::string out_buf, err_text;
-    const auto start = std::chrono::steady_clock::now();
-    bool timed_out = false;
-    pollfd fds[2] = {{out_pipe[0], POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
-    int open_fds = 2;
-    while (open_fds > 0) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (elapsed > limit_s) {
-            timed_out = true;
-            ::kill(pid, SIGKILL);
-            break;
-        }
-        if (::poll(fds, 2, 1000) < 0) continue;  // interrupted by a signal: look again
-        char buf[4096];
-        for (int k = 0; k < 2; ++k) {
-            if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-            const ssize_t got = ::read(fds[k].fd, buf, sizeof buf);
-            if (got <= 0) {
-                ::close(fds[k].fd);
-                fds[k].fd = -1;
-                --open_fds;
-                continue;
-            }
-            if (k == 1) {
-                err_text.append(buf, static_cast<size_t>(got));
-                if (err_text.size() > 65536) err_text = err_text.substr(err_text.size() - 16384);
-                continue;
-            }
-            out_buf.append(buf, static_cast<size_t>(got));
-            size_t nl;
-            while ((nl = out_buf.find('\n')) != std::string::npos) {
-                const std::string line = out_buf.substr(0, nl);
-                out_buf.erase(0, nl + 1);
-                double t = 0.0, x = 0.0;
-                // Anything but "progress <t> <x>" is Yade's own chatter.
-                if (t_progress && std::sscanf(line.c_str(), "progress %lf %lf", &t, &x) == 2) t_progress(t, x);
-            }
-        }
-    }
-    for (pollfd& f : fds)
-        if (f.fd >= 0) ::close(f.fd);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-    }
-    if (timed_out)
+    process::ChildOptions options{.own_process_group = true, .dies_with_parent = true};
+    options.environment = {{"OMP_NUM_THREADS", "1"}};  // one thread: a seed gives the same run twice
+    if (!launch.yade_py.empty()) options.environment.emplace_back("POLYROLL_YADE_PY", launch.yade_py);
+    options.time_limit_s = limit_s;
+    options.keep_stderr = true;
+    // Anything but "progress <t> <x>" on stdout is Yade's own chatter.
+    options.on_output_line = [](const std::string& line) {
+        double t = 0.0, x = 0.0;
+        if (std::sscanf(line.c_str(), "progress %lf %lf", &t, &x) == 2) report_run_progress(t, x);
+    };
+    const process::ChildExit e = process::run_child(launch.argv, options);
+    if (!e.started) throw std::runtime_error("cannot start Yade: " + e.why_not);
+    const std::string& err_text = e.stderr_tail;
+    if (e.timed_out)
         throw std::runtime_error(fmt::format("the 3D reference took longer than {:.0f} s and was stopped (set "
                                              "POLYROLL_DEM3D_TIMEOUT_S for more)", limit_s));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    if (!e.succeeded()) {
         const std::string why = last_line(err_text);
-        const std::string how = WIFEXITED(status) ? fmt::format("exit {}", WEXITSTATUS(status))
-                                                  : fmt::format("signal {}", WTERMSIG(status));
-        if (WIFEXITED(status) && WEXITSTATUS(status) == 2) throw InputError("the 3D reference refused the scene: " + why);
+        const std::string how = e.how_it_ended();
+        if (e.exit_code == 2) throw InputError("the 3D reference refused the scene: " + why);
         throw std::runtime_error(fmt::format("the 3D reference (Yade) failed ({}): {}", how,
                                              why.empty() ? tail(err_text, 400) : why));
     }

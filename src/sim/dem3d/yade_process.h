@@ -5,7 +5,6 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -22,15 +21,9 @@ std::string script_path();
 // else 2 hours (a whole-ramp run of the octagon takes about two minutes).
 double timeout_s();
 
-// Called with the simulated time and the distance rolled, about every quarter simulated second.
-using Progress = std::function<void(double time_s, double distance_m)>;
-
-// Where progress goes for runs started on this thread (none by default: sweeps run many at once).
-// Returns the previous one.
-Progress set_progress(Progress p);
-
 // Writes `input` as IN.json into `dir` (an existing folder) and runs the script on it there.
 // Throws std::runtime_error with Yade's last words if it fails or times out.
+// Yade's progress lines go to this thread's run progress hook (sim/run_progress.h).
 void run_script(const nlohmann::ordered_json& input, const std::filesystem::path& dir);
 
 }  // namespace polyroll::dem3d

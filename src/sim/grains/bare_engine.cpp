@@ -1,0 +1,49 @@
+// Bare engine stepping for the benchmark: see bare_engine.h.
+#include "sim/grains/bare_engine.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "sim/grains/world_builder.h"
+
+namespace polyroll {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+double time_bare_engine_s(const Scene& scene, long steps) {
+    std::unique_ptr<SimWorld> bare = build_world(scene);
+    const auto start = Clock::now();
+    for (long i = 0; i < steps; ++i) bare->step();
+    return seconds_since(start);
+}
+
+EngineLoad measure_engine_load(const Scene& scene, long steps) {
+    std::unique_ptr<SimWorld> w = build_world(scene);
+    EngineLoad load;
+    load.grains = static_cast<int>(w->grains.size());
+    // Counting walks every contact: sampled every 100th step, outside the timed stretches.
+    constexpr long kSampleEvery = 100;
+    long samples = 0, contacts = 0, touching = 0;
+    for (long done = 0; done < steps;) {
+        const long stretch = std::min(kSampleEvery, steps - done);
+        const auto start = Clock::now();
+        for (long i = 0; i < stretch; ++i) w->step();
+        load.wall_s += seconds_since(start);
+        done += stretch;
+        for (const b2Contact* c = w->world->GetContactList(); c != nullptr; c = c->GetNext()) {
+            ++contacts;
+            if (c->IsTouching()) ++touching;
+        }
+        ++samples;
+    }
+    if (samples > 0 && load.grains > 0) {
+        load.contacts_per_grain = static_cast<double>(contacts) / static_cast<double>(samples * load.grains);
+        load.touching_per_grain = static_cast<double>(touching) / static_cast<double>(samples * load.grains);
+    }
+    return load;
+}
+
+}  // namespace polyroll

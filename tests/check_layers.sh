@@ -1,0 +1,34 @@
+#!/bin/sh
+# Checks that every #include of the project's own headers follows the layers docs/design.md draws:
+# a folder includes only itself and the folders below it. The window (src/app/) never includes the
+# command line (src/cli/); the simulation (src/sim/ and its model wings) includes nothing above it.
+# Usage: check_layers.sh SOURCE_DIR
+set -eu
+src=$1/src
+[ -d "$src" ] || { echo "check_layers: no src/ under $1" >&2; exit 1; }
+failed=0
+# folder: the top-level folders under src/ its files may include
+check() {
+    folder=$1
+    allowed=$2
+    for file in $(find "$src/$folder" -name '*.cpp' -o -name '*.h'); do
+        for target in $(sed -n 's/^#include "\([a-z0-9_]*\)\/.*/\1/p' "$file" | sort -u); do
+            case " $allowed " in
+                *" $target "*) ;;
+                *) echo "check_layers: ${file#"$1"/} includes $target/, above its layer (allowed: $allowed)" >&2
+                   failed=1 ;;
+            esac
+        done
+    done
+}
+check process "process"
+check flags "flags sim"
+check sim "sim process"
+check sweep "sweep sim process"
+check render "render sim"
+check figures "figures sim process"
+check app "app render sim flags process"
+check web "web app render sim flags process"
+check cli "cli sweep render figures sim flags process"
+[ "$failed" -eq 0 ] || exit 1
+echo "check_layers: every include of src/ follows the layers"

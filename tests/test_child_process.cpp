@@ -1,0 +1,68 @@
+// Starting other programs (process/child_process.h): how a child ended, what it said, its limits.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "process/child_process.h"
+
+using namespace polyroll::process;
+
+TEST_CASE("run_child: the exit status and the lines a child writes") {
+    std::vector<std::string> lines;
+    ChildOptions o;
+    o.on_output_line = [&](const std::string& line) { lines.push_back(line); };
+    o.keep_stderr = true;
+    const ChildExit e = run_child({"/bin/sh", "-c", "echo one; echo two; echo said >&2; exit 3"}, o);
+    CHECK(e.started);
+    CHECK_FALSE(e.succeeded());
+    CHECK(e.exit_code == 3);
+    CHECK(e.status() == 3);
+    CHECK(e.how_it_ended() == "exit 3");
+    CHECK(lines == std::vector<std::string>{"one", "two"});
+    CHECK(e.stderr_tail == "said\n");
+}
+
+TEST_CASE("run_child: a program that cannot be executed is told apart from one that fails") {
+    const ChildExit missing = run_child({"/nonexistent/polyroll-no-such-program"});
+    CHECK_FALSE(missing.started);
+    CHECK(missing.status() == 127);
+    CHECK(missing.why_not.find("/nonexistent/polyroll-no-such-program") != std::string::npos);
+    CHECK(missing.why_not.find("No such file") != std::string::npos);
+    // A bare name is looked up on PATH only when asked.
+    CHECK_FALSE(run_child({"sh", "-c", "exit 0"}).started);
+    CHECK(run_child({"sh", "-c", "exit 0"}, {.search_path = true}).succeeded());
+}
+
+TEST_CASE("run_child: the environment it is given and stdin closed") {
+    std::vector<std::string> lines;
+    ChildOptions o;
+    o.environment = {{"POLYROLL_CHILD_TEST", "42"}, {"HOME", "/child-home"}};
+    o.on_output_line = [&](const std::string& line) { lines.push_back(line); };
+    // `read` on /dev/null fails at once: a child never waits on polyroll's terminal.
+    const ChildExit e =
+        run_child({"/bin/sh", "-c", "echo $POLYROLL_CHILD_TEST $HOME; if read x; then echo read; else echo eof; fi"}, o);
+    REQUIRE(e.succeeded());
+    CHECK(lines == std::vector<std::string>{"42 /child-home", "eof"});
+}
+
+TEST_CASE("run_child: a child past its time limit is killed, with or without output to read") {
+    ChildOptions reading;
+    reading.time_limit_s = 0.3;
+    reading.keep_stderr = true;
+    const ChildExit a = run_child({"/bin/sh", "-c", "exec sleep 30"}, reading);
+    CHECK(a.started);
+    CHECK(a.timed_out);
+    CHECK_FALSE(a.succeeded());
+    const ChildExit b = run_child({"/bin/sh", "-c", "exec sleep 30"}, {.time_limit_s = 0.3});
+    CHECK(b.timed_out);
+    CHECK(b.how_it_ended() == "stopped at its time limit");
+}
+
+TEST_CASE("find_on_path and sibling_executable") {
+    CHECK(find_on_path("sh").find("/sh") != std::string::npos);
+    CHECK(find_on_path("polyroll-no-such-program").empty());
+    const std::string sibling = sibling_executable("polyroll");
+    CHECK(sibling.size() > std::string("/polyroll").size());
+    CHECK(sibling.substr(sibling.size() - 9) == "/polyroll");
+}
