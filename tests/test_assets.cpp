@@ -52,7 +52,7 @@ TEST_CASE("every default of the default scene has a source", "[assets]") {
     }
 }
 
-TEST_CASE("the default scene is the issue's: small hexagon, BBs, r = 0.25, air track, 20 degrees", "[assets]") {
+TEST_CASE("the default scene is Fig. 7's: small hexagon, BBs, r = 0.25, air track, 20 degrees", "[assets]") {
     const Scene s = resolve_scene({});
     CHECK(s.shell.preset == "hexagon-small");
     CHECK(s.shell.sides == 6);

@@ -1,7 +1,7 @@
 // `--model auto`: the registry's rule, a filled shell computed exactly as
 // the grain model computes it, and an empty shell run by the rigid model, then from lift-off by the
 // free rigid body, then (only where that meets a contact it does not model) by Box2D, the records
-// carrying on across each hand-over; measured against the grain model on the issue's empty scenes.
+// carrying on across each hand-over; measured against the grain model on the empty shells `bench --auto` times.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -222,8 +222,8 @@ TEST_CASE("auto on an empty shell that never lifts off is the rigid model throug
     CHECK(!summary_json(a).contains("engine"));
 }
 
-// The measure auto was adopted on, for the empty shells `bench --auto` times: the same behaviour as the grain model everywhere.
-TEST_CASE("auto on the issue's empty shells behaves as the grain model does", "[models][auto]") {
+// auto's measure on the empty shells `bench --auto` times: the same behaviour as the grain model everywhere.
+TEST_CASE("auto on the empty shells of bench --auto behaves as the grain model does", "[models][auto]") {
     for (const auto& [sides, angle] : scenes::auto_shells()) {
         INFO("n = " << sides << " at " << angle << " deg");
         const Scene s = empty_scene(sides, angle);

@@ -123,8 +123,8 @@ TEST_CASE("run prints lines a terminal shows whole and says what its terminal ve
 }
 
 TEST_CASE("bench --auto refuses a --tilt one of its 16 shells cannot take before it runs any", "[cli][bad-input]") {
-    // 25 deg fits the hexagon (its bench rows used to print) but not the octagon on the 5 degree
-    // ramp: the table used to stop half-way there.
+    // 25 deg fits the hexagon but not the octagon on the 5 degree ramp: the refusal comes before the
+    // first row, so no table stops half-way.
     const Result r = run_polyroll("bench --auto --tilt 25 --no-render");
     INFO(r.out);
     CHECK(r.exit_code == 2);

@@ -612,11 +612,6 @@ int sandbox_main(int argc, char** argv) {
     cli.add_option("--layout-report", o.layout_report,
                    "with --frames: write the last frame's layout (the panels' boxes and what they hold, the ramps' "
                    "start, the lanes' badges) as JSON, for the layout tests");
-    // The scenes are always stepped as asked now; the flag stays so that older command lines still run.
-    bool full_detail_ignored = false;
-    cli.add_flag("--full-detail", full_detail_ignored,
-                 "the default: the scene is always stepped exactly as asked, slower than real time where this "
-                 "computer cannot keep up (kept for older command lines)");
     cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
     cli.add_option("--theme", o.theme,
                    "panel colours: projector (default; dark text on pale panels, strong borders) or dark (ImGui's)");

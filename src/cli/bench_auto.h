@@ -1,4 +1,4 @@
-// `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells it was adopted on
+// `polyroll bench --auto`: `--model auto` against `--model grains` on the empty shells it is measured on
 // (scenes::auto_shells(), sweep/scene_matrices.h): wall time, speed-up, hand-over and how far apart the
 // two runs end, with the rigid model alone and one grain run at the reference preset as yardsticks,
 // and what the rigid model's rolling needs (faces that would hop, friction). A benchmark prints;

@@ -10,7 +10,7 @@
 
 namespace polyroll::scenes {
 
-// The empty shells `--model auto` was adopted on: these side counts on ramps at these angles
+// The empty shells on which `--model auto` is measured against the grain model: these side counts on ramps at these angles
 // (`polyroll bench --auto` times them; the auto tests check them).
 inline constexpr std::array<int, 4> kAutoShellSides{6, 8, 10, 18};
 inline constexpr std::array<double, 4> kAutoShellAnglesDeg{5.0, 10.0, 20.0, 30.0};
