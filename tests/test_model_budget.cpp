@@ -23,12 +23,15 @@ using json = nlohmann::ordered_json;
 namespace {
 
 // The asset's levels and errors, with a chosen cost and share.
-BudgetFigures figures(double cost_per_grain_step) {
+BudgetFigures figures(double s_per_cost_unit) {
     BudgetFigures f = budget_figures();
-    f.physics_s_per_grain_step = cost_per_grain_step;
+    f.cost.engine_step_s = s_per_cost_unit;
     f.physics_share = 0.7;
-    f.packing = 0.9;
-    f.cost_exponent = 1.0;  // linear, so the thresholds below are plain sums
+    f.cost.packing = 0.9;
+    // Linear at the scenes' own 15 iterations, so a lane of G grains costs G + 1 units a step and the
+    // thresholds below are plain sums.
+    f.cost.engine_exponent = 1.0;
+    f.cost.engine_reference_iterations = 15.0;
     return f;
 }
 
@@ -56,7 +59,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a reduced model or an empty shell fits any budget") {
         const BudgetFigures f = figures(3e-6);
         for (const Scene& s : {test::with_model(big_rice(), Model::rigid), test::scene_with({{"fill", {{"ratio", 0.0}}}})}) {
-            const BudgetChoice c = offered_level({s}, f, f.physics_s_per_grain_step, false);
+            const BudgetChoice c = offered_level({s}, f, f.cost.engine_step_s, false);
             CHECK(!c.reduced());
             CHECK(c.fits);
             CHECK(apply_choice({s}, f, c)[0].fill.material.diameter_m == s.fill.material.diameter_m);
@@ -65,7 +68,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     SECTION("a full shell under auto steps no grains until it is handed over, and the panel says so") {
         const BudgetFigures f = figures(0.7 / (grains * 1000.0) * 4.0);  // the grains four times too slow
         const Scene full_auto = test::with_model(big_rice(), Model::automatic);
-        const BudgetChoice c = offered_level({full_auto}, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = offered_level({full_auto}, f, f.cost.engine_step_s, false);
         CHECK(!c.reduced());  // nothing offered: nothing is stepped grain by grain
         CHECK(c.fits);
         CHECK(c.grains_asked == 0.0);
@@ -80,14 +83,14 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
         const Scene half = test::with_model(
             test::scene_with({{"shell", "hexagon-small"}, {"fill", {{"ratio", 0.5}, {"material", "bb"}}}}),
             Model::automatic);
-        const BudgetChoice race = offered_level({full_auto, half}, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice race = offered_level({full_auto, half}, f, f.cost.engine_step_s, false);
         CHECK(race.grains_asked == Approx(0.9 * estimated_grain_count(half)));
         CHECK(race.grains_on_hand_over == Approx(grains));
     }
     SECTION("a machine fast enough keeps the big scene as asked") {
         // 0.7 s of physics per simulated second buys 0.7 / 1e-7 grain steps: 7,000 grains at 1,000 steps/s.
         const BudgetFigures f = figures(1e-7);
-        const BudgetChoice c = offered_level(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = offered_level(big, f, f.cost.engine_step_s, false);
         CHECK(!c.reduced());
         CHECK(c.fits);
     }
@@ -122,25 +125,25 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
     }
     SECTION("beyond every level: the cheapest, saying it still does not keep up") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = offered_level(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = offered_level(big, f, f.cost.engine_step_s, false);
         CHECK(c.level == static_cast<int>(f.levels.size()) - 1);
         CHECK(!c.fits);
-        const BudgetChoice asked = picked_level(big, f, -1, f.physics_s_per_grain_step, false);
+        const BudgetChoice asked = picked_level(big, f, -1, f.cost.engine_step_s, false);
         CHECK_THAT(budget_statement(asked, c, f), Catch::Contains("comes closer to real time"));
     }
     SECTION("the scene as asked stays as asked however slow, saying it plays slower") {
         const BudgetFigures f = figures(1e-3);
-        const BudgetChoice c = picked_level(big, f, -1, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = picked_level(big, f, -1, f.cost.engine_step_s, false);
         CHECK(!c.reduced());
         CHECK(!c.fits);
         CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m == big[0].fill.material.diameter_m);
-        const BudgetChoice offer = offered_level(big, f, f.physics_s_per_grain_step, false);
+        const BudgetChoice offer = offered_level(big, f, f.cost.engine_step_s, false);
         CHECK_THAT(budget_statement(c, offer, f),
                    Catch::Contains("costs more than real time") && Catch::Contains("never differently"));
     }
     SECTION("a level is only ever the one picked, and its key names it on the command line") {
         const BudgetFigures f = figures(1e-9);  // a fast machine: the scene fits as asked
-        const BudgetChoice c = picked_level(big, f, 1, f.physics_s_per_grain_step, false);
+        const BudgetChoice c = picked_level(big, f, 1, f.cost.engine_step_s, false);
         CHECK(c.level == 1);
         CHECK(apply_choice(big, f, c)[0].fill.material.diameter_m ==
               Approx(f.levels[1].grain_scale * big[0].fill.material.diameter_m));
@@ -148,7 +151,7 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
         for (size_t i = 0; i < f.levels.size(); ++i) CHECK(level_from_key(level_key(f.levels[i]), f) == static_cast<int>(i));
         CHECK(level_key(f.levels.back()) == "2x-draft");
         CHECK_THROWS_WITH(level_from_key("3x", f), Catch::Contains("--coarser 3x") && Catch::Contains("allowed: none, 1.5x"));
-        CHECK_THROWS(picked_level(big, f, 99, f.physics_s_per_grain_step, false));
+        CHECK_THROWS(picked_level(big, f, 99, f.cost.engine_step_s, false));
     }
 }
 
@@ -173,15 +176,15 @@ TEST_CASE("coarser grains keep the fill's mass and level in fewer grains", "[app
 
 TEST_CASE("the panel names what the budget offers and what it costs", "[app][budget]") {
     const BudgetFigures f = figures(0.7 / (900 * 1000.0) * 6.0);
-    const BudgetChoice c = offered_level({big_rice()}, f, f.physics_s_per_grain_step, false);
+    const BudgetChoice c = offered_level({big_rice()}, f, f.cost.engine_step_s, false);
     REQUIRE(c.reduced());
     const BudgetLevel& l = f.levels.at(static_cast<size_t>(c.level));
-    const BudgetChoice asked = picked_level({big_rice()}, f, -1, f.physics_s_per_grain_step, false);
+    const BudgetChoice asked = picked_level({big_rice()}, f, -1, f.cost.engine_step_s, false);
     const std::string said = budget_statement(asked, c, f);
     CHECK_THAT(said, Catch::Contains("Offered: " + level_label(l)) && Catch::Contains("keeps real time") &&
                          Catch::Contains("same fill mass") && Catch::Contains("trade study"));
     // Picked, the same level says it was picked and what it costs.
-    const BudgetChoice picked = picked_level({big_rice()}, f, c.level, f.physics_s_per_grain_step, false);
+    const BudgetChoice picked = picked_level({big_rice()}, f, c.level, f.cost.engine_step_s, false);
     CHECK_THAT(budget_statement(picked, c, f), Catch::Contains("as picked") && Catch::Contains(level_label(l)) &&
                                                    Catch::Contains(fmt::format("{:.1f}%", 100 * l.terminal_velocity_error)));
     // The level's measured error, as a percentage, and the full detail's beside it.
@@ -202,11 +205,20 @@ TEST_CASE("the panel names what the budget offers and what it costs", "[app][bud
     CHECK_THAT(budget_status(l), Catch::Contains(level_label(l)) && Catch::Contains("picked in the panel"));
     CHECK(level_label({2.0, "draft", 0, 0, 0, ""}) == "grains 2x larger, draft step");
     CHECK(level_label({1.5, "", 0, 0, 0, ""}) == "grains 1.5x larger");
-    // A pile costs more per grain than loose grains: the grain steps grow faster than the grains.
-    CHECK(grain_steps_per_engine_step(0, 1.84) == Approx(1.0));
-    CHECK(grain_steps_per_engine_step(1008, 1.0) == Approx(1009.0));
-    CHECK(grain_steps_per_engine_step(1008, 1.84) / grain_steps_per_engine_step(251, 1.84) ==
-          Approx(std::pow(1009.0 / 252.0, 1.84)));
+    // A pile costs more per grain than loose grains: the cost units grow faster than the grains, and
+    // with the solver's iterations.
+    const FidelityParams standard{"standard", 1000.0, 1, 12, 3};
+    RunCostFigures linear = f.cost;
+    linear.engine_exponent = 1.0;
+    linear.engine_reference_iterations = 15.0;
+    RunCostFigures pile = linear;
+    pile.engine_exponent = 1.46;
+    CHECK(engine_step_units(0, standard, pile) == Approx(1.0));
+    CHECK(engine_step_units(1008, standard, linear) == Approx(1009.0));
+    CHECK(engine_step_units(1008, standard, pile) / engine_step_units(251, standard, pile) ==
+          Approx(std::pow(1009.0 / 252.0, 1.46)));
+    const FidelityParams more_iterations{"", 1000.0, 1, 24, 6};
+    CHECK(engine_step_units(1008, more_iterations, pile) == Approx(2.0 * engine_step_units(1008, standard, pile)));
     const BudgetChoice fast = picked_level({big_rice()}, figures(1e-9), -1, 1e-9, false);
     CHECK_THAT(budget_statement(fast, fast, f), Catch::Contains("as asked") && Catch::Contains("keeps real time"));
 }
@@ -216,7 +228,7 @@ TEST_CASE("the sandbox's physics builds the model picked and never another", "[a
     // yet quicker to build than full.
     const Scene asked = test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", 0.6}, {"material", "rice"}}}});
     const BudgetFigures& f = budget_figures();
-    REQUIRE(estimated_cost_s({asked}, f.physics_s_per_grain_step, f) > f.physics_share);
+    REQUIRE(estimated_cost_s({asked}, f.cost.engine_step_s, f) > f.physics_share);
     SandboxPhysics physics(true, [] { return 0.0; });  // a capture: the asset's cost, no measuring
     auto build = [&](int level) {
         PhysicsRequests r;
@@ -266,7 +278,7 @@ TEST_CASE("a slow measured cost slows the playback and never changes the scene s
         simulated = out.time_s;
     }
     // The cost this window measured is far above the asset's: the offer is a cheaper level...
-    CHECK(physics.measured_cost_per_grain_step() > budget_figures().physics_s_per_grain_step);
+    CHECK(physics.measured_s_per_cost_unit() > budget_figures().cost.engine_step_s);
     CHECK(physics.budget_offer().reduced());
     CHECK(physics.budget_offer().measured);
     // ... but the lane is the scene as asked, from t = 0 on, played slower than real time.

@@ -9,6 +9,7 @@
 #include "app/divergence.h"
 #include "app/model_budget.h"
 #include "sim/model_registry.h"
+#include "sim/run_cost.h"
 
 namespace polyroll::app {
 
@@ -61,8 +62,7 @@ AdvanceResult LaneSet::advance_to(double target_s, double budget_s, const std::f
             if (lane->finished() || lane->time_s() + 0.5 * lane->step_s() > target_s) continue;
             lane->step();
             ++r.steps;
-            r.grain_steps += grain_steps_per_engine_step(lane->grains(), budget_figures().cost_exponent) *
-                             lane->scene().fidelity.substeps;
+            r.cost_units += engine_step_units(lane->grains(), lane->scene().fidelity) * lane->scene().fidelity.substeps;
             any = true;
         }
         if (any && now_s() - start >= budget_s) {

@@ -22,9 +22,9 @@ struct AdvanceResult {
     long steps = 0;
     bool budget_hit = false;
     double reached_s = 0.0;  // the slowest unfinished lane's time (or the latest, once all ended)
-    // The work done, in grain steps (model_budget.h: (grains + 1)^exponent per engine step), summed
-    // over the steps taken. The physics budget measures its cost per grain step from it.
-    double grain_steps = 0.0;
+    // The work done, in cost units (sim/run_cost.h: engine_step_units per engine step), summed over
+    // the steps taken. The physics budget measures its seconds per cost unit from it.
+    double cost_units = 0.0;
 };
 
 class LaneSet {

@@ -31,31 +31,13 @@ BudgetFigures load_figures() {
     const auto& j = assets::file("sandbox-budget.json");
     BudgetFigures f;
     const auto& v = j.at("values");
-    f.physics_s_per_grain_step = v.at("physics_s_per_grain_step").get<double>();
+    f.cost = run_cost_figures();
     f.physics_share = v.at("physics_share").get<double>();
-    f.packing = v.at("packing").get<double>();
-    f.cost_exponent = v.at("cost_exponent").get<double>();
     f.full_detail = level_from(j.at("full_detail"));
     for (const auto& l : j.at("levels")) f.levels.push_back(level_from(l));
-    if (!(f.physics_s_per_grain_step > 0) || !(f.physics_share > 0) || !(f.packing > 0) ||
-        !(f.cost_exponent >= 1.0 && f.cost_exponent <= 3.0) || f.levels.empty())
-        throw InputError("assets/sandbox-budget.json: values.physics_s_per_grain_step, physics_share and packing must "
-                         "be positive, cost_exponent 1 to 3 and levels not empty");
+    if (!(f.physics_share > 0) || f.levels.empty())
+        throw InputError("assets/sandbox-budget.json: values.physics_share must be positive and levels not empty");
     return f;
-}
-
-// Engine steps per simulated second.
-double engine_hz(const Scene& s) { return s.fidelity.step_hz * s.fidelity.substeps; }
-
-// The grains a lane steps: none for a model without grains or an empty shell; for auto, those of the
-// model it starts with (a full shell is one rigid body until a hand-over).
-double grains_of(const Scene& s, double packing) {
-    return steps_grains_from_start(s) ? packing * estimated_grain_count(s) : 0.0;
-}
-
-// The grains a lane steps only once auto hands it over to the grains.
-double grains_after_hand_over(const Scene& s, double packing) {
-    return may_step_grains(s) && !steps_grains_from_start(s) ? packing * estimated_grain_count(s) : 0.0;
 }
 
 // A level only coarsens: a scene already at a coarser step than the level's keeps its own.
@@ -64,7 +46,7 @@ Scene apply_level(const Scene& scene, const BudgetLevel& l) {
     Scene s = with_coarser_grains(scene, l.grain_scale);
     if (!l.fidelity.empty()) {
         const Scene coarser = at_fidelity_preset(s, l.fidelity);
-        if (engine_hz(coarser) < engine_hz(s)) s = coarser;
+        if (engine_steps_per_s(coarser.fidelity) < engine_steps_per_s(s.fidelity)) s = coarser;
     }
     return s;
 }
@@ -84,14 +66,18 @@ const BudgetFigures& budget_figures() {
     return f;
 }
 
-double grain_steps_per_engine_step(double grains, double cost_exponent) {
-    return std::pow(grains + 1.0, cost_exponent);
+namespace {
+
+// One simulated second of a lane of `grains` grains, in seconds.
+double lane_cost_s(const Scene& s, double grains, double s_per_cost_unit, const BudgetFigures& f) {
+    return engine_step_units(grains, s.fidelity, f.cost) * engine_steps_per_s(s.fidelity) * s_per_cost_unit;
 }
 
-double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f) {
+}  // namespace
+
+double estimated_cost_s(const std::vector<Scene>& scenes, double s_per_cost_unit, const BudgetFigures& f) {
     double cost = 0.0;
-    for (const Scene& s : scenes)
-        cost += grain_steps_per_engine_step(grains_of(s, f.packing), f.cost_exponent) * engine_hz(s) * cost_per_grain_step;
+    for (const Scene& s : scenes) cost += lane_cost_s(s, engine_grains(s, f.cost), s_per_cost_unit, f);
     return cost;
 }
 
@@ -99,26 +85,25 @@ namespace {
 
 // The estimate of the lanes with `level` applied (-1: as asked); throws InputError for grains too
 // large for a shell.
-BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, int level, double cost_per_grain_step,
+BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, int level, double s_per_cost_unit,
                       bool measured) {
     BudgetChoice c;
-    c.cost_per_grain_step = cost_per_grain_step;
+    c.s_per_cost_unit = s_per_cost_unit;
     c.measured = measured;
-    for (const Scene& s : scenes) c.grains_asked += grains_of(s, f.packing);
-    c.cost_asked = estimated_cost_s(scenes, cost_per_grain_step, f);
+    for (const Scene& s : scenes) c.grains_asked += engine_grains(s, f.cost);
+    c.cost_asked = estimated_cost_s(scenes, s_per_cost_unit, f);
     c.level = level;
     const std::vector<Scene> stepped = apply_choice(scenes, f, c);
     if (c.reduced())
         for (const Scene& s : stepped) validate_scene(s);
-    for (const Scene& s : stepped) c.grains_chosen += grains_of(s, f.packing);
-    c.cost_chosen = estimated_cost_s(stepped, cost_per_grain_step, f);
+    for (const Scene& s : stepped) c.grains_chosen += engine_grains(s, f.cost);
+    c.cost_chosen = estimated_cost_s(stepped, s_per_cost_unit, f);
     c.fits = c.cost_chosen <= f.physics_share;
     double cost_after = 0.0;
     for (const Scene& s : stepped) {
-        const double later = grains_after_hand_over(s, f.packing);
+        const double later = engine_grains_after_hand_over(s, f.cost);
         c.grains_on_hand_over += later;
-        cost_after += grain_steps_per_engine_step(later > 0 ? later : grains_of(s, f.packing), f.cost_exponent) *
-                      engine_hz(s) * cost_per_grain_step;
+        cost_after += lane_cost_s(s, later > 0 ? later : engine_grains(s, f.cost), s_per_cost_unit, f);
     }
     c.fits_after_hand_over = cost_after <= f.physics_share;
     return c;
@@ -126,13 +111,13 @@ BudgetChoice estimate(const std::vector<Scene>& scenes, const BudgetFigures& f, 
 
 }  // namespace
 
-BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures& f, double cost_per_grain_step,
+BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures& f, double s_per_cost_unit,
                            bool measured) {
-    BudgetChoice c = estimate(scenes, f, -1, cost_per_grain_step, measured);
+    BudgetChoice c = estimate(scenes, f, -1, s_per_cost_unit, measured);
     if (c.fits) return c;
     for (size_t i = 0; i < f.levels.size(); ++i) {
         try {
-            c = estimate(scenes, f, static_cast<int>(i), cost_per_grain_step, measured);
+            c = estimate(scenes, f, static_cast<int>(i), s_per_cost_unit, measured);
         } catch (const InputError&) {
             continue;  // grains this large do not fit this shell: the next level cannot either
         }
@@ -142,10 +127,10 @@ BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures
 }
 
 BudgetChoice picked_level(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
-                          double cost_per_grain_step, bool measured) {
+                          double s_per_cost_unit, bool measured) {
     if (level < -1 || level >= static_cast<int>(f.levels.size()))
         throw InputError(fmt::format("model level {}: out of range (allowed: -1 to {})", level, f.levels.size() - 1));
-    return estimate(scenes, f, level, cost_per_grain_step, measured);
+    return estimate(scenes, f, level, s_per_cost_unit, measured);
 }
 
 std::string level_key(const BudgetLevel& level) {

@@ -3,15 +3,17 @@
 // trade study measured them) would keep real time. The window never applies that model by itself:
 // the same scene gives the same run on any machine, a slow one only plays it slower. The budget
 // offers the cheaper model in the panel, with its measured errors, and the user picks it or not.
-// The figures (the machine's cost per grain step, the share of a frame the physics may take, and
-// each level's measured error) are in assets/sandbox-budget.json; the cost per grain step is
-// replaced by what the window measures once it has stepped a scene (it changes the offer only).
+// The cost of a lane is the one cost model's (sim/run_cost.h, assets/run-cost.json); the share of a
+// frame the physics may take and each level's measured error are in assets/sandbox-budget.json. The
+// cost model's seconds per cost unit are replaced by what the window measures once it has stepped a
+// scene (it changes the offer only).
 // Plain data and functions: no GLFW, ImGui or threads.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "sim/run_cost.h"
 #include "sim/scene.h"
 
 namespace polyroll::app {
@@ -28,13 +30,10 @@ struct BudgetLevel {
 };
 
 struct BudgetFigures {
-    // Wall seconds per grain step beside the drawing, where a lane of G grains does (G + 1)^cost_exponent
-    // grain steps per engine step (the +1 is the shell): a big pile costs more per grain than a few
-    // loose grains (more contacts per grain and one large island for the solver).
-    double physics_s_per_grain_step = 0.0;
-    double cost_exponent = 1.0;
+    // What a lane costs: a lane of G grains does engine_step_units(G, fidelity) cost units per engine
+    // step, each cost.engine_step_s seconds on the measured machine (sim/run_cost.h).
+    RunCostFigures cost;
     double physics_share = 0.0;             // the share of wall time the physics may take
-    double packing = 1.0;                   // grains built / estimated_grain_count (the estimate is close-packed)
     BudgetLevel full_detail;                // the standard preset's own error, for comparison
     std::vector<BudgetLevel> levels;        // cheapest last
 };
@@ -50,7 +49,7 @@ struct BudgetChoice {
     double grains_chosen = 0.0;       // ... as chosen
     double cost_asked = 0.0;          // estimated physics seconds per simulated second, as asked
     double cost_chosen = 0.0;         // ... as chosen
-    double cost_per_grain_step = 0.0; // the figure the estimate used
+    double s_per_cost_unit = 0.0;     // the figure the estimate used (sim/run_cost.h: engine_step_units)
     bool measured = false;            // that figure was measured in this window (else the asset's)
     bool fits = true;                 // the chosen model is expected to keep real time
     // Lanes that step no grains until auto hands them over (a full shell that lifts off or slips):
@@ -61,12 +60,10 @@ struct BudgetChoice {
     bool reduced() const { return level >= 0; }
 };
 
-// The physics seconds one simulated second of these lanes costs: (grains + 1)^exponent x engine steps
-// per second x the cost per grain step, summed over the lanes. Reduced models (rigid, segments),
+// The physics seconds one simulated second of these lanes costs: cost units per engine step x engine
+// steps per second x seconds per cost unit, summed over the lanes. Reduced models (rigid, segments),
 // empty shells and full shells under auto (one rigid body until a hand-over) count as no grains.
-double estimated_cost_s(const std::vector<Scene>& scenes, double cost_per_grain_step, const BudgetFigures& f);
-// The grain steps one engine step of a lane of `grains` grains counts for (the measured cost's unit).
-double grain_steps_per_engine_step(double grains, double cost_exponent);
+double estimated_cost_s(const std::vector<Scene>& scenes, double s_per_cost_unit, const BudgetFigures& f);
 
 // The offer: the scenes as asked if they fit the budget, else the first level that fits, else the
 // cheapest level (then `fits` is false). A level that would make a scene invalid (grains too large
@@ -76,7 +73,7 @@ BudgetChoice offered_level(const std::vector<Scene>& scenes, const BudgetFigures
 // The model the user picked: `level` -1 (the scenes as asked) or an index into f.levels (throws
 // InputError for an index out of range, or a level whose grains do not fit a lane's shell).
 BudgetChoice picked_level(const std::vector<Scene>& scenes, const BudgetFigures& f, int level,
-                          double cost_per_grain_step, bool measured);
+                          double s_per_cost_unit, bool measured);
 
 // A level's short key, for --coarser: "1.5x", "2x", "2x-draft".
 std::string level_key(const BudgetLevel& level);

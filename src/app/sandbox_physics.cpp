@@ -86,13 +86,13 @@ void SandboxPhysics::step_frame(double wall_dt_s, PhysicsOutcome& out) {
     const AdvanceResult r = lanes_.advance_to(clock_.target_s(), budget, now_s_);
     out.steps += r.steps;
     clock_.frame_done(dt, r.reached_s, r.budget_hit);
-    if (!fixed_frames_ && clock_.slow_divisor() == 1) measure(dt, lanes_.time_s() - sim0_s, now_s_() - t0, r.grain_steps);
+    if (!fixed_frames_ && clock_.slow_divisor() == 1) measure(dt, lanes_.time_s() - sim0_s, now_s_() - t0, r.cost_units);
 }
 
 void SandboxPhysics::build_chosen() {
     const BudgetFigures& f = budget_figures();
     const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
-    const double cost = measured ? measured_cost_ : f.physics_s_per_grain_step;
+    const double cost = measured ? measured_cost_ : f.cost.engine_step_s;
     // The user's pick alone decides the model; a level that does not fit these scenes' shells (the
     // panel offers only those that do) falls back to the scenes as asked rather than refusing them.
     try {
@@ -102,28 +102,28 @@ void SandboxPhysics::build_chosen() {
     }
     update_offer();
     lanes_.rebuild(apply_choice(asked_, f, choice_));
-    played_wall_s_ = played_sim_s_ = played_physics_s_ = played_grain_steps_ = 0.0;
+    played_wall_s_ = played_sim_s_ = played_physics_s_ = played_cost_units_ = 0.0;
 }
 
 void SandboxPhysics::update_offer() {
     // A capture (fixed frames) uses the asset's cost only, so it shows the same offer on any machine.
     const bool measured = measured_cost_ > 0.0 && !fixed_frames_;
     const BudgetFigures& f = budget_figures();
-    offer_ = offered_level(asked_, f, measured ? measured_cost_ : f.physics_s_per_grain_step, measured);
+    offer_ = offered_level(asked_, f, measured ? measured_cost_ : f.cost.engine_step_s, measured);
 }
 
-void SandboxPhysics::measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps) {
+void SandboxPhysics::measure(double wall_dt_s, double sim_dt_s, double physics_s, double cost_units) {
     played_wall_s_ += wall_dt_s;
     played_sim_s_ += sim_dt_s;
     played_physics_s_ += physics_s;
-    played_grain_steps_ += grain_steps;
-    if (played_wall_s_ < kBudgetMeasureS || played_grain_steps_ <= 0.0 || played_sim_s_ <= 0.0) return;
+    played_cost_units_ += cost_units;
+    if (played_wall_s_ < kBudgetMeasureS || played_cost_units_ <= 0.0 || played_sim_s_ <= 0.0) return;
     // Only a heavy scene's cost stands for the next scenes' (a few loose grains cost far less each).
-    if (played_grain_steps_ / played_sim_s_ < kBudgetMinGrainStepsPerS) return;
+    if (played_cost_units_ / played_sim_s_ < kBudgetMinCostUnitsPerS) return;
     // The scene's own cost on this computer: the offer follows it; the lanes go on as they are.
-    measured_cost_ = played_physics_s_ / played_grain_steps_;
+    measured_cost_ = played_physics_s_ / played_cost_units_;
     update_offer();
-    played_wall_s_ = played_sim_s_ = played_physics_s_ = played_grain_steps_ = 0.0;
+    played_wall_s_ = played_sim_s_ = played_physics_s_ = played_cost_units_ = 0.0;
 }
 
 }  // namespace polyroll::app

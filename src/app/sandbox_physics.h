@@ -32,16 +32,16 @@ public:
     // budget offers for real time (read between jobs, as lanes()).
     const BudgetChoice& budget_choice() const { return choice_; }
     const BudgetChoice& budget_offer() const { return offer_; }
-    // The cost per grain engine step measured in this window, 0 until a heavy enough scene has played
-    // long enough (kBudgetMinGrainStepsPerS).
-    double measured_cost_per_grain_step() const { return measured_cost_; }
+    // The seconds per cost unit (sim/run_cost.h) measured in this window, 0 until a heavy enough scene has played
+    // long enough (kBudgetMinCostUnitsPerS).
+    double measured_s_per_cost_unit() const { return measured_cost_; }
 
 private:
     void apply(const PhysicsRequests& r, PhysicsOutcome& out);
     void step_frame(double wall_dt_s, PhysicsOutcome& out);
     void build_chosen();
     // After a playing frame: learns the cost per grain step, which updates the offer (never the lanes).
-    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double grain_steps);
+    void measure(double wall_dt_s, double sim_dt_s, double physics_s, double cost_units);
     void update_offer();
 
     bool fixed_frames_;
@@ -57,7 +57,7 @@ private:
     BudgetChoice choice_, offer_;
     double measured_cost_ = 0.0;
     // Since the build: wall, simulated and physics time, and the work done in grain engine steps.
-    double played_wall_s_ = 0.0, played_sim_s_ = 0.0, played_physics_s_ = 0.0, played_grain_steps_ = 0.0;
+    double played_wall_s_ = 0.0, played_sim_s_ = 0.0, played_physics_s_ = 0.0, played_cost_units_ = 0.0;
 };
 
 }  // namespace polyroll::app

@@ -33,15 +33,15 @@ inline constexpr double kFrameRateCapHz = 60.0;
 // less the panel's own ~2 ms: 14 ms buys the heavy scenes more simulated time than 10 ms for a few
 // frames per second (docs/sandbox.md, Speed, has the measurements).
 inline constexpr double kPhysicsBudgetPerFrameS = 0.014;
-// The physics budget (app/model_budget.h, assets/sandbox-budget.json) measures a scene's cost per
-// grain step over each this-much wall time of real-time play (a rate window, kRateWindowS) and
+// The physics budget (app/model_budget.h, sim/run_cost.h) measures a scene's seconds per cost unit
+// over each this-much wall time of real-time play (a rate window, kRateWindowS) and
 // updates the cheaper model the panel offers; the scene stepped never changes with it.
 inline constexpr double kBudgetMeasureS = 1.0;
-// Only a scene doing at least this many grain steps per simulated second (model_budget.h: a lane of G
-// grains does (G + 1)^1.84 per engine step; this is about 200 grains at 1,000 steps/s) stands for the
-// next scenes' estimate: a few loose grains cost so little that timer noise and the frame's fixed
-// work would decide it, and the power law is fitted between 21 and 1,008 grains.
-inline constexpr double kBudgetMinGrainStepsPerS = 1.7e7;
+// Only a scene doing at least this many cost units per simulated second (sim/run_cost.h: a lane of G
+// grains does (G + 1)^1.46 per engine step at the standard iterations; this is about 200 grains at
+// 1,000 steps/s) stands for the next scenes' estimate: a few loose grains cost so little that timer
+// noise and the frame's fixed work would decide it, and the power law is fitted from 124 grains up.
+inline constexpr double kBudgetMinCostUnitsPerS = 2.3e6;
 // "Run to the end" draws no scene, so it may spend most of a frame on physics (the UI still answers).
 inline constexpr double kRunToEndBudgetPerFrameS = 0.200;
 // A stalled frame (window dragged, machine busy) owes at most this much simulated time.

@@ -1,11 +1,15 @@
 // Calibration cost for polyroll bench: see bench_calibration.h.
 #include "cli/bench_calibration.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "sim/model_registry.h"
+#include "sim/run_cost.h"
 #include "sweep/observations.h"
 #include "sweep/sweep_runner.h"
 
@@ -20,16 +24,62 @@ constexpr int kEvaluationsWithRuns = 23;
 constexpr int kSeeds = 2;
 constexpr int kJobs = 2;
 
+// The share of `sorted` (ascending) below which `q` of the values lie.
+double quantile(const std::vector<double>& sorted, double q) {
+    if (sorted.empty()) return 0.0;
+    const double at = q * static_cast<double>(sorted.size() - 1);
+    const auto lo = static_cast<std::size_t>(at);
+    const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+    return sorted[lo] + (at - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
+}
+
+// The cost model's estimate (sim/run_cost.h) against each run's own wall time, given the simulated
+// time the run turned out to last: what validate's and calibrate's time left rest on.
+struct CostCheck {
+    std::vector<double> engine_ratios, other_ratios;  // estimate / measured
+    double estimated_s = 0.0, measured_s = 0.0;
+
+    void add(const RunResult& r) {
+        const double estimate = run_seconds(r.scene, r.measured.end_time_s);
+        if (!(r.wall_time_s > 0.0)) return;
+        const bool engine = model_traits(model_that_ran(r)).cost == RunCost::engine_bodies;
+        (engine ? engine_ratios : other_ratios).push_back(estimate / r.wall_time_s);
+        estimated_s += estimate;
+        measured_s += r.wall_time_s;
+    }
+
+    void print() {
+        for (auto* v : {&engine_ratios, &other_ratios}) std::sort(v->begin(), v->end());
+        fmt::print("\nthe cost model (sim/run_cost.h, assets/run-cost.json) against each run's wall time, given the "
+                   "simulated time it lasted (estimate / measured):\n");
+        auto line = [](const char* what, const std::vector<double>& r) {
+            if (r.empty()) return;
+            fmt::print("  {:<22} {:>4} runs: median {:.2f}, middle half {:.2f} to {:.2f}, range {:.2f} to {:.2f}\n",
+                       what, r.size(), quantile(r, 0.5), quantile(r, 0.25), quantile(r, 0.75), r.front(), r.back());
+        };
+        line("Box2D runs", engine_ratios);
+        line("reduced models", other_ratios);
+        std::vector<double> all = engine_ratios;
+        all.insert(all.end(), other_ratios.begin(), other_ratios.end());
+        std::sort(all.begin(), all.end());
+        line("every run", all);
+        fmt::print("  summed: {:.1f} s estimated, {:.1f} s measured ({:.2f})\n", estimated_s, measured_s,
+                   measured_s > 0 ? estimated_s / measured_s : 0.0);
+    }
+};
+
 }  // namespace
 
 void bench_calibration(const char* fidelity) {
     const sweep::ObservationFile file = sweep::read_observations("");
     const sweep::ValidationPlan vp = sweep::make_validation_plan(file, 1, {{"fidelity.preset", fidelity}});
     std::size_t failed = 0;
+    CostCheck cost;
     const auto start = std::chrono::steady_clock::now();
     for (const sweep::PlannedRun& run : vp.plan.runs) {
         const sweep::RunRecord r = sweep::execute_run(vp.plan, run, {}, false);
         failed += r.ok ? 0 : 1;
+        if (r.result) cost.add(*r.result);
     }
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double fit_s = wall_s * kSeeds * kEvaluationsWithRuns / kJobs;
@@ -38,6 +88,7 @@ void bench_calibration(const char* fidelity) {
                "about {:.0f} s ({:.1f} min)\n",
                fidelity, vp.plan.runs.size(), failed ? fmt::format(", {} failed", failed) : std::string(), wall_s, kSeeds,
                kEvaluationsWithRuns, kJobs, fit_s, fit_s / 60.0);
+    cost.print();
     std::fflush(stdout);
 }
 

@@ -13,6 +13,7 @@
 #include "sim/grains/bare_engine.h"
 #include "sim/scene_json.h"
 #include "sim/shell_label.h"
+#include "sim/run_cost.h"
 
 namespace polyroll::cli {
 
@@ -95,11 +96,12 @@ void bench_scaling(const std::string& fidelity, double sim_s, int repeats) {
         rows.push_back(row);
     }
     const PowerLaw fit = fit_power_law(rows);
-    const auto& budget = assets::file("sandbox-budget.json").at("values");
-    fmt::print("fitted: cost per step = {:.3g} s x (grains + 1)^{:.2f}; the window's budget "
-               "(assets/sandbox-budget.json) says {:.3g} s x (grains + 1)^{:.2f}\n",
-               fit.s_per_grain_step, fit.exponent, budget.at("physics_s_per_grain_step").get<double>(),
-               budget.at("cost_exponent").get<double>());
+    const RunCostFigures& model = run_cost_figures();
+    fmt::print("fitted: cost per step = {:.3g} s x (grains + 1)^{:.2f}; the cost model every estimate uses "
+               "(assets/run-cost.json: engine_step_s, engine_exponent, at {:g} iterations) says {:.3g} s x "
+               "(grains + 1)^{:.2f}\n",
+               fit.s_per_grain_step, fit.exponent, model.engine_reference_iterations, model.engine_step_s,
+               model.engine_exponent);
     fmt::print("us_grain_step: engine time per disc and step; x_first: that against the first row; contacts/grain: "
                "Box2D's contacts (pairs of fixtures whose boxes, enlarged by 0.1 engine units and four steps' travel, "
                "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch.\n");

@@ -1,7 +1,7 @@
 // The grain engine's cost against the number of grains in polyroll bench: the experiment's BB
 // scenes from the small hexagon's 124 discs to the large hexagon three quarters full, the cost per
-// disc and step, Box2D's contacts per disc behind it, and the power law the window's budget uses
-// (assets/sandbox-budget.json) fitted to the rows.
+// disc and step, Box2D's contacts per disc behind it, and the power law fitted to the rows beside the
+// one the cost model uses (sim/run_cost.h, assets/run-cost.json).
 #pragma once
 
 #include <string>

@@ -14,6 +14,7 @@
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
+#include "sim/run_cost.h"
 #include "sim/scene_fields.h"
 #include "sim/scene_json.h"
 #include "sweep/grid_values.h"
@@ -141,18 +142,12 @@ GridCheck check_grid(const sweep::SweepPlan& plan) {
     GridCheck c;
     for (const sweep::PlannedRun& run : plan.runs) {
         try {
-            c.max_cost_s += sweep::max_run_seconds(resolve_scene(sweep::run_layers(plan, run)));
+            c.max_cost_s += max_run_seconds(resolve_scene(sweep::run_layers(plan, run)));
         } catch (const InputError& e) {
             if (c.invalid++ == 0) c.first_invalid = e.what();
         }
     }
     return c;
-}
-
-std::string duration_text(double s) {
-    if (s < 60.0) return fmt::format("{:.0f} s", std::max(s, 1.0));
-    if (s < 3600.0) return fmt::format("{:.0f} min", s / 60.0);
-    return fmt::format("{:.1f} h", s / 3600.0);
 }
 
 // The grid as planned, each axis with its values in run order, and the cost, before any run starts.
@@ -176,7 +171,7 @@ void print_grid(const sweep::SweepPlan& plan, const GridCheck& c, int jobs, cons
     if (c.invalid > 0)
         fmt::print("  note: {} of them cannot run and will be failed rows; the first: {}\n", c.invalid, c.first_invalid);
     fmt::print("  estimated at most {} with {} job{} (each run to its time limit; runs that stop sooner take less)\n",
-               duration_text(c.max_cost_s / std::max(1, jobs)), jobs, jobs == 1 ? "" : "s");
+               sweep::duration_text(c.max_cost_s / std::max(1, jobs)), jobs, jobs == 1 ? "" : "s");
     std::fflush(stdout);
 }
 
@@ -242,7 +237,7 @@ int run(const SweepArgs& a) {
         if (hours > kHoursWithoutLarge && !a.large)
             throw InputError(fmt::format("sweep: {} runs estimated at up to {} with {} job{}, more than {:.0f} h; "
                                          "allowed: fewer values, a shorter --time-limit, or --large to confirm",
-                                         plan.runs.size(), duration_text(check.max_cost_s / std::max(1, jobs)), jobs,
+                                         plan.runs.size(), sweep::duration_text(check.max_cost_s / std::max(1, jobs)), jobs,
                                          jobs == 1 ? "" : "s", kHoursWithoutLarge));
         std::error_code ec;
         if (fs::exists(sweep::plan_path(dir), ec)) {
