@@ -547,23 +547,18 @@ std::optional<PageSettings> page_settings(Options& o) {
     return page;
 }
 
-int sandbox_main(int argc, char** argv) {
-    Options o;
-    CLI::App cli{"polyroll-sandbox: the interactive sandbox. Pick a polygon, drag the fill slider, and watch it stop "
-                 "or roll to the end, with the speed and energy plotted live; race up to four polygons side by side."};
-    cli.footer(
-        shortcut_help() + "\n" +
-        "Without a display it renders the default scene headless instead (polyroll render) into --out, or\n"
-        "runs/default; a folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
-        "Examples:\n"
-        "  polyroll-sandbox\n"
-        "  polyroll-sandbox --preset octagon-rice\n"
-        "  polyroll-sandbox --screenshot shot.png --frames 240   # run 240 frames, save the window, exit\n"
-        "  xvfb-run -a -s \"-screen 0 1280x800x24\" polyroll-sandbox --bench\n"
-        "Exit codes: 0 done, 2 bad input, 1 anything else (including no display for --screenshot or --bench).");
-    std::string presets_list;
-    for (const std::string& n : sandbox_preset_names()) presets_list += (presets_list.empty() ? "" : ", ") + n;
-    cli.add_option("--preset", o.preset, "sandbox preset (assets/sandbox-presets.json): " + presets_list);
+namespace {
+
+// The words the flags' help and errors use, and the page's address keys as flags with their values.
+struct FlagTexts {
+    std::string presets_list, levels_list;
+    std::vector<std::pair<std::string, std::string>> page_flags;  // key, help
+    std::map<std::string, std::string> values;                     // key -> as typed
+};
+
+void add_flags(CLI::App& cli, Options& o, FlagTexts& t) {
+    for (const std::string& n : sandbox_preset_names()) t.presets_list += (t.presets_list.empty() ? "" : ", ") + n;
+    cli.add_option("--preset", o.preset, "sandbox preset (assets/sandbox-presets.json): " + t.presets_list);
     cli.add_option("--screenshot", o.screenshot, "save the window as a PNG after --frames frames, then exit");
     cli.add_option("--frames", o.frames,
                    "run this many frames, then exit; each advances 1/60 s of simulated time (a capture shows the "
@@ -592,35 +587,38 @@ int sandbox_main(int argc, char** argv) {
         "the same as --color-by");
     cli.add_flag("--paused", o.paused, "start paused");
     // The page's address keys as flags of the same names, checked by the same code (page_settings.h).
-    const std::vector<std::pair<std::string, std::string>> page_flags = {
+    t.page_flags = {
         {"sides", "n: the selected lane's number of sides, 3 to 64"},
         {"fill", "r: the selected lane's fill ratio, 0 to 1"},
         {"material", "the selected lane's grains: bb, rice or peas"},
         {"angle", "theta: the ramp's angle, 0 to 89 degrees (all lanes)"},
         {"seed", "the grain packing's seed, all lanes (the same seed, the same run)"}};
-    std::map<std::string, std::string> flag_values;
-    for (const auto& [key, help] : page_flags) cli.add_option("--" + key, flag_values[key], help)->group("Scene");
+    for (const auto& [key, help] : t.page_flags) cli.add_option("--" + key, t.values[key], help)->group("Scene");
     cli.add_option("--scene", o.scene_file, "a scene file (JSON, as polyroll run --scene reads it): one lane; the flags "
                                             "above apply over it")
         ->group("Scene");
-    std::string levels_list = "none";
-    for (const BudgetLevel& l : budget_figures().levels) levels_list += ", " + level_key(l);
+    t.levels_list = "none";
+    for (const BudgetLevel& l : budget_figures().levels) t.levels_list += ", " + level_key(l);
     cli.add_option("--coarser", o.coarser,
                    fmt::format("step a cheaper model than the scene asks, as the panel offers it: {} (default none; "
                                "grains 2x larger of the same fill mass, ...; the errors are in the panel)",
-                               levels_list));
+                               t.levels_list));
     cli.add_option("--layout-report", o.layout_report,
                    "with --frames: write the last frame's layout (the panels' boxes and what they hold, the ramps' "
                    "start, the lanes' badges) as JSON, for the layout tests");
     cli.set_version_flag("--version", version_text("polyroll-sandbox"), "print the version, Box2D's and the build type");
     cli.add_option("--theme", o.theme,
                    "panel colours: projector (default; dark text on pale panels, strong borders) or dark (ImGui's)");
+}
+
+// Parses the flags into `o`; an exit code where the program stops here (help, version, a bad flag).
+std::optional<int> parse_flags(CLI::App& cli, int argc, char** argv, Options& o, FlagTexts& t) {
     try {
         cli.parse(argc, argv);
         o.frames_given = cli.count("--frames") > 0;
         o.out_given = cli.count("--out") > 0;
-        for (const auto& [key, help] : page_flags)
-            if (cli.count("--" + key) > 0) o.scene_flags.emplace_back(key, flag_values[key]);
+        for (const auto& [key, help] : t.page_flags)
+            if (cli.count("--" + key) > 0) o.scene_flags.emplace_back(key, t.values[key]);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
@@ -632,36 +630,65 @@ int sandbox_main(int argc, char** argv) {
             {"--ui-scale", fmt::format("{:g} to {:g}", kUiScaleMin, kUiScaleMax)},
             {"--frames", fmt::format("1 to {}", kMaxFrames)},
             {"--size", size_allowed()},
-            {"--preset", presets_list},
+            {"--preset", t.presets_list},
             {"--theme", "projector, dark"},
             {"--color-by", "material, speed"},
             {"--colour-by", "material, speed"},
-            {"--coarser", levels_list}};
+            {"--coarser", t.levels_list}};
         fmt::print(stderr, "polyroll-sandbox: {}\n",
                    printable_line(flags::flag_error_text(e, cli, "polyroll-sandbox", allowed)));
         return kExitBadInput;
     }
-    SandboxState state;
-    try {
-        const std::optional<PageSettings> page = page_settings(o);
-        const PageSettings flags = parse_window_flags(o.scene_flags);
-        if (!o.scene_file.empty() && !o.preset.empty())
-            throw InputError(fmt::format("--scene {} and --preset {}: both given (allowed: one of them)", o.scene_file,
-                                         o.preset));
-        check(o);
-        state = o.scene_file.empty() ? state_for_preset(o.preset) : state_for_scene_file(o.scene_file);
-        if (page) apply_page_settings(*page, state);
-        apply_page_settings(flags, state);
-        state.model_level = level_from_key(o.coarser, budget_figures());
-    } catch (const InputError& e) {
-        fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
-        return kExitBadInput;
-    }
+    return std::nullopt;
+}
+
+// The window's first state: the preset or scene file, then the page's settings and flags over it.
+// Checks the flags and fills in what they imply (the window size); throws InputError naming a bad value.
+SandboxState initial_state(Options& o) {
+    const std::optional<PageSettings> page = page_settings(o);
+    const PageSettings flags = parse_window_flags(o.scene_flags);
+    if (!o.scene_file.empty() && !o.preset.empty())
+        throw InputError(fmt::format("--scene {} and --preset {}: both given (allowed: one of them)", o.scene_file,
+                                     o.preset));
+    check(o);
+    SandboxState state = o.scene_file.empty() ? state_for_preset(o.preset) : state_for_scene_file(o.scene_file);
+    if (page) apply_page_settings(*page, state);
+    apply_page_settings(flags, state);
+    state.model_level = level_from_key(o.coarser, budget_figures());
     state.follow = o.follow;
     state.colouring = o.colour_by == "speed" ? render::GrainColouring::speed : render::GrainColouring::material;
     state.ui_scale = o.ui_scale;
     state.playing = !o.paused;
     state.high_contrast = o.theme == "projector";
+    return state;
+}
+
+}  // namespace
+
+int sandbox_main(int argc, char** argv) {
+    Options o;
+    CLI::App cli{"polyroll-sandbox: the interactive sandbox. Pick a polygon, drag the fill slider, and watch it stop "
+                 "or roll to the end, with the speed and energy plotted live; race up to four polygons side by side."};
+    cli.footer(
+        shortcut_help() + "\n" +
+        "Without a display it renders the default scene headless instead (polyroll render) into --out, or\n"
+        "runs/default; a folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
+        "Examples:\n"
+        "  polyroll-sandbox\n"
+        "  polyroll-sandbox --preset octagon-rice\n"
+        "  polyroll-sandbox --screenshot shot.png --frames 240   # run 240 frames, save the window, exit\n"
+        "  xvfb-run -a -s \"-screen 0 1280x800x24\" polyroll-sandbox --bench\n"
+        "Exit codes: 0 done, 2 bad input, 1 anything else (including no display for --screenshot or --bench).");
+    FlagTexts texts;
+    add_flags(cli, o, texts);
+    if (const std::optional<int> stop = parse_flags(cli, argc, argv, o, texts)) return *stop;
+    SandboxState state;
+    try {
+        state = initial_state(o);
+    } catch (const InputError& e) {
+        fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
+        return kExitBadInput;
+    }
 
     std::string why;
     std::unique_ptr<Window> win = Window::open(o.width_px, o.height_px, !(o.capture() || o.bench), why);
