@@ -165,10 +165,9 @@ void remove_old_frames(const fs::path& dir) {
         if (std::regex_match(e.path().filename().string(), frame)) fs::remove(e.path(), ec);
 }
 
-int render(const RenderOptions& given) {
-    RenderOptions o = given;
-    // Every flag is checked before any work, so bad input leaves nothing behind.
-    const Size size = parse_size(o.size);
+// Every flag but --size checked before any work, so bad input leaves nothing behind; a relative
+// --video made a file in the --out folder.
+void check_flags(RenderOptions& o) {
     if (!(o.fps >= 1.0 && o.fps <= kMaxFps))
         throw InputError(fmt::format("--fps {:g}: out of range (allowed: 1 to {:g} frames per second)", o.fps, kMaxFps));
     if (o.slow < 1 || o.slow > kMaxSlow)
@@ -177,7 +176,6 @@ int render(const RenderOptions& given) {
         throw InputError(fmt::format("--hold {:g}: out of range (allowed: 0 to {:g} s)", o.hold_s, kMaxHold));
     if (o.colour_by != "material" && o.colour_by != "speed")
         throw InputError(fmt::format("{} {}: unknown (allowed: material, speed)", o.colour_flag, o.colour_by));
-    std::string ffmpeg;
     if (!o.video.empty()) {
         // Checked before any frame is drawn: a video ffmpeg cannot write was found only after rendering
         // every frame. The extension names the container; these three hold H.264 (yuv420p).
@@ -201,8 +199,70 @@ int render(const RenderOptions& given) {
             throw InputError(fmt::format("--video {}: the folder {} does not exist (allowed: an existing folder or "
                                          "the --out folder)",
                                          o.video, parent.string()));
-        ffmpeg = process::find_on_path("ffmpeg");
     }
+}
+
+// The line that says what is about to be rendered.
+void announce(const Scene& scene, const RenderOptions& o, const Size& size) {
+    // An empty shell has no material to name ("r = 0 bb" read as if it held BBs).
+    const std::string fill = scene.fill.ratio > 0.0
+                                 ? fmt::format("r = {:g} {}", scene.fill.ratio, scene.fill.material.preset)
+                                 : std::string("empty");
+    fmt::print("polyroll render: n = {}, {}, theta = {:g} deg on {}, {}x{} at {:g} fps{}{}\n",
+               scene.shell.sides, fill, scene.ramp.angle_deg,
+               scene.ramp.preset.empty() ? "a custom ramp" : "the " + scene.ramp.preset + " ramp", size.width,
+               size.height, o.fps,
+               o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");
+    std::fflush(stdout);
+}
+
+// What was rendered, where, and how long it took.
+void report(const render::SequenceResult& res, const RenderOptions& o) {
+    const Measurements& m = res.run.measured;
+    const long total = res.run_frames + res.hold_frames;
+    const double fps_wall = res.render_wall_s > 0 ? static_cast<double>(total) / res.render_wall_s : 0.0;
+    const std::string folder = (fs::path(o.out) / "").string();
+    fmt::print("  frames     {} ({} of the run, {} holding the end): {}{} ... {}\n", total, res.run_frames,
+               res.hold_frames, folder, render::frame_file_name(1), render::frame_file_name(total));
+    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impact{}\n", to_string(m.behaviour),
+               m.end_time_s, m.distance_m, m.impacts.size(), m.impacts.size() == 1 ? "" : "s");
+    fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
+               res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
+    // Joined as paths: --out frames/ must not print frames//summary.json.
+    fmt::print("  files      {}, trajectory.csv, impacts.csv\n", (fs::path(o.out) / "summary.json").string());
+    std::fflush(stdout);
+
+}
+
+// The video from the frames, written whole or not at all; returns the exit code (`code` if it was made).
+int make_video(const RenderOptions& o, const std::string& ffmpeg, int code) {
+    if (ffmpeg.empty()) {
+        fmt::print(stderr, "polyroll: {}\n", no_ffmpeg_message(o));
+        return code == kExitOk ? kExitFailure : code;
+    }
+    const fs::path temp = video_temp_path(o.video);
+    int status = run_ffmpeg(ffmpeg_args(ffmpeg, o, temp.string()));
+    std::error_code ec;
+    if (status == 0) {
+        fs::rename(temp, o.video, ec);
+        if (ec) status = -1;
+    }
+    if (status != 0) {
+        fs::remove(temp, ec);
+        fmt::print(stderr, "polyroll: --video {}: ffmpeg failed (exit status {}); the frames are in {}. The command "
+                           "was:\n  {}\n",
+                   o.video, status, o.out, command_line(ffmpeg_args(ffmpeg, o, o.video)));
+        return code == kExitOk ? kExitFailure : code;
+    }
+    fmt::print("  video      {}\n", o.video);
+    return code;
+}
+
+int render(const RenderOptions& given) {
+    RenderOptions o = given;
+    const Size size = parse_size(o.size);
+    check_flags(o);
+    const std::string ffmpeg = o.video.empty() ? std::string() : process::find_on_path("ffmpeg");
     const Scene scene = o.scene.resolve();
     const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);
     const CleanUpOnInterrupt on_interrupt("polyroll render", created);
@@ -219,16 +279,7 @@ int render(const RenderOptions& given) {
     st.slow = o.slow;
     st.hold_s = o.hold_s;
 
-    // An empty shell has no material to name ("r = 0 bb" read as if it held BBs).
-    const std::string fill = scene.fill.ratio > 0.0
-                                 ? fmt::format("r = {:g} {}", scene.fill.ratio, scene.fill.material.preset)
-                                 : std::string("empty");
-    fmt::print("polyroll render: n = {}, {}, theta = {:g} deg on {}, {}x{} at {:g} fps{}{}\n",
-               scene.shell.sides, fill, scene.ramp.angle_deg,
-               scene.ramp.preset.empty() ? "a custom ramp" : "the " + scene.ramp.preset + " ramp", size.width,
-               size.height, o.fps,
-               o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "", o.follow ? ", following the polygon" : "");
-    std::fflush(stdout);
+    announce(scene, o, size);
     render::SequenceResult res;
     ProgressLine progress(size.width, size.height, o.out);
     try {
@@ -243,45 +294,12 @@ int render(const RenderOptions& given) {
         throw;
     }
 
+    report(res, o);
     const Measurements& m = res.run.measured;
-    const long total = res.run_frames + res.hold_frames;
-    const double fps_wall = res.render_wall_s > 0 ? static_cast<double>(total) / res.render_wall_s : 0.0;
-    const std::string folder = (fs::path(o.out) / "").string();
-    fmt::print("  frames     {} ({} of the run, {} holding the end): {}{} ... {}\n", total, res.run_frames,
-               res.hold_frames, folder, render::frame_file_name(1), render::frame_file_name(total));
-    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impact{}\n", to_string(m.behaviour),
-               m.end_time_s, m.distance_m, m.impacts.size(), m.impacts.size() == 1 ? "" : "s");
-    fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
-               res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
-    // Joined as paths: --out frames/ must not print frames//summary.json.
-    fmt::print("  files      {}, trajectory.csv, impacts.csv\n", (fs::path(o.out) / "summary.json").string());
-    std::fflush(stdout);
-
-    int code = m.behaviour == Behaviour::diverged ? kExitDiverged : kExitOk;
+    const int code = m.behaviour == Behaviour::diverged ? kExitDiverged : kExitOk;
     if (m.behaviour == Behaviour::diverged)
         fmt::print(stderr, "polyroll: the run diverged {}\n", m.divergence);
-    if (!o.video.empty()) {
-        if (ffmpeg.empty()) {
-            fmt::print(stderr, "polyroll: {}\n", no_ffmpeg_message(o));
-            return code == kExitOk ? kExitFailure : code;
-        }
-        const fs::path temp = video_temp_path(o.video);
-        int status = run_ffmpeg(ffmpeg_args(ffmpeg, o, temp.string()));
-        std::error_code ec;
-        if (status == 0) {
-            fs::rename(temp, o.video, ec);
-            if (ec) status = -1;
-        }
-        if (status != 0) {
-            fs::remove(temp, ec);
-            fmt::print(stderr, "polyroll: --video {}: ffmpeg failed (exit status {}); the frames are in {}. The command "
-                               "was:\n  {}\n",
-                       o.video, status, o.out, command_line(ffmpeg_args(ffmpeg, o, o.video)));
-            return code == kExitOk ? kExitFailure : code;
-        }
-        fmt::print("  video      {}\n", o.video);
-    }
-    return code;
+    return o.video.empty() ? code : make_video(o, ffmpeg, code);
 }
 
 }  // namespace
