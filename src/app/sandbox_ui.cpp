@@ -1015,15 +1015,20 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
 }
 
 // [SECTION] Status band over the scene
-float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
+
+namespace {
+
+// One line of the status band, with its colour; the first is drawn in the large font.
+struct StatusLine {
+    std::string text;
+    std::optional<ImVec4> colour;
+};
+
+// What the band says: the run's state and speed, then errors, warnings and the last action's feedback.
+std::vector<StatusLine> status_lines(const SandboxState& s, const UiContext& ctx) {
     const LaneSet& lanes = *ctx.lanes;
     const int divisor = kSlowMotionDivisors[static_cast<size_t>(s.slow_index)];
-    // The lines, each with its colour; the first in the large font.
-    struct Line {
-        std::string text;
-        std::optional<ImVec4> colour;
-    };
-    std::vector<Line> lines;
+    std::vector<StatusLine> lines;
     if (lanes.building()) {
         lines.push_back({"Building the scene: pouring and settling the grains...", {}});
     } else if (!lanes.ready()) {
@@ -1052,18 +1057,26 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
         lines.push_back({budget_status(budget_figures().levels.at(static_cast<size_t>(ctx.budget->level))), warn});
     // What the user just did (a screenshot or an export saved), where the eye is, for a few seconds.
     if (!ctx.feedback.empty() && ImGui::GetTime() < ctx.feedback_until_s) lines.push_back({ctx.feedback, {}});
-    const bool speed_legend = s.colouring == render::GrainColouring::speed;
-    // Racing: the lanes' legend, one entry per lane in its colour, wrapping as a line of text does.
-    std::vector<std::string> lane_names;
+    return lines;
+}
+
+// Racing: the lanes' legend, one entry per lane (none for a single lane).
+std::vector<std::string> lane_legend_names(const LaneSet& lanes) {
+    std::vector<std::string> names;
     if (lanes.ready() && lanes.size() > 1)
         for (size_t i = 0; i < lanes.size(); ++i)
-            lane_names.push_back(fmt::format("{}  {}", i + 1, lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), 0).title));
+            names.push_back(fmt::format("{}  {}", i + 1, lane_readout(lanes.lane(i).scene(), lanes.lane(i).measured(), 0).title));
+    return names;
+}
 
-    // The band's size from its wrapped text, before it is drawn: it spans the scene's width, and the
-    // scene starts under it.
+// The gap between two entries of the lane legend.
+float legend_entry_gap() { return ImGui::GetFontSize() * 1.5f; }
+
+// The band's height from its wrapped text, before it is drawn: the scene starts under it. The lane
+// legend wraps as a line of text does: entries left to right, a new row when the next would pass the edge.
+float status_height(const std::vector<StatusLine>& lines, const std::vector<std::string>& lane_names,
+                    bool speed_legend, float wrap, const UiContext& ctx) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float x0 = L.panel_w, width = std::max(1.0f, L.width - L.panel_w);
-    const float wrap = std::max(1.0f, width - 2.0f * style.WindowPadding.x);
     float height = 2.0f * style.WindowPadding.y;
     for (size_t i = 0; i < lines.size(); ++i) {
         const bool large = i == 0 && ctx.large_font;
@@ -1074,8 +1087,6 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
     }
     const float legend_h = ImGui::GetFontSize();
     if (speed_legend) height += style.ItemSpacing.y + legend_h;
-    // The lane legend's rows: entries left to right, a new row when the next would pass the edge.
-    const float entry_gap = ImGui::GetFontSize() * 1.5f;
     int legend_rows = 0;
     for (float x = wrap + 1.0f; const std::string& name : lane_names) {
         const float w = ImGui::CalcTextSize(name.c_str()).x;
@@ -1083,17 +1094,13 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
             ++legend_rows;
             x = 0.0f;
         }
-        x += w + entry_gap;
+        x += w + legend_entry_gap();
     }
     if (legend_rows > 0) height += legend_rows * (legend_h + style.ItemSpacing.y);
-    height = std::ceil(height);
+    return std::ceil(height);
+}
 
-    ImGui::SetNextWindowPos({x0, 0});
-    ImGui::SetNextWindowSize({width, height});
-    ImGui::Begin("status", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs |
-                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+void draw_status_text(const std::vector<StatusLine>& lines, const UiContext& ctx) {
     for (size_t i = 0; i < lines.size(); ++i) {
         const bool large = i == 0 && ctx.large_font;
         if (large) ImGui::PushFont(ctx.large_font);
@@ -1104,6 +1111,11 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
         if (lines[i].colour) ImGui::PopStyleColor();
         if (large) ImGui::PopFont();
     }
+}
+
+// Each lane's name in its colour, in rows as status_height counted them.
+void draw_lane_legend(const std::vector<std::string>& lane_names, float wrap, bool high_contrast) {
+    const float entry_gap = legend_entry_gap();
     float row_x = 0.0f;  // where the legend's current row ends
     for (size_t i = 0; i < lane_names.size(); ++i) {
         const float w = ImGui::CalcTextSize(lane_names[i].c_str()).x;
@@ -1113,29 +1125,54 @@ float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L
         } else {
             row_x = w;
         }
-        ImGui::TextColored(on_panel(im_vec(lane_colour(i)), s.high_contrast), "%s", lane_names[i].c_str());
+        ImGui::TextColored(on_panel(im_vec(lane_colour(i)), high_contrast), "%s", lane_names[i].c_str());
     }
-    if (speed_legend) {
-        // The grain colours' legend: a bar from rest to the top of the colour map.
-        const std::string left = "grain speed  0 m/s", right = fmt::format("{:g} m/s and above", kDefaultColourSpeedMax_m_s);
-        ImGui::TextUnformatted(left.c_str());
-        ImGui::SameLine();
-        const float bar_w = std::min(ImGui::GetFontSize() * 10.0f,
-                                     std::max(ImGui::GetFontSize() * 2.0f,
-                                              ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(right.c_str()).x -
-                                                  2.0f * style.ItemSpacing.x));
-        const ImVec2 p = ImGui::GetCursorScreenPos();
-        ImDrawList* dl = ImGui::GetWindowDrawList();
-        constexpr int kSteps = 24;
-        for (int k = 0; k < kSteps; ++k) {
-            const render::Rgba c = render::speed_colour((k + 0.5) / kSteps);
-            dl->AddRectFilled({p.x + bar_w * k / kSteps, p.y + legend_h * 0.15f},
-                              {p.x + bar_w * (k + 1) / kSteps + 0.5f, p.y + legend_h * 0.85f}, im_colour(c));
-        }
-        ImGui::Dummy({bar_w, legend_h});
-        ImGui::SameLine();
-        ImGui::TextUnformatted(right.c_str());
+}
+
+// The grain colours' legend: a bar from rest to the top of the colour map.
+void draw_speed_legend() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float legend_h = ImGui::GetFontSize();
+    const std::string left = "grain speed  0 m/s", right = fmt::format("{:g} m/s and above", kDefaultColourSpeedMax_m_s);
+    ImGui::TextUnformatted(left.c_str());
+    ImGui::SameLine();
+    const float bar_w = std::min(ImGui::GetFontSize() * 10.0f,
+                                 std::max(ImGui::GetFontSize() * 2.0f,
+                                          ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(right.c_str()).x -
+                                              2.0f * style.ItemSpacing.x));
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    constexpr int kSteps = 24;
+    for (int k = 0; k < kSteps; ++k) {
+        const render::Rgba c = render::speed_colour((k + 0.5) / kSteps);
+        dl->AddRectFilled({p.x + bar_w * k / kSteps, p.y + legend_h * 0.15f},
+                          {p.x + bar_w * (k + 1) / kSteps + 0.5f, p.y + legend_h * 0.85f}, im_colour(c));
     }
+    ImGui::Dummy({bar_w, legend_h});
+    ImGui::SameLine();
+    ImGui::TextUnformatted(right.c_str());
+}
+
+}  // namespace
+
+// The band spans the scene's width; returns its height.
+float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report) {
+    const std::vector<StatusLine> lines = status_lines(s, ctx);
+    const std::vector<std::string> lane_names = lane_legend_names(*ctx.lanes);
+    const bool speed_legend = s.colouring == render::GrainColouring::speed;
+    const float x0 = L.panel_w, width = std::max(1.0f, L.width - L.panel_w);
+    const float wrap = std::max(1.0f, width - 2.0f * ImGui::GetStyle().WindowPadding.x);
+    const float height = status_height(lines, lane_names, speed_legend, wrap, ctx);
+
+    ImGui::SetNextWindowPos({x0, 0});
+    ImGui::SetNextWindowSize({width, height});
+    ImGui::Begin("status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    draw_status_text(lines, ctx);
+    draw_lane_legend(lane_names, wrap, s.high_contrast);
+    if (speed_legend) draw_speed_legend();
     record_window(report, "status");
     ImGui::End();
     return height;
