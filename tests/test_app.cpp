@@ -19,7 +19,7 @@
 #include "app/page_settings.h"
 #include "app/plot_data.h"
 #include "app/readouts.h"
-#include "sim/scene_names.h"
+#include "sim/scene/scene_names.h"
 #include "app/sandbox_presets.h"
 #include "app/sandbox_settings.h"
 #include "app/sandbox_state.h"
@@ -33,10 +33,10 @@
 #include "render/world_draw.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/scene_fields.h"
-#include "sim/shell_properties.h"
-#include "sim/scene_json.h"
-#include "sim/shell_pose.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/geometry/shell_properties.h"
+#include "sim/scene/scene_json.h"
+#include "sim/geometry/shell_pose.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -19,8 +19,8 @@
 #include "render/snapshot.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/geometry.h"
-#include "sim/scene_json.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene_json.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

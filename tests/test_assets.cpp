@@ -4,7 +4,7 @@
 
 #include "sim/assets.h"
 #include "sim/model_choice.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 using namespace polyroll;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sim/errors.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/calibration.h"
 #include "sweep/calibration_params.h"
 #include "sweep/observations.h"

@@ -16,8 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/message_text.h"
-#include "sim/scene_json.h"
-#include "sim/shell_label.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/shell_label.h"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include "sim/dem3d/state_tracker.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/results_io.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "sim/grains/disc_size.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 using namespace polyroll::geom;
 

@@ -21,8 +21,8 @@
 
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/scene.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene.h"
+#include "sim/scene/scene_json.h"
 #include "sim/grains/simulation.h"
 
 namespace polyroll::test {

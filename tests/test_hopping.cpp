@@ -1,7 +1,7 @@
-// The free rigid body that carries an empty shell on after lift-off (models/free_body.h):
+// The free rigid body that carries an empty shell on after lift-off (sim/reduced/free_body.h):
 // exact flight, the impact law (no bounce, Coulomb friction), the pivot stretch against the rigid
-// impact model it continues, the sliding stretch's series (models/slide_motion.h), and the hand-over
-// back into a ModelRun (models/free_body_run.h).
+// impact model it continues, the sliding stretch's series (sim/reduced/slide_motion.h), and the hand-over
+// back into a ModelRun (sim/reduced/free_body_run.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,14 +9,14 @@
 #include <cmath>
 
 #include "sim/grains/engine_units.h"
-#include "sim/fidelity_preset.h"
-#include "sim/shell_outline.h"
+#include "sim/scene/fidelity_preset.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/model_registry.h"
 #include "sim/reduced/free_body.h"
 #include "sim/reduced/free_body_run.h"
 #include "sim/reduced/reduced_run.h"
 #include "sim/reduced/slide_motion.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -273,12 +273,8 @@ TEST_CASE("the free rigid body's dense output is the run sampled at every step",
     }
     const HandOver h = rigid.hand_over();
     const double hz = s.fidelity.step_hz;
-    FreeBodyStart start;
-    start.time_s = static_cast<double>(h.steps) / hz;
-    start.state = h.shell;
-    start.release = h.release;
-    start.potential_J = h.potential_J;
-    start.landed_vertex = h.landed_vertex;
+    FreeBodyStart start = free_body_start(h, hz);
+    start.measured = Measurements{};  // no records so far: every row below is the free body's own
     start.measured.behaviour = Behaviour::running;
     const FreeBody b = body_of(s);
     RampFrame every_step = rules_of(s);

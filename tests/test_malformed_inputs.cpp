@@ -15,7 +15,7 @@
 
 #include "sim/errors.h"
 #include "sim/message_text.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace fs = std::filesystem;
 

@@ -13,7 +13,7 @@
 #include "app/readouts.h"
 #include "app/sandbox_physics.h"
 #include "sim/grains/fill_plan.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

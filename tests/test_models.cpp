@@ -5,16 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/reduced/composite_body.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/rolling_polygon.h"
 #include "sim/results_io.h"
-#include "sim/scene_json.h"
-#include "sim/shell_properties.h"
+#include "sim/scene/scene_json.h"
+#include "sim/geometry/shell_properties.h"
 #include "sim/model_choice.h"
 #include "sim/model_registry.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 

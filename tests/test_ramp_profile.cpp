@@ -1,4 +1,4 @@
-// A curved track (sim/ramp_profile.h, ramp.curvature_deg_per_m): its slope and potential, the models
+// A curved track (sim/geometry/ramp_profile.h, ramp.curvature_deg_per_m): its slope and potential, the models
 // that can run it, and what it does to a run.
 #include <catch2/catch.hpp>
 
@@ -6,8 +6,8 @@
 
 #include "sim/auto_run.h"
 #include "sim/dem3d/dem3d_input.h"
-#include "sim/ramp_profile.h"
-#include "sim/shell_pose.h"
+#include "sim/geometry/ramp_profile.h"
+#include "sim/geometry/shell_pose.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

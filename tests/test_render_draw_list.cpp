@@ -16,7 +16,7 @@
 #include "render/ticks.h"
 #include "render/world_draw.h"
 #include "sim/grains/disc_size.h"
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/grains/simulation.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"

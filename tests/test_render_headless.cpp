@@ -19,7 +19,7 @@
 #include "render/png_writer.h"
 #include "render/render_sequence.h"
 #include "render/snapshot.h"
-#include "sim/shell_pose.h"
+#include "sim/geometry/shell_pose.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -1,4 +1,4 @@
-// The scene field table (sim/scene_fields.h): it names every field the scene files hold, in their
+// The scene field table (sim/scene/scene_fields.h): it names every field the scene files hold, in their
 // order; its limits give the messages validation has always given; its flags are unique.
 #include <catch2/catch.hpp>
 
@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/errors.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
-#include "sim/scene_names.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/scene_names.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

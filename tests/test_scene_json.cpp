@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "sim/errors.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "sim/geometry.h"
-#include "sim/shell_outline.h"
-#include "sim/shell_properties.h"
-#include "sim/vertex_rounding.h"
+#include "sim/geometry/geometry.h"
+#include "sim/geometry/shell_outline.h"
+#include "sim/geometry/shell_properties.h"
+#include "sim/geometry/vertex_rounding.h"
 
 using namespace polyroll;
 

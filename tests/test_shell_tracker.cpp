@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "sim/dem3d/state_tracker.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 #include "sim/shell_tracker.h"
 #include "sim/grains/tracker.h"
 #include "sim/grains/world_builder.h"

@@ -1,4 +1,4 @@
-// The rigid polygon's integrator and root finder (models/taylor_series.h, models/root_finder.h): a
+// The rigid polygon's integrator and root finder (sim/reduced/taylor_series.h, sim/reduced/root_finder.h): a
 // face's time along the pendulum's series against an independent brute-force quadrature of the
 // energy integral, and the root finder on a smooth crossing and on a jump.
 #include <catch2/catch.hpp>

@@ -12,10 +12,10 @@
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
-#include "sim/scene_names.h"
-#include "sim/shell_label.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/scene_names.h"
+#include "sim/scene/shell_label.h"
 
 namespace polyroll::app {
 

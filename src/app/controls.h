@@ -1,5 +1,5 @@
 // The panel's controls as plain data, and their mapping to scene parameters: one row per control
-// (control_rows) naming its scene field, whose row in sim/scene_fields.cpp gives the limits, unit,
+// (control_rows) naming its scene field, whose row in sim/scene/scene_fields.cpp gives the limits, unit,
 // label and help. Setting a control changes exactly the parameters its row names, clamped to the
 // field's limits; a lane's scene is its preset document with the controls as one more layer, resolved
 // by the core. No GLFW or ImGui here: the mapping is unit-tested without a window.
@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene.h"
+#include "sim/scene/scene_fields.h"
 
 namespace polyroll::app {
 
@@ -54,7 +54,7 @@ struct RadioOption {
 };
 
 // One panel control, MuJoCo simulate's way: a row names the scene field it edits and where its value
-// lives; the field's row (sim/scene_fields.cpp) gives its type (which widget), limits (the clamping),
+// lives; the field's row (sim/scene/scene_fields.cpp) gives its type (which widget), limits (the clamping),
 // unit, label and help (the tooltip). What the panel adds is the note after the help, the number's
 // format and, for a slider whose useful range is shorter than the field's, where the slider stops
 // (Ctrl+click types up to the limit). Choosing a preset also sets the controls of its section that the

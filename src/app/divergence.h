@@ -9,7 +9,7 @@
 
 #include "render/snapshot.h"
 #include "sim/measurements.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

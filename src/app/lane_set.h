@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "sim/model_run.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

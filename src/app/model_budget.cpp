@@ -7,10 +7,10 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/fidelity_preset.h"
+#include "sim/scene/fidelity_preset.h"
 #include "sim/grains/fill_plan.h"
 #include "sim/model_registry.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll::app {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "sim/run_cost.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

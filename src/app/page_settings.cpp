@@ -16,7 +16,7 @@
 #include "app/sandbox_presets.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 
 namespace polyroll::app {
 

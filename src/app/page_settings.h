@@ -31,7 +31,7 @@ std::string page_query_keys();
 
 // Parses "a=1&b=2" (with or without the leading '?', percent-encoding and '+' decoded). Throws
 // InputError naming the key, the bad value and what is allowed: an unknown key, a value that is not
-// a number, a number out of the field's range (sim/scene_fields), an unknown preset or material.
+// a number, a number out of the field's range (sim/scene/scene_fields), an unknown preset or material.
 PageSettings parse_page_query(std::string_view query);
 
 // polyroll-sandbox's flags of the same names (--preset, --sides, --fill, --material, --angle, --seed),

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

@@ -8,7 +8,7 @@
 
 #include "render/overlay.h"
 #include "sim/model_registry.h"
-#include "sim/scene_names.h"
+#include "sim/scene/scene_names.h"
 
 namespace polyroll::app {
 

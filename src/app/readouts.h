@@ -9,7 +9,7 @@
 #include "app/model_budget.h"
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

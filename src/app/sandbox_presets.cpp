@@ -8,7 +8,7 @@
 #include "app/sandbox_settings.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::app {
 

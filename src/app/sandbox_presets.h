@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

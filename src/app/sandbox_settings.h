@@ -1,6 +1,6 @@
 // Every default and limit of the sandbox window's own settings, in one place: its sliders' spans,
 // the transport's speeds, the real-time cap, the window and the theme. Scene values (polygons,
-// materials, ramps) stay in assets/ and the scene fields' limits in sim/scene_fields.cpp; these are
+// materials, ramps) stay in assets/ and the scene fields' limits in sim/scene/scene_fields.cpp; these are
 // the window's choices, each with its reason.
 #pragma once
 
@@ -9,7 +9,7 @@
 namespace polyroll::app {
 
 // --- Control ranges. The limits of the scene fields the panel edits are the field table's
-// (sim/scene_fields.cpp): the controls clamp to them, so a slider never makes a scene the core refuses.
+// (sim/scene/scene_fields.cpp): the controls clamp to them, so a slider never makes a scene the core refuses.
 // These are only the sliders' own spans, for the values a class will use; Ctrl+click types any value
 // up to the field's limit.
 inline constexpr int kSidesSliderMax = 24;  // 3 to 24 sides on the slider, up to 64 typed

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "app/sandbox_presets.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::app {
 

@@ -11,7 +11,7 @@
 #include "app/controls.h"
 #include "app/sandbox_settings.h"
 #include "render/frame_layout.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::app {
 

@@ -44,9 +44,9 @@
 #include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
-#include "sim/scene_names.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/scene_names.h"
 
 namespace polyroll::app {
 
@@ -215,7 +215,7 @@ bool slider_double(const char* label, double& v, double lo, double hi, const cha
     return knob_slider(label, ImGuiDataType_Double, v, lo, hi, format);
 }
 
-// A field's tooltip: its help and what it allows (sim/scene_fields.cpp), then what the panel adds.
+// A field's tooltip: its help and what it allows (sim/scene/scene_fields.cpp), then what the panel adds.
 std::string field_tip(const SceneField& f, const std::string& panel_note = "") {
     std::string text = field_help(f);
     if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
@@ -247,7 +247,7 @@ void clamp_note_here(const SceneField& f) {
 // [SECTION] Controls bound to the scene-field table: one widget per row of control_rows()
 // The panel's controls are controls.h's rows. Each edits a copy of the value and hands an edit to
 // set_control, which checks the name or clamps the number: the panel never writes a value the scene
-// would refuse. Each is labelled by its field's row (sim/scene_fields.cpp), shows its tooltip and
+// would refuse. Each is labelled by its field's row (sim/scene/scene_fields.cpp), shows its tooltip and
 // returns true when the user changed the value.
 struct Edit {
     LaneControls& lane;
@@ -413,7 +413,7 @@ void preset_buttons(SandboxState& s, UiRequests& req) {
     }
 }
 
-// A combo over an enumeration's names (sim/scene_names.h); true when the choice changed.
+// A combo over an enumeration's names (sim/scene/scene_names.h); true when the choice changed.
 bool names_combo(const char* label, const std::vector<std::string>& names, int& index) {
     return ImGui::Combo(
         label, &index,

@@ -11,12 +11,12 @@
 #include <fmt/format.h>
 
 #include "sim/errors.h"
-#include "sim/fidelity_preset.h"
+#include "sim/scene/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sweep/scene_matrices.h"
 #include "sim/reduced/reduced_models.h"
-#include "sim/scene_names.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_names.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll::cli {
 

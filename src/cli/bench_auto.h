@@ -5,7 +5,7 @@
 // tests/test_auto_model.cpp asserts.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::cli {
 

@@ -10,10 +10,10 @@
 
 #include "cli/bench_auto.h"
 #include "sim/errors.h"
-#include "sim/fidelity_preset.h"
+#include "sim/scene/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sweep/scene_matrices.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll::cli {
 

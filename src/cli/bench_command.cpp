@@ -15,9 +15,9 @@
 #include "cli/scene_options.h"
 #include "sim/assets.h"
 #include "sim/grains/bare_engine.h"
-#include "sim/fidelity_preset.h"
+#include "sim/scene/fidelity_preset.h"
 #include "sim/model_registry.h"
-#include "sim/shell_label.h"
+#include "sim/scene/shell_label.h"
 
 namespace polyroll::cli {
 

@@ -8,7 +8,7 @@
 #include "sim/dem3d/yade_process.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/shell_label.h"
+#include "sim/scene/shell_label.h"
 
 namespace polyroll::cli {
 

@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::cli {
 

@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sim/model_registry.h"
-#include "sim/shell_label.h"
+#include "sim/scene/shell_label.h"
 
 namespace polyroll::cli {
 

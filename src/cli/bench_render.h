@@ -1,7 +1,7 @@
 // polyroll bench's rendering section: frames per second of headless 1280x720 frames.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::cli {
 

@@ -11,8 +11,8 @@
 
 #include "sim/assets.h"
 #include "sim/grains/bare_engine.h"
-#include "sim/scene_json.h"
-#include "sim/shell_label.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/shell_label.h"
 #include "sim/run_cost.h"
 
 namespace polyroll::cli {

@@ -14,8 +14,8 @@
 #include "sim/atomic_file.h"
 #include "sim/results_io.h"
 #include "sim/model_registry.h"
-#include "sim/scene_json.h"
-#include "sim/shell_label.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/shell_label.h"
 
 namespace polyroll::cli {
 

@@ -12,7 +12,7 @@
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/observations.h"
 #include "sweep/results_table.h"
 #include "sweep/sweep_plan.h"

@@ -7,7 +7,7 @@
 
 #include "cli/scene_options.h"
 #include "sim/errors.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::cli {

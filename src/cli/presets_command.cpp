@@ -7,7 +7,7 @@
 
 #include "cli/commands.h"
 #include "sim/assets.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll::cli {
 

@@ -22,7 +22,7 @@
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/results_io.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::cli {
 

@@ -11,9 +11,9 @@
 #include <fmt/format.h>
 
 #include "sim/errors.h"
-#include "sim/json_path.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
+#include "sim/scene/json_path.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/sweep_plan.h"
 
@@ -64,7 +64,7 @@ void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without
                    "any scene field: FIELD=VALUE, e.g. --set fill.material.wall_friction=0.05 (repeatable; fields "
                    "as in a scene file; null unsets an optional field); over the scene file, beside the flags")
         ->group("Scene");
-    // One flag per field that has one (sim/scene_fields.cpp), in scene-file order.
+    // One flag per field that has one (sim/scene/scene_fields.cpp), in scene-file order.
     std::vector<const SceneField*> fields;
     for (const SceneField& f : scene_fields())
         if (!f.flag.empty() && std::find(without.begin(), without.end(), f.path) == without.end())

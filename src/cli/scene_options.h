@@ -1,5 +1,5 @@
 // The command-line flags that describe a scene (--sides, --fill, ...): one per field with a flag in
-// sim/scene_fields.cpp, shared by every command that runs one. They become the last layer over
+// sim/scene/scene_fields.cpp, shared by every command that runs one. They become the last layer over
 // assets/defaults.json and any --scene file.
 #pragma once
 
@@ -12,8 +12,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene.h"
+#include "sim/scene/scene_fields.h"
 
 namespace polyroll::cli {
 

@@ -15,8 +15,8 @@
 #include "sim/errors.h"
 #include "sim/message_text.h"
 #include "sim/run_cost.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
 #include "sweep/plan_extension.h"
@@ -34,7 +34,7 @@ using json = nlohmann::ordered_json;
 
 // 128 + SIGINT, what shells report for a command stopped by Ctrl-C.
 
-// The swept scene flags: the fields with a sweep_axis in sim/scene_fields.cpp, in the plan's axis
+// The swept scene flags: the fields with a sweep_axis in sim/scene/scene_fields.cpp, in the plan's axis
 // order (the last varies fastest; the seed comes last).
 std::vector<const SceneField*> axis_fields() {
     std::vector<const SceneField*> fields;

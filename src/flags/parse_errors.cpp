@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 
 namespace polyroll::flags {
 

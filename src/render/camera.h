@@ -5,7 +5,7 @@
 #pragma once
 
 #include "render/draw_list.h"
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 namespace polyroll::render {
 

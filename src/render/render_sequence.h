@@ -11,7 +11,7 @@
 
 #include "render/frame_layout.h"
 #include "sim/run_result.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::render {
 

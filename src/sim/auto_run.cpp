@@ -7,7 +7,7 @@
 
 #include "sim/model_registry.h"
 #include "sim/reduced/free_body_run.h"
-#include "sim/scene_names.h"
+#include "sim/scene/scene_names.h"
 
 namespace polyroll {
 

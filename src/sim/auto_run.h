@@ -2,7 +2,7 @@
 // impact model until the tracker step before it stops holding (docs/physics.md: the normal force it
 // needs turns negative, or the friction it needs exceeds the ramp's); from there the same rigid body
 // free to leave the ramp and to slide on it
-// (models/free_body_run.h: flights, vertex impacts, rolling and sliding), which hands the shell to
+// (sim/reduced/free_body_run.h: flights, vertex impacts, rolling and sliding), which hands the shell to
 // Box2D only where it meets a contact it does not model. Each stage is started by the registry
 // (model_registry.h) and the records carry on across each hand-over (HandOver); no Box2D world is
 // built unless the last one happens, which is where auto's speed comes from.

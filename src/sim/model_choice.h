@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 
@@ -16,7 +16,7 @@ struct ModelChoice {
     std::string reason;
     // For an empty shell: the tracker step before the rigid model's shell would lift off or slip (the
     // friction its rolling needs above the ramp's coefficient), from which
-    // the free rigid body (models/free_body.h) carries it on, flying, landing on vertices,
+    // the free rigid body (sim/reduced/free_body.h) carries it on, flying, landing on vertices,
     // rolling and sliding.
     std::optional<double> lift_off_time_s;
     // When the hand-over to `then` happened (a tracker step), if it did, and why; empty when the

@@ -14,7 +14,7 @@
 #include "sim/model_choice.h"
 #include "sim/reduced/free_body_run.h"
 #include "sim/reduced/reduced_run.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sim/grains/simulation.h"
 
 namespace polyroll {

@@ -11,7 +11,7 @@
 
 #include "sim/model_run.h"
 #include "sim/run_result.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 
@@ -99,7 +99,7 @@ std::unique_ptr<ModelRun> continue_run(const Scene& scene, const HandOver& from)
 // The scene's model computed only while it holds: its result's model_invalid_time_s says until when.
 // Throws InputError for a model without that mode.
 std::unique_ptr<ModelRun> start_run_while_valid(const Scene& scene);
-// The free rigid body (models/free_body_run.h): the rigid model's shell carried on from `from`, free to
+// The free rigid body (sim/reduced/free_body_run.h): the rigid model's shell carried on from `from`, free to
 // leave the ramp and to slide on it. The scene's fill is empty or full (fill_is_solid).
 std::unique_ptr<models::FreeBodyRun> continue_as_free_body(const Scene& scene, const HandOver& from);
 

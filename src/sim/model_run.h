@@ -11,8 +11,8 @@
 #include "sim/model_choice.h"
 #include "sim/run_result.h"
 #include "sim/run_snapshot.h"
-#include "sim/scene.h"
-#include "sim/shell_pose.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_pose.h"
 
 namespace polyroll {
 

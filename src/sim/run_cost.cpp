@@ -8,7 +8,7 @@
 #include "sim/dem3d/dem3d_input.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll {
 

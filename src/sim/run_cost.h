@@ -10,7 +10,7 @@
 // - The 3D reference: Yade's start, then its grains x DEM steps x a cost per grain-step.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -9,8 +9,8 @@
 #include "sim/grains/engine_units.h"
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
-#include "sim/scene.h"
-#include "sim/shell_properties.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

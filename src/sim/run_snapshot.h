@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

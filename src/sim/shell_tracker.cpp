@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/sample_clock.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
 #include "sim/model_run.h"
-#include "sim/scene.h"
-#include "sim/shell_pose.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_pose.h"
 
 namespace polyroll {
 

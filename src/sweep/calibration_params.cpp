@@ -9,7 +9,7 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 
 namespace polyroll::sweep {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 #include "sweep/observations.h"
 
 namespace polyroll::sweep {

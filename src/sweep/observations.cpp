@@ -13,10 +13,10 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/json_path.h"
+#include "sim/scene/json_path.h"
 #include "sim/message_text.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {

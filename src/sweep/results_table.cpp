@@ -9,8 +9,8 @@
 
 #include "sim/errors.h"
 #include "sim/results_io.h"
-#include "sim/scene_json.h"
-#include "sim/shell_label.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/shell_label.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {

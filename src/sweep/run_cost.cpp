@@ -7,7 +7,7 @@
 
 #include "sim/errors.h"
 #include "sim/run_cost.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::sweep {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::scenes {
 

@@ -9,7 +9,7 @@
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
-#include "sim/json_path.h"
+#include "sim/scene/json_path.h"
 #include "sim/message_text.h"
 #include "sweep/grid_values.h"
 

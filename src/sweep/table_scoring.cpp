@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <string>
 
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/results_table.h"
 #include "sweep/sweep_runner.h"
 

@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 
 #include "sim/assets.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/scene_matrices.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 #include "sweep/grid_values.h"
 
 namespace polyroll::sweep {

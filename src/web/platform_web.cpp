@@ -12,7 +12,7 @@
 
 #include "app/lane_set.h"
 #include "sim/measurements.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::app {
 

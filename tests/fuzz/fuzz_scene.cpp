@@ -8,7 +8,7 @@
 
 #include "sim/errors.h"
 #include "sim/message_text.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace polyroll;

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/shell_outline.h"
-#include "sim/geometry.h"
-#include "sim/scene_names.h"
-#include "sim/shell_pose.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_outline.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene_names.h"
+#include "sim/geometry/shell_pose.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll::dem3d {
 

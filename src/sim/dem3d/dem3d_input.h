@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::dem3d {
 

@@ -17,10 +17,10 @@
 
 #include "sim/dem3d/dem3d_input.h"
 #include "sim/dem3d/yade_process.h"
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/reduced/reveal.h"
-#include "sim/shell_properties.h"
-#include "sim/vertex_rounding.h"
+#include "sim/geometry/shell_properties.h"
+#include "sim/geometry/vertex_rounding.h"
 
 namespace polyroll::dem3d {
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/shell_pose.h"
+#include "sim/geometry/shell_pose.h"
 
 namespace polyroll::dem3d {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "sim/measurements.h"
-#include "sim/scene.h"
-#include "sim/shell_pose.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_pose.h"
 #include "sim/shell_tracker.h"
 
 namespace polyroll::dem3d {

@@ -3,7 +3,7 @@
 // engine's cost grows with the grains.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "sim/geometry.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/geometry.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

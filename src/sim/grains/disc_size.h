@@ -8,7 +8,7 @@
 // by k, each with k grains' mass, and as large as fits: k = 1 is one disc per grain.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sim/grains/disc_size.h"
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 namespace polyroll {
 

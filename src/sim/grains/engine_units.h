@@ -5,7 +5,7 @@
 // back to SI (m, kg, s) at the boundary. Mass and time keep their SI units inside the engine.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

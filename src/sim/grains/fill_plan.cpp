@@ -10,7 +10,7 @@
 #include "sim/errors.h"
 #include "sim/grains/grain_deposition.h"
 #include "sim/rng.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll {
 

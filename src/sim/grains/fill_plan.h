@@ -5,10 +5,10 @@
 
 #include <vector>
 
-#include "sim/geometry.h"
-#include "sim/scene.h"
-#include "sim/shell_outline.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_outline.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

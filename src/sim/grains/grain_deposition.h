@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 namespace polyroll {
 

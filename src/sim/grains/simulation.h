@@ -9,7 +9,7 @@
 #include "sim/grains/force_hook.h"
 #include "sim/model_run.h"
 #include "sim/run_result.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "sim/ramp_profile.h"
-#include "sim/vertex_rounding.h"
+#include "sim/geometry/ramp_profile.h"
+#include "sim/geometry/vertex_rounding.h"
 #include "sim/grains/world_parts.h"
 
 namespace polyroll {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "sim/grains/lid_friction.h"
-#include "sim/ramp_profile.h"
+#include "sim/geometry/ramp_profile.h"
 #include "sim/grains/world_parts.h"
 
 namespace polyroll {

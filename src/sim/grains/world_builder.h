@@ -13,10 +13,10 @@
 #include "sim/grains/engine_units.h"
 #include "sim/grains/fill_plan.h"
 #include "sim/grains/force_hook.h"
-#include "sim/geometry.h"
-#include "sim/scene.h"
-#include "sim/shell_pose.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_pose.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

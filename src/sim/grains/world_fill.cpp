@@ -17,6 +17,18 @@ b2Vec2 to_b2(Vec2 v_m, const EngineUnits& u) {
 // The slope the pile settles on: the track's at the release (the ramp's angle on a straight track).
 double ramp_angle_rad(const SimWorld& w) { return release_slope_deg(w.scene, w.shell_props) * geom::kPi / 180.0; }
 
+// Turns the shell and every grain together, as one rigid body, by `delta_rad` about `pivot`.
+void turn_all_about(SimWorld& w, b2Vec2 pivot, double delta_rad) {
+    auto turn = [&](b2Body* b) {
+        const b2Vec2 rel = b->GetPosition() - pivot;
+        const geom::Vec2 r = geom::rotate({rel.x, rel.y}, delta_rad);
+        b->SetTransform(pivot + b2Vec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                        b->GetAngle() + static_cast<float>(delta_rad));
+    };
+    turn(w.shell);
+    for (b2Body* b : w.grains) turn(b);
+}
+
 // A settled pile is never quite symmetric, and a full polygon's fill outweighs its shell several
 // times: a millimetre's lean of the pile moves the whole body's centre of mass further than the
 // release tilt does. The hand that holds the polygon on its vertex feels the balance of the whole
@@ -45,14 +57,7 @@ double balance_on_pivot(SimWorld& w, double theta) {
     const double turned = -w.shell->GetAngle();
     const double face_turn = 2.0 * geom::kPi / w.scene.shell.sides;
     const double delta = std::clamp(target_rad - lean_rad, -0.9 * (face_turn - turned), 0.9 * turned);
-    auto turn = [&](b2Body* b) {
-        const b2Vec2 rel = b->GetPosition() - pivot;
-        const geom::Vec2 r = geom::rotate({rel.x, rel.y}, delta);
-        b->SetTransform(pivot + b2Vec2(static_cast<float>(r.x), static_cast<float>(r.y)),
-                        b->GetAngle() + static_cast<float>(delta));
-    };
-    turn(w.shell);
-    for (b2Body* b : w.grains) turn(b);
+    turn_all_about(w, pivot, delta);
     return delta * 180.0 / geom::kPi;
 }
 
@@ -66,14 +71,7 @@ void tip_onto_vertex(SimWorld& w) {
     const geom::Vec2 v1 = w.outer_local_m[1];
     const b2Vec2 pivot = w.shell->GetWorldPoint(b2Vec2(static_cast<float>(u.to_units(v1.x)),
                                                        static_cast<float>(u.to_units(v1.y))));
-    auto turn = [&](b2Body* b) {
-        const b2Vec2 rel = b->GetPosition() - pivot;
-        const geom::Vec2 r = geom::rotate({rel.x, rel.y}, delta);
-        b->SetTransform(pivot + b2Vec2(static_cast<float>(r.x), static_cast<float>(r.y)),
-                        b->GetAngle() + static_cast<float>(delta));
-    };
-    turn(w.shell);
-    for (b2Body* b : w.grains) turn(b);
+    turn_all_about(w, pivot, delta);
     // Turned about the sharp vertex, a rounded one stands above the ramp: down onto its arc.
     const b2Vec2 sink = {0.0f, -static_cast<float>(u.to_units(rounding_drop_m(w, w.shell->GetAngle())))};
     for (b2Body* b : w.grains) b->SetTransform(b->GetPosition() + sink, b->GetAngle());

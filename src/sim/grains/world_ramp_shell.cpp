@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "sim/vertex_rounding.h"
+#include "sim/geometry/vertex_rounding.h"
 
 namespace polyroll::world_parts {
 

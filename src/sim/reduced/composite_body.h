@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 namespace polyroll::models {
 

@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
 #include "sim/reduced/ramp_frame.h"
-#include "sim/shell_pose.h"
+#include "sim/geometry/shell_pose.h"
 
 namespace polyroll::models {
 

@@ -4,18 +4,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/model_choice.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/reveal.h"
 #include "sim/run_snapshot.h"
-#include "sim/shell_pose.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_pose.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll::models {
 
-namespace {
-FreeBodyStart start_from(const HandOver& from, double step_hz) {
+FreeBodyStart free_body_start(const HandOver& from, double step_hz) {
     FreeBodyStart s;
     s.time_s = static_cast<double>(from.steps) / step_hz;
     s.state = from.shell;
@@ -25,7 +24,6 @@ FreeBodyStart start_from(const HandOver& from, double step_hz) {
     s.measured = from.measured;
     return s;
 }
-}  // namespace
 
 FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from)
     : RevealedRun(scene, from.steps, from.measured), from_(from) {
@@ -43,7 +41,7 @@ FreeBodyRun::FreeBodyRun(const Scene& scene, const HandOver& from)
         body_.mass_kg += fill_mass_kg_;
         body_.inertia_kg_m2 += b.fill_areal_density_kg_m2 * inside.polar_moment_cm;
     }
-    full_ = free_body_motion(body_, ramp_frame(scene), start_from(from, scene.fidelity.step_hz));
+    full_ = free_body_motion(body_, ramp_frame(scene), free_body_start(from, scene.fidelity.step_hz));
     if (full_.unsupported_time_s)
         hand_over_step_ = std::max(from.steps, static_cast<long>(std::floor(*full_.unsupported_time_s * scene.fidelity.step_hz)));
     reveal();

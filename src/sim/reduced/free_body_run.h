@@ -11,6 +11,10 @@
 
 namespace polyroll::models {
 
+// Where a free body carries on a run another model hands over: the time (its steps at `step_hz`),
+// the shell's state and the records so far.
+FreeBodyStart free_body_start(const HandOver& from, double step_hz);
+
 class FreeBodyRun final : public RevealedRun {
 public:
     // `scene` has no fill (fill.ratio 0); `from` is the state of the model that ran before.

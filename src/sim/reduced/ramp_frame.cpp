@@ -1,9 +1,9 @@
 // The ramp frame of a scene: see ramp_frame.h.
 #include "sim/reduced/ramp_frame.h"
 
-#include "sim/ramp_profile.h"
-#include "sim/shell_pose.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/ramp_profile.h"
+#include "sim/geometry/shell_pose.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll::models {
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "sim/sample_clock.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::models {
 

@@ -4,7 +4,7 @@
 #include <chrono>
 
 #include "sim/grains/fill_plan.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll::models {
 

@@ -6,7 +6,7 @@
 
 #include "sim/reduced/rolling_polygon.h"
 #include "sim/run_result.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll::models {
 

@@ -7,8 +7,8 @@
 #include "sim/reduced/composite_body.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/reveal.h"
-#include "sim/ramp_profile.h"
-#include "sim/shell_pose.h"
+#include "sim/geometry/ramp_profile.h"
+#include "sim/geometry/shell_pose.h"
 
 namespace polyroll::models {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/run_snapshot.h"
 
 namespace polyroll::models {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
 #include "sim/model_run.h"
 

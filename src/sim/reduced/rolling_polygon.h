@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
 #include "sim/reduced/composite_body.h"
 #include "sim/reduced/ramp_frame.h"

@@ -1,5 +1,5 @@
 // Scene JSON: layering presets and overrides, type checks, and the resolved form. See scene_json.h.
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -15,11 +15,11 @@
 
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/json_path.h"
+#include "sim/scene/json_path.h"
 #include "sim/message_text.h"
-#include "sim/scene_fields.h"
-#include "sim/scene_names.h"
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_names.h"
+#include "sim/scene/scene_validate.h"
 
 namespace polyroll {
 namespace {

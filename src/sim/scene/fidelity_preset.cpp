@@ -1,5 +1,5 @@
 // A scene moved to a fidelity preset: see fidelity_preset.h.
-#include "sim/fidelity_preset.h"
+#include "sim/scene/fidelity_preset.h"
 
 #include "sim/assets.h"
 

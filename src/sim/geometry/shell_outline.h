@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "sim/geometry.h"
-#include "sim/scene.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

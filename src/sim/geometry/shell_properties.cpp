@@ -1,9 +1,9 @@
 // Derived shell properties: see shell_properties.h.
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 
 #include <cmath>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 namespace polyroll {
 

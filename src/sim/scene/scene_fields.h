@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "sim/assets.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -1,16 +1,16 @@
 // The table of scene fields: see scene_fields.h. The limits are the physical and practical bounds of
 // each value (the reasons beside them); the messages that name them are in scene_validate.cpp.
-#include "sim/scene_fields.h"
+#include "sim/scene/scene_fields.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/model_registry.h"
-#include "sim/scene_names.h"
-#include "sim/shell_properties.h"
+#include "sim/scene/scene_names.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 namespace {

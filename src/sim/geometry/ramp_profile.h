@@ -11,8 +11,8 @@
 // types: the Box2D world, the tracker and the 3D reference's input all read it.
 #pragma once
 
-#include "sim/geometry.h"
-#include "sim/scene.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

@@ -1,5 +1,5 @@
 // Plane geometry for polyroll: see geometry.h.
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Range checks for scenes: see scene_validate.h. The limits are the rows of scene_fields.cpp; the
 // checks that span several fields (the grain count, the release tilt, the model on a curved track)
 // are here, after their section.
-#include "sim/scene_validate.h"
+#include "sim/scene/scene_validate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +13,13 @@
 
 #include "sim/grains/disc_size.h"
 #include "sim/errors.h"
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/model_registry.h"
-#include "sim/ramp_profile.h"
-#include "sim/scene_names.h"
-#include "sim/scene_fields.h"
-#include "sim/shell_pose.h"
-#include "sim/shell_properties.h"
+#include "sim/geometry/ramp_profile.h"
+#include "sim/scene/scene_names.h"
+#include "sim/scene/scene_fields.h"
+#include "sim/geometry/shell_pose.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 namespace {

@@ -1,5 +1,5 @@
 // The shell's name: see shell_label.h.
-#include "sim/shell_label.h"
+#include "sim/scene/shell_label.h"
 
 #include <array>
 #include <exception>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "sim/assets.h"
-#include "sim/scene_json.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll {
 

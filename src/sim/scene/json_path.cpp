@@ -1,5 +1,5 @@
 // "a.b.c" paths into JSON documents: see json_path.h.
-#include "sim/json_path.h"
+#include "sim/scene/json_path.h"
 
 #include <algorithm>
 #include <string>

@@ -3,10 +3,10 @@
 // hand-over between models all speak in these terms.
 #pragma once
 
-#include "sim/geometry.h"
+#include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
-#include "sim/scene.h"
-#include "sim/shell_properties.h"
+#include "sim/scene/scene.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

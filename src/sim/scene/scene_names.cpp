@@ -1,5 +1,5 @@
 // The scene's enumeration names: see scene_names.h.
-#include "sim/scene_names.h"
+#include "sim/scene/scene_names.h"
 
 #include <array>
 #include <utility>

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/scene.h"
-#include "sim/scene_names.h"  // to_string of the enums, for the files that name them
+#include "sim/scene/scene.h"
+#include "sim/scene/scene_names.h"  // to_string of the enums, for the files that name them
 
 namespace polyroll {
 

@@ -1,11 +1,11 @@
 // The shell's pose and state in the ramp frame: see shell_pose.h.
-#include "sim/shell_pose.h"
+#include "sim/geometry/shell_pose.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "sim/shell_outline.h"
-#include "sim/ramp_profile.h"
+#include "sim/geometry/shell_outline.h"
+#include "sim/geometry/ramp_profile.h"
 
 namespace polyroll {
 

@@ -1,11 +1,11 @@
 // The shell's rounded outer vertices: see vertex_rounding.h.
-#include "sim/vertex_rounding.h"
+#include "sim/geometry/vertex_rounding.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 
 namespace polyroll {
 

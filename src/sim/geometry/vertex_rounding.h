@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "sim/geometry.h"
-#include "sim/scene.h"
+#include "sim/geometry/geometry.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 

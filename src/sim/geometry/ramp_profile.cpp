@@ -1,5 +1,5 @@
 // The track's shape: see ramp_profile.h.
-#include "sim/ramp_profile.h"
+#include "sim/geometry/ramp_profile.h"
 
 #include <cmath>
 

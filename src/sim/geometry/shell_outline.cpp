@@ -1,7 +1,7 @@
 // The shell's outlines: see shell_outline.h.
-#include "sim/shell_outline.h"
+#include "sim/geometry/shell_outline.h"
 
-#include "sim/shell_properties.h"
+#include "sim/geometry/shell_properties.h"
 
 namespace polyroll {
 

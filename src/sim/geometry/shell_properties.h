@@ -2,7 +2,7 @@
 // inertia of the real 3D box about its roll axis, which the 2D body is given.
 #pragma once
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace polyroll {
 
