@@ -244,6 +244,7 @@ ChildExit run_child(const std::vector<std::string>& argv, const ChildOptions& o)
 
 void replace_process(const std::vector<std::string>& argv) {
     std::vector<char*> args;
+    args.reserve(argv.size() + 1);
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
     ::execv(args[0], args.data());

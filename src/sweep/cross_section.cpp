@@ -321,6 +321,7 @@ CrossSectionReport analyse_cross_section(const SweepPlan& plan, const TableFile&
     std::map<Scene2, ByModel> by;
     for (const Run& r : runs) by[{r.shell, r.fill}][r.model][r.angle].push_back(&r);
     std::vector<SceneComparison> scenes;
+    scenes.reserve(by.size());
     for (auto& [scene, models] : by) scenes.push_back(compare_scene(scene, models));
     const std::string md = intro_text() + thresholds_table(scenes) + summary_text(summarise(scenes)) + every_run_table(by);
     return {md, maps_csv(runs)};
