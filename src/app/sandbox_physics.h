@@ -40,7 +40,7 @@ private:
     void apply(const PhysicsRequests& r, PhysicsOutcome& out);
     void step_frame(double wall_dt_s, PhysicsOutcome& out);
     void build_chosen();
-    // After a playing frame: learns the cost per grain step, which updates the offer (never the lanes).
+    // After a playing frame: learns the seconds per cost unit, which update the offer (never the lanes).
     void measure(double wall_dt_s, double sim_dt_s, double physics_s, double cost_units);
     void update_offer();
 
