@@ -147,7 +147,7 @@ def main():
         return SKIP
     script = os.path.join(source_dir, "src", "figures", "polyroll_figures.py")
     module = load(script, "polyroll_figures")
-    # The canvas check is polyroll validate's own (one check for every figure the script draws).
+    # The canvas check and the report are polyroll validate's own (one check for every figure the script draws).
     canvas = load(os.path.join(source_dir, "tests", "check_validate_figures.py"), "check_validate_figures")
     global canvas_check, matplotlib
     canvas_check = canvas
@@ -221,10 +221,7 @@ def main():
                   "speed_vs_time: the CSV does not hold every trajectory row")
     for fig, _ in figures.values():
         plt.close(fig)
-    for f in failures:
-        print("FAILED:", f)
-    print("ok" if not failures else f"{len(failures)} check(s) failed")
-    return 1 if failures else 0
+    return canvas_check.report(failures)
 
 
 if __name__ == "__main__":

@@ -66,6 +66,14 @@ def check(condition, what, failures):
         failures.append(what)
 
 
+def report(failures):
+    """Prints each failure and the verdict; the exit status (also check_sweep_figures.py's)."""
+    for f in failures:
+        print("FAILED:", f)
+    print("ok" if not failures else f"{len(failures)} check(s) failed")
+    return 1 if failures else 0
+
+
 def close(a, b):
     return math.isclose(float(a), float(b), rel_tol=1e-9, abs_tol=1e-9)
 
@@ -213,10 +221,7 @@ def main():
             check_d_csv(read_csv(os.path.join(out, "d_vs_angle-band.csv")), lines, fixture_rows, failures)
             check_map_csv(read_csv(os.path.join(out, "behaviour_map.csv")), failures)
     check_measured_only(module, script, scorecard, results_path, failures)
-    for f in failures:
-        print("FAILED:", f)
-    print("ok" if not failures else f"{len(failures)} check(s) failed")
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

@@ -33,6 +33,7 @@
 #include "render/world_draw.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/model_registry.h"
 #include "sim/scene/scene_fields.h"
 #include "sim/geometry/shell_properties.h"
 #include "sim/scene/scene_json.h"
@@ -45,6 +46,20 @@ using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 namespace {
+
+// The window's scene view at 1280 x 800 beside a 400 px panel, at UI scale 1.
+SceneViewOptions window_view_options() {
+    SceneViewOptions o;
+    o.width_px = 1280;
+    o.height_px = 800;
+    o.area = {400, 47, 880, 465};
+    return o;
+}
+
+render::DrawList window_scene_view(const std::vector<render::Snapshot>& snaps) {
+    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
+    return build_scene_view(snaps, window_view_options(), font);
+}
 
 // "shell.sides" -> value, for every leaf of the resolved scene.
 void flatten(const json& j, const std::string& prefix, std::map<std::string, json>& out) {
@@ -204,27 +219,27 @@ TEST_CASE("panel values are clamped to their valid range and names are checked",
     LaneControls l = state_for_preset("default").lanes[0].controls;
     SharedControls s = state_for_preset("default").shared;
     set_control(l, "shell.sides", 1);
-    CHECK(l.sides == scene_field("shell.sides").min);
+    CHECK(l.values.shell.sides == scene_field("shell.sides").min);
     set_control(l, "shell.sides", 1000);
-    CHECK(l.sides == scene_field("shell.sides").max);
+    CHECK(l.values.shell.sides == scene_field("shell.sides").max);
     set_control(l, "fill.ratio", -0.5);
-    CHECK(l.fill_ratio == 0.0);
+    CHECK(l.values.fill.ratio == 0.0);
     set_control(l, "fill.ratio", 1.7);
-    CHECK(l.fill_ratio == 1.0);
+    CHECK(l.values.fill.ratio == 1.0);
     set_control(l, "fill.ratio", std::numeric_limits<double>::quiet_NaN());
-    CHECK(l.fill_ratio == 0.0);
+    CHECK(l.values.fill.ratio == 0.0);
     set_control(s, "ramp.angle_deg", 95.0);
-    CHECK(s.angle_deg == scene_field("ramp.angle_deg").max);
+    CHECK(s.values.ramp.angle_deg == scene_field("ramp.angle_deg").max);
     set_control(s, "ramp.angle_deg", -3.0);
-    CHECK(s.angle_deg == 0.0);
+    CHECK(s.values.ramp.angle_deg == 0.0);
     set_control(l, "fill.material.friction", 5.0);
-    CHECK(l.grain_friction == scene_field("fill.material.friction").max);
+    CHECK(l.values.fill.material.friction == scene_field("fill.material.friction").max);
     set_control(l, "fill.material.restitution", -1.0);
-    CHECK(l.grain_restitution == 0.0);
+    CHECK(l.values.fill.material.restitution == 0.0);
     set_control(s, "ramp.friction", -2.0);
-    CHECK(s.ramp_friction == 0.0);
+    CHECK(s.values.ramp.friction == 0.0);
     set_control(s, "ramp.restitution", 3.0);
-    CHECK(s.ramp_restitution == 1.0);
+    CHECK(s.values.ramp.restitution == 1.0);
     // Clamped values always make a scene the core accepts.
     CHECK_NOTHROW(lane_scene(json::object(), l, s));
     CHECK_THROWS_AS(set_material(l, "sand"), InputError);
@@ -256,6 +271,30 @@ TEST_CASE("each panel control is a row naming a labelled field of the scene tabl
     SharedControls s;
     CHECK_THROWS_AS(set_control(l, "ramp.angle_deg", 10.0), std::logic_error);  // a shared row, not a lane's
     CHECK_THROWS_AS(set_control(s, "fill.ratio", 0.5), std::logic_error);
+}
+
+TEST_CASE("every panel row names a scene field with a widget and the model combo offers the registry's window models", "[app]") {
+    for (const ControlRow& row : control_rows()) {
+        INFO(row.path);
+        const SceneField& f = scene_field(row.path);  // throws for a row naming no field
+        CHECK(f.type != FieldType::optional_number);   // no widget draws one
+        CHECK_FALSE(control_label(row).empty());
+        if (row.offered) {
+            REQUIRE(f.type == FieldType::choice);
+            for (const std::string& name : row.offered()) CHECK(f.choice_named(name).has_value());
+        }
+    }
+    const ControlRow& model = control_row("run.model");
+    REQUIRE(model.offered != nullptr);
+    CHECK(model.offered() == window_model_names());
+    CHECK(std::find(model.offered().begin(), model.offered().end(), "dem3d") == model.offered().end());
+    // The shared controls hold the model chosen; the lane's are not touched.
+    LaneControls lane = state_for_preset("default").lanes[0].controls;
+    SharedControls shared = state_for_preset("default").shared;
+    const LaneControls lane_before = lane;
+    set_control(lane, shared, "run.model", Model::segments);
+    CHECK(shared.values.run.model == Model::segments);
+    CHECK(lane == lane_before);
 }
 
 TEST_CASE("the controls read from a scene give that scene back", "[app]") {
@@ -503,13 +542,8 @@ TEST_CASE("the scene view draws every lane's shell inside the view, with labels 
     LaneSet lanes;
     lanes.rebuild({s, s});
     lanes.wait_until_built();
-    const std::vector<render::Snapshot> snaps = {lanes.lane(0).snapshot(), lanes.lane(1).snapshot()};
-    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
-    SceneViewOptions o;
-    o.width_px = 1280;
-    o.height_px = 800;
-    o.area = {400, 47, 880, 465};
-    const render::DrawList dl = build_scene_view(snaps, o, font);
+    const SceneViewOptions o = window_view_options();
+    const render::DrawList dl = window_scene_view({lanes.lane(0).snapshot(), lanes.lane(1).snapshot()});
     CHECK(dl.width_px == 1280);
     int walls = 0, glyphs = 0;
     for (const render::Layer& l : dl.layers) {
@@ -575,12 +609,8 @@ TEST_CASE("with four lanes the close-up hides no lane's start", "[app]") {
     lanes.wait_until_built();
     std::vector<render::Snapshot> snaps;
     for (size_t i = 0; i < 4; ++i) snaps.push_back(lanes.lane(i).snapshot());
-    const render::FontAtlas font(render::find_font_dir(), scene_view_fonts(1.0f));
-    SceneViewOptions o;
-    o.width_px = 1280;
-    o.height_px = 800;
-    o.area = {400, 47, 880, 465};
-    const render::DrawList dl = build_scene_view(snaps, o, font);
+    const SceneViewOptions o = window_view_options();
+    const render::DrawList dl = window_scene_view(snaps);
     // The inset's box: the bounds of its background triangles.
     float top = 1e9f, right = -1e9f;
     for (const render::Layer& l : dl.layers)
@@ -672,7 +702,7 @@ TEST_CASE("a value typed outside a control's range is clamped with a note saying
     // The control itself keeps the clamped value (controls.h), as the note says.
     LaneControls c;
     set_control(c, "fill.ratio", 50);
-    CHECK(c.fill_ratio == r.max);
+    CHECK(c.values.fill.ratio == r.max);
 }
 
 TEST_CASE("a slider's value is drawn beside its knob, never under it, and inside its frame", "[app]") {
@@ -773,7 +803,7 @@ TEST_CASE("a preset stays lit only while the scene is the preset's, and the poly
     apply_page_settings(parse_window_flags({{"preset", "octagon-bb"}}), named);
     CHECK(shows_loaded_preset(named));
     // Loading a preset again lights it again.
-    s.lanes[0].controls.sides = 8;
+    s.lanes[0].controls.values.shell.sides = 8;
     CHECK_FALSE(shows_loaded_preset(s));
     load_preset(s, "hexagon-bb");
     CHECK(shows_loaded_preset(s));

@@ -19,8 +19,8 @@
 #include "render/snapshot.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
-#include "sim/geometry/geometry.h"
 #include "sim/scene/scene_json.h"
+#include "known_snapshot.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -177,16 +177,8 @@ TEST_CASE("a fourth material in a scratch asset folder shows in the frames", "[a
     CHECK(render::material_label("lentils") == "red lentils");
     CHECK(render::material_colour("lentils") == render::rgb8(200, 90, 40));
     // The draw list: every grain in the lentils' colour.
-    render::Snapshot s;
-    s.sides = 4;
-    s.fill_ratio = 0.25;
-    s.ramp_angle_deg = 30.0;
-    s.ramp_length_m = 1.0;
+    render::Snapshot s = test::known_snapshot();
     s.material = "lentils";
-    s.outer_local_m = geom::regular_polygon(4, 0.04, -geom::kPi / 4);
-    s.inner_local_m = geom::regular_polygon(4, 0.035, -geom::kPi / 4);
-    s.shell_centre_m = {0.4, 0.04 * std::cos(geom::kPi / 4)};
-    s.grains = {{{0.39, 0.012}, 0.003, 0.1}, {{0.41, 0.012}, 0.003, 0.2}};
     render::FrameOptions o;
     o.width_px = 640;
     o.height_px = 360;
@@ -199,7 +191,7 @@ TEST_CASE("a fourth material in a scratch asset folder shows in the frames", "[a
         ++grains;
         CHECK(shape.fill == render::rgb8(200, 90, 40));
     }
-    CHECK(grains == 2);
+    CHECK(grains == 3);  // the snapshot's three
     fs::remove_all(dir);
 }
 
@@ -220,8 +212,8 @@ TEST_CASE("a fourth material in a scratch asset folder shows on the sandbox pane
     app::LaneControls lane = app::lane_controls_from(resolve_scene({}));
     const app::SharedControls shared = app::shared_controls_from(resolve_scene({}));
     app::set_material(lane, "lentils");
-    CHECK(lane.grain_friction == 0.45);
-    CHECK(lane.grain_restitution == 0.2);
+    CHECK(lane.values.fill.material.friction == 0.45);
+    CHECK(lane.values.fill.material.restitution == 0.2);
     const Scene scene = app::lane_scene(json::object(), lane, shared);
     CHECK(scene.fill.material.diameter_m == 0.0045);
     const std::vector<Scene> lanes = app::resolve_preset(app::sandbox_preset("hexagon-lentils"));

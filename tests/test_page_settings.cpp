@@ -42,10 +42,10 @@ TEST_CASE("page address: preset and scene controls are read and applied to the s
     SandboxState s = state_for_preset("default");
     apply_page_settings(p, s);
     const LaneControls& lane = s.lanes.at(0).controls;
-    CHECK(lane.sides == 8);
-    CHECK(lane.fill_ratio == 0.375);
-    CHECK(lane.material == "rice");
-    CHECK(s.shared.angle_deg == 14.0);
+    CHECK(lane.values.shell.sides == 8);
+    CHECK(lane.values.fill.ratio == 0.375);
+    CHECK(lane.values.fill.material.preset == "rice");
+    CHECK(s.shared.values.ramp.angle_deg == 14.0);
     CHECK(s.playing);
 
     const PageSettings race = parse_page_query("preset=race&frames=240&paused");

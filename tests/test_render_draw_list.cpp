@@ -19,6 +19,7 @@
 #include "sim/geometry/geometry.h"
 #include "sim/grains/simulation.h"
 #include "sim/grains/world_builder.h"
+#include "known_snapshot.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -26,27 +27,7 @@ using namespace polyroll::render;
 
 namespace {
 
-// A square shell (outer radius 4 cm, inner 3.5 cm) on a 1 m ramp at 30 degrees, with three grains.
-Snapshot known_snapshot() {
-    Snapshot s;
-    s.sides = 4;
-    s.fill_ratio = 0.25;
-    s.ramp_angle_deg = 30.0;
-    s.ramp_length_m = 1.0;
-    s.material = "bb";
-    s.outer_local_m = geom::regular_polygon(4, 0.04, -geom::kPi / 4);
-    s.inner_local_m = geom::regular_polygon(4, 0.035, -geom::kPi / 4);
-    s.time_s = 0.5;
-    s.shell_centre_m = {0.4, 0.04 * std::cos(geom::kPi / 4)};
-    s.shell_angle_rad = 0.1;
-    s.grains = {{{0.39, 0.012}, 0.003, 0.1}, {{0.41, 0.012}, 0.003, 0.2}, {{0.40, 0.018}, 0.004, 0.3}};
-    s.now.time_s = 0.5;
-    s.now.position_m = 0.3;
-    s.now.speed_m_s = 0.42;
-    s.impacts = 3;
-    s.speed_history = {{0.0, 0.0}, {0.25, 0.3}, {0.5, 0.42}};
-    return s;
-}
+using test::known_snapshot;
 
 const FontAtlas& atlas_for(const FrameOptions& o) {
     static std::vector<std::unique_ptr<FontAtlas>> keep;

@@ -23,92 +23,71 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-// The struct a member pointer belongs to: LaneControls or SharedControls.
-template <class Pointer>
-struct MemberOf;
-template <class Owner, class Value>
-struct MemberOf<Value Owner::*> {
-    using type = Owner;
-};
-
-// Of the two structs, the one holding `Owner`'s members (const or not, as given).
-template <class Owner, class Lane, class Shared>
-auto& holder(Lane& lane, Shared& shared) {
-    if constexpr (std::is_same_v<std::remove_const_t<Lane>, Owner>) return lane;
-    else return shared;
-}
-
-// A row whose value is a member of LaneControls (a lane's control) or of SharedControls (shared).
-template <auto Member>
-ControlRow row(std::string_view path, PanelSection section) {
-    using Owner = typename MemberOf<decltype(Member)>::type;
-    static_assert(std::is_same_v<Owner, LaneControls> || std::is_same_v<Owner, SharedControls>);
-    ControlRow r;
-    r.path = path;
-    r.scope = std::is_same_v<Owner, LaneControls> ? Scope::lane : Scope::shared;
-    r.section = section;
-    r.get = [](const LaneControls& l, const SharedControls& c) { return FieldValue(holder<Owner>(l, c).*Member); };
-    r.put = [](LaneControls& l, SharedControls& c, const FieldValue& v) {
-        auto& member = holder<Owner>(l, c).*Member;
-        member = std::get<std::decay_t<decltype(member)>>(v);
-    };
-    return r;
-}
-
-// The row with the panel's additions, named.
-struct With {
-    std::string_view note = {}, format = {};
-    std::optional<double> slider_max = {};
-    std::vector<RadioOption> radio = {};
-    std::string_view label = {};
-};
-ControlRow with(ControlRow r, With w) {
-    r.note = w.note;
-    r.format = w.format;
-    r.slider_max = w.slider_max;
-    r.radio = std::move(w.radio);
-    r.label = w.label;
-    return r;
-}
-
 using S = PanelSection;
+constexpr Scope kLane = Scope::lane;
+constexpr Scope kShared = Scope::shared;
 
+// The panel's rows, in its order: each names its scene field and whose value it is; the field's row
+// gives the widget, limits, label and help, the row what the panel adds.
 std::vector<ControlRow> make_rows() {
     return {
         // --- this lane: the polygon and its fill
-        with(row<&LaneControls::polygon>("shell.preset", S::lane),
-             {.note = "This lane's shell; n below can change its number of sides."}),
-        with(row<&LaneControls::sides>("shell.sides", S::lane),
-             {.format = "%d", .slider_max = kSidesSliderMax}),
-        with(row<&LaneControls::fill_ratio>("fill.ratio", S::lane), {.format = "%.3g"}),
-        with(row<&LaneControls::material>("fill.material.preset", S::lane),
-             {.note = "Friction and restitution can be changed under Advanced."}),
+        {.path = "shell.preset", .scope = kLane, .section = S::lane,
+         .note = "This lane's shell; n below can change its number of sides."},
+        {.path = "shell.sides", .scope = kLane, .section = S::lane, .format = "%d", .slider_max = kSidesSliderMax},
+        {.path = "fill.ratio", .scope = kLane, .section = S::lane, .format = "%.3g"},
+        {.path = "fill.material.preset", .scope = kLane, .section = S::lane,
+         .note = "Friction and restitution can be changed under Advanced."},
         // --- all lanes: the ramp and the physics
-        with(row<&SharedControls::angle_deg>("ramp.angle_deg", S::ramp),
-             {.note = "All lanes.", .format = "%.1f\u00B0", .slider_max = kAngleSliderMaxDeg}),
-        with(row<&SharedControls::seed>("run.seed", S::ramp),
-             {.note = "All lanes: the same seed gives the same run (as polyroll run --seed and the page's ?seed= "
-                      "do); another seed, another packing of the same fill, to see how much the outcome varies.",
-              .label = "seed"}),
-        with(row<&SharedControls::ramp>("ramp.preset", S::physics), {.note = "All lanes roll on it."}),
-        with(row<&SharedControls::pose>("release.pose", S::physics),
-             {.radio = {{"vertex", "on a vertex",
-                         "Held on a vertex with the centre straight above it, then let go (as in the experiment)."},
-                        {"face", "on a face", "Set down flat on a face, then let go."},
-                        {"tipped", "tipped", "Filled lying on a face, then stood on its vertex with the pile as it "
-                                             "lay, and let go."}}}),
-        row<&SharedControls::model>("run.model", S::physics),
-        row<&SharedControls::fidelity>("fidelity.preset", S::physics),
+        {.path = "ramp.angle_deg", .scope = kShared, .section = S::ramp, .note = "All lanes.",
+         .format = "%.1f\u00B0", .slider_max = kAngleSliderMaxDeg},
+        {.path = "run.seed", .scope = kShared, .section = S::ramp,
+         .note = "All lanes: the same seed gives the same run (as polyroll run --seed and the page's ?seed= do); "
+                 "another seed, another packing of the same fill, to see how much the outcome varies.",
+         .label = "seed"},
+        {.path = "ramp.preset", .scope = kShared, .section = S::physics, .note = "All lanes roll on it."},
+        {.path = "release.pose", .scope = kShared, .section = S::physics,
+         .radio = {{"vertex", "on a vertex",
+                    "Held on a vertex with the centre straight above it, then let go (as in the experiment)."},
+                   {"face", "on a face", "Set down flat on a face, then let go."},
+                   {"tipped", "tipped", "Filled lying on a face, then stood on its vertex with the pile as it lay, "
+                                        "and let go."}}},
+        // The window offers the everyday models and auto: the 3D reference takes a minute of CPU a run.
+        {.path = "run.model", .scope = kShared, .section = S::physics,
+         .note = "All lanes. The window offers all but dem3d, the 3D reference (about a minute of CPU a run); the "
+                 "reduced models compute a whole run in under a millisecond and draw the shell only.",
+         .offered = window_model_names},
+        {.path = "fidelity.preset", .scope = kShared, .section = S::physics},
         // --- Advanced: friction and restitution, reset by choosing a material or a ramp
-        with(row<&LaneControls::grain_friction>("fill.material.friction", S::advanced),
-             {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
-        with(row<&LaneControls::grain_restitution>("fill.material.restitution", S::advanced),
-             {.note = "This lane. Choosing a material resets it.", .format = "%.2f"}),
-        with(row<&SharedControls::ramp_friction>("ramp.friction", S::advanced),
-             {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
-        with(row<&SharedControls::ramp_restitution>("ramp.restitution", S::advanced),
-             {.note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"}),
+        {.path = "fill.material.friction", .scope = kLane, .section = S::advanced,
+         .note = "This lane. Choosing a material resets it.", .format = "%.2f"},
+        {.path = "fill.material.restitution", .scope = kLane, .section = S::advanced,
+         .note = "This lane. Choosing a material resets it.", .format = "%.2f"},
+        {.path = "ramp.friction", .scope = kShared, .section = S::advanced,
+         .note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"},
+        {.path = "ramp.restitution", .scope = kShared, .section = S::advanced,
+         .note = "All lanes. Choosing a ramp resets it.", .format = "%.2f"},
     };
+}
+
+// The scene holding a row's value: the lane's or the shared controls' (const or not, as given).
+template <class Lane, class Shared>
+auto& values_of(const ControlRow& row, Lane& lane, Shared& shared) {
+    return row.scope == Scope::lane ? lane.values : shared.values;
+}
+
+void put(const ControlRow& row, LaneControls& lane, SharedControls& shared, const FieldValue& value) {
+    scene_field(row.path).access.set(values_of(row, lane, shared), value);
+}
+
+// Whether two scenes agree on the fields of a scope's rows.
+bool same_controls(const Scene& a, const Scene& b, Scope scope) {
+    for (const ControlRow& r : control_rows()) {
+        if (r.scope != scope) continue;
+        const FieldAccess& access = scene_field(r.path).access;
+        if (!(access.get(a) == access.get(b))) return false;
+    }
+    return true;
 }
 
 double clamp_finite(double v, double lo, double hi) {
@@ -185,14 +164,21 @@ std::string_view control_label(const ControlRow& row) {
     return label.empty() ? row.label : label;
 }
 
+bool LaneControls::operator==(const LaneControls& other) const {
+    return same_controls(values, other.values, Scope::lane);
+}
+bool SharedControls::operator==(const SharedControls& other) const {
+    return same_controls(values, other.values, Scope::shared);
+}
+
 FieldValue control_value(const ControlRow& row, const LaneControls& lane, const SharedControls& shared) {
-    return row.get(lane, shared);
+    return scene_field(row.path).access.get(values_of(row, lane, shared));
 }
 
 void set_control(LaneControls& lane, SharedControls& shared, std::string_view path, const FieldValue& value) {
     const ControlRow& row = control_row(path);
     const SceneField& f = scene_field(path);
-    row.put(lane, shared, checked(f, value));
+    put(row, lane, shared, checked(f, value));
     if (f.type != FieldType::preset) return;
     // The preset's values for the controls of its section, clamped as typed ones are.
     const std::string_view section = section_of(path);
@@ -217,20 +203,8 @@ void set_control(SharedControls& shared, std::string_view path, const FieldValue
     set_control(unused, shared, path, value);
 }
 
-namespace {
-template <class Controls>
-Controls controls_from(const Scene& s, Scope scope) {
-    LaneControls lane;
-    SharedControls shared;
-    for (const ControlRow& r : control_rows())
-        if (r.scope == scope) r.put(lane, shared, scene_field(r.path).access.get(s));
-    if constexpr (std::is_same_v<Controls, LaneControls>) return lane;
-    else return shared;
-}
-}  // namespace
-
-LaneControls lane_controls_from(const Scene& s) { return controls_from<LaneControls>(s, Scope::lane); }
-SharedControls shared_controls_from(const Scene& s) { return controls_from<SharedControls>(s, Scope::shared); }
+LaneControls lane_controls_from(const Scene& s) { return {s}; }
+SharedControls shared_controls_from(const Scene& s) { return {s}; }
 
 json controls_layer(const LaneControls& lane, const SharedControls& shared) {
     json doc = json::object();
@@ -239,7 +213,7 @@ json controls_layer(const LaneControls& lane, const SharedControls& shared) {
         const auto row = std::find_if(control_rows().begin(), control_rows().end(),
                                       [&](const ControlRow& r) { return r.path == f.path; });
         if (row == control_rows().end()) continue;
-        const FieldValue v = row->get(lane, shared);
+        const FieldValue v = control_value(*row, lane, shared);
         // A preset name only when there is one: a scene file with a custom section has none, and its
         // values then stay as the base document gave them.
         if (const auto* name = std::get_if<std::string>(&v); name && name->empty()) continue;

@@ -18,28 +18,18 @@
 
 namespace polyroll::app {
 
-// What each lane chooses for itself: the polygon and its fill (the race is between these).
+// The values the panel's controls edit, held in a scene: each control's row (control_rows) names the
+// scene field it edits, as MuJoCo simulate's rows point into mjOption, so no member here mirrors a
+// field. A lane's controls carry what each lane chooses for itself (the polygon and its fill: the race
+// is between these); the shared controls what all lanes share (the ramp and how the physics is
+// computed). Only the fields of their scope's rows are read; equal when those fields are.
 struct LaneControls {
-    std::string polygon;        // polygon preset the shell starts from (assets/polygons.json)
-    int sides = 6;              // n, overriding the preset's
-    double fill_ratio = 0.0;    // r
-    std::string material;       // material preset (assets/materials.json)
-    double grain_friction = 0.0;     // advanced: grain on grain
-    double grain_restitution = 0.0;  // advanced: grain on grain and on walls
-    bool operator==(const LaneControls&) const = default;
+    Scene values;
+    bool operator==(const LaneControls& other) const;
 };
-
-// What all lanes share: the ramp they race on and how the physics is computed.
 struct SharedControls {
-    std::string ramp;           // ramp preset (assets/ramps.json)
-    double angle_deg = 0.0;     // theta
-    double ramp_friction = 0.0;      // advanced: shell on ramp
-    double ramp_restitution = 0.0;   // advanced: shell on ramp
-    ReleasePose pose = ReleasePose::vertex;
-    Model model = Model::automatic;  // overwritten from the scene (run.model); auto as in defaults.json
-    std::string fidelity;       // fidelity preset (assets/fidelity.json)
-    std::uint64_t seed = 1;     // the grain packing's seed: the same seed, the same run
-    bool operator==(const SharedControls&) const = default;
+    Scene values;
+    bool operator==(const SharedControls& other) const;
 };
 
 // Which controls a row's value belongs to: each lane's own, or the one set all lanes share.
@@ -53,24 +43,23 @@ struct RadioOption {
     std::string_view name, text, tip;
 };
 
-// One panel control, MuJoCo simulate's way: a row names the scene field it edits and where its value
-// lives; the field's row (sim/scene/scene_fields.cpp) gives its type (which widget), limits (the clamping),
+// One panel control, MuJoCo simulate's way: a row names the scene field it edits and whose value it
+// is; the field's row (sim/scene/scene_fields.cpp) gives its type (which widget), limits (the clamping),
 // unit, label and help (the tooltip). What the panel adds is the note after the help, the number's
 // format and, for a slider whose useful range is shorter than the field's, where the slider stops
 // (Ctrl+click types up to the limit). Choosing a preset also sets the controls of its section that the
 // preset gives a value for (a polygon sets n, a material its friction and restitution).
 struct ControlRow {
-    std::string_view path;  // the scene field: "fill.material.friction"
-    Scope scope = Scope::lane;
+    std::string_view path = {};                 // the scene field: "fill.material.friction"
+    Scope scope = Scope::lane;                  // whose value: the selected lane's or all lanes'
     PanelSection section = PanelSection::lane;
-    // The value in the controls (the other scope's struct is not touched).
-    FieldValue (*get)(const LaneControls&, const SharedControls&) = nullptr;
-    void (*put)(LaneControls&, SharedControls&, const FieldValue&) = nullptr;
-    std::string_view note;           // added to the field's tooltip: "All lanes."
-    std::string_view format;         // a number's: "%.2f"
-    std::optional<double> slider_max;  // the slider's end when less than the field's maximum
-    std::vector<RadioOption> radio;  // a choice shown as radio buttons; empty: a combo
-    std::string_view label;          // the panel's label where the field's row has none
+    std::string_view note = {};                 // added to the field's tooltip: "All lanes."
+    std::string_view format = {};               // a number's: "%.2f"
+    std::optional<double> slider_max = {};      // the slider's end when less than the field's maximum
+    std::vector<RadioOption> radio = {};        // a choice shown as radio buttons; empty: a combo
+    // A choice's names the combo offers when fewer than the field's (the model: window_model_names).
+    const std::vector<std::string>& (*offered)() = nullptr;
+    std::string_view label = {};                // the panel's label where the field's row has none
 };
 
 // Every control, in the panel's order.

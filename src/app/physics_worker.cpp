@@ -33,16 +33,7 @@ PhysicsOutcome PhysicsWorker::finish() {
     std::unique_lock lock(mutex_);
     if (!busy_) throw std::logic_error("PhysicsWorker::finish: no job was started");
     done_.wait(lock, [this] { return outcome_.has_value() || error_; });
-    busy_ = false;
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-    const PhysicsOutcome out = *outcome_;
-    outcome_.reset();
-    return out;
-}
-
-PhysicsOutcome PhysicsWorker::run(PhysicsRequests requests) {
-    start(std::move(requests));
-    return finish();
+    return hand_back();
 }
 
 bool PhysicsWorker::busy() const {

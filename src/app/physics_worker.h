@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <utility>
 
 #include "app/physics_requests.h"
 
@@ -37,6 +38,9 @@ public:
 
 private:
     void loop();
+    // The finished job's outcome, or what it threw, once: the worker is free again (the desktop's
+    // worker calls it under its lock).
+    PhysicsOutcome hand_back();
 
     Job job_;
     mutable std::mutex mutex_;
@@ -49,5 +53,20 @@ private:
     [[maybe_unused]] bool stop_ = false;  // the thread's end: unused by the page's inline worker (src/web/)
     std::thread thread_;  // last: started once everything it uses exists
 };
+
+// The parts the desktop's threaded worker (physics_worker.cpp) and the page's inline one
+// (src/web/physics_worker_inline.cpp) share.
+inline PhysicsOutcome PhysicsWorker::run(PhysicsRequests requests) {
+    start(std::move(requests));
+    return finish();
+}
+
+inline PhysicsOutcome PhysicsWorker::hand_back() {
+    busy_ = false;
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+    const PhysicsOutcome out = *outcome_;
+    outcome_.reset();
+    return out;
+}
 
 }  // namespace polyroll::app

@@ -264,8 +264,8 @@ std::string panel_note(const ControlRow& row, const SceneField& f) {
 
 // A combo over the field's presets.
 bool preset_control(const ControlRow& row, const SceneField& f, Edit e) {
-    std::string value = std::get<std::string>(row.get(e.lane, e.shared));
-    const std::string shown = row.path == "shell.preset" ? polygon_combo_text(value, e.lane.sides) : std::string();
+    std::string value = std::get<std::string>(control_value(row, e.lane, e.shared));
+    const std::string shown = row.path == "shell.preset" ? polygon_combo_text(value, e.lane.values.shell.sides) : std::string();
     const bool edited = preset_combo(std::string(control_label(row)).c_str(), *f.kind, value, shown);
     if (edited) set_control(e.lane, e.shared, row.path, value);
     tip(field_tip(f, panel_note(row, f)));
@@ -279,7 +279,7 @@ bool slider_control(const ControlRow& row, const SceneField& f, Edit e) {
     const double hi = row.slider_max.value_or(f.max);
     bool edited = false;
     if (f.type == FieldType::integer) {
-        int n = std::get<int>(row.get(e.lane, e.shared));
+        int n = std::get<int>(control_value(row, e.lane, e.shared));
         edited = knob_slider(label.c_str(), ImGuiDataType_S32, n, static_cast<int>(f.min), static_cast<int>(hi),
                              format.c_str());
         if (edited) {
@@ -287,7 +287,7 @@ bool slider_control(const ControlRow& row, const SceneField& f, Edit e) {
             note_clamping(f, n);
         }
     } else {
-        double v = std::get<double>(row.get(e.lane, e.shared));
+        double v = std::get<double>(control_value(row, e.lane, e.shared));
         edited = slider_double(label.c_str(), v, f.min, hi, format.c_str());
         if (edited) {
             set_control(e.lane, e.shared, row.path, v);
@@ -301,7 +301,7 @@ bool slider_control(const ControlRow& row, const SceneField& f, Edit e) {
 
 // A seed typed, or stepped by one.
 bool seed_control(const ControlRow& row, const SceneField& f, Edit e) {
-    std::uint64_t seed = std::get<std::uint64_t>(row.get(e.lane, e.shared));
+    std::uint64_t seed = std::get<std::uint64_t>(control_value(row, e.lane, e.shared));
     const std::uint64_t one = 1;
     const bool edited =
         ImGui::InputScalar(std::string(control_label(row)).c_str(), ImGuiDataType_U64, &seed, &one, nullptr, "%llu");
@@ -315,7 +315,7 @@ bool radio_control(const ControlRow& row, const SceneField& f, Edit e) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextUnformatted(std::string(control_label(row)).c_str());
     const float radio_extra = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
-    const FieldValue current = row.get(e.lane, e.shared);
+    const FieldValue current = control_value(row, e.lane, e.shared);
     bool edited = false;
     for (const RadioOption& o : row.radio) {
         const std::string text(o.text);
@@ -424,25 +424,26 @@ bool names_combo(const char* label, const std::vector<std::string>& names, int& 
         const_cast<std::vector<std::string>*>(&names), static_cast<int>(names.size()));
 }
 
-// The model's combo, drawn by hand: it offers the window's models only (window_model_names), and its
-// tooltip describes them.
-bool model_control(const ControlRow& row, Edit e) {
-    const SceneField& model = scene_field(row.path);
-    const std::vector<std::string>& models = window_model_names();
-    const std::string current = to_string(std::get<Model>(row.get(e.lane, e.shared)));
-    int m = static_cast<int>(std::find(models.begin(), models.end(), current) - models.begin());
+// A choice in a combo: the field's names, or the fewer the row offers (the model: the window's).
+bool choice_combo(const ControlRow& row, const SceneField& f, Edit e) {
+    const std::vector<std::string>& names = row.offered ? row.offered() : f.choice_names();
+    const FieldValue current = control_value(row, e.lane, e.shared);
+    int index = static_cast<int>(names.size());  // none lit if the value is not one offered
+    for (size_t i = 0; i < names.size(); ++i)
+        if (f.choice_named(names[i]) == current) index = static_cast<int>(i);
     bool changed = false;
-    if (names_combo(std::string(model.label).c_str(), models, m)) {
-        set_control(e.lane, e.shared, row.path, model_from(models[static_cast<size_t>(m)]));
-        changed = true;
+    if (names_combo(std::string(control_label(row)).c_str(), names, index)) {
+        if (const std::optional<FieldValue> value = f.choice_named(names[static_cast<size_t>(index)])) {
+            set_control(e.lane, e.shared, row.path, *value);
+            changed = true;
+        }
     }
-    tip("Physics: " + model_help(everyday_models()) +
-        ". The reduced models compute a whole run in under a millisecond and draw the shell only.");
+    tip(field_tip(f, panel_note(row, f)));
     return changed;
 }
 
 // One control, its widget chosen by its field's type: presets in a combo, numbers on a slider, the
-// seed typed, a choice as the row's radio buttons (the model, the one choice in a combo, by hand).
+// seed typed, a choice as the row's radio buttons or in a combo.
 bool draw_control(const ControlRow& row, Edit e) {
     const SceneField& f = scene_field(row.path);
     switch (f.type) {
@@ -450,7 +451,7 @@ bool draw_control(const ControlRow& row, Edit e) {
         case FieldType::integer:
         case FieldType::number: return slider_control(row, f, e);
         case FieldType::seed: return seed_control(row, f, e);
-        case FieldType::choice: return row.radio.empty() ? model_control(row, e) : radio_control(row, f, e);
+        case FieldType::choice: return row.radio.empty() ? choice_combo(row, f, e) : radio_control(row, f, e);
         case FieldType::optional_number: break;  // no control shows one
     }
     return false;

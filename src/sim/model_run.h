@@ -26,6 +26,17 @@ struct HandOver {
     double potential_J = 0.0;  // the potential energy now, relative to release, as the run booked it
 };
 
+// The hand-over of a run that counts an impact only for a new highest vertex and lands each in turn
+// (the reduced models, dem3d): its measurements so far, still running, and the vertex after its last
+// impact's as the highest landed.
+inline HandOver counted_hand_over(long steps, const ShellState& shell, const ShellPose& release,
+                                  const Measurements& shown, double potential_J) {
+    HandOver h{.steps = steps, .shell = shell, .release = release, .measured = shown,
+               .landed_vertex = 1 + static_cast<long>(shown.impacts.size()), .potential_J = potential_J};
+    h.measured.behaviour = Behaviour::running;
+    return h;
+}
+
 class ModelRun {
 public:
     virtual ~ModelRun() = default;

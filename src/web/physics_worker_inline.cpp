@@ -28,16 +28,7 @@ void PhysicsWorker::start(PhysicsRequests requests) {
 
 PhysicsOutcome PhysicsWorker::finish() {
     if (!busy_) throw std::logic_error("PhysicsWorker::finish: no job was started");
-    busy_ = false;
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-    const PhysicsOutcome out = *outcome_;
-    outcome_.reset();
-    return out;
-}
-
-PhysicsOutcome PhysicsWorker::run(PhysicsRequests requests) {
-    start(std::move(requests));
-    return finish();
+    return hand_back();
 }
 
 bool PhysicsWorker::busy() const { return busy_; }

@@ -219,15 +219,7 @@ RunSnapshot Dem3dRun::snapshot() const {
 
 HandOver Dem3dRun::hand_over() const {
     const StateRow r = state_now();
-    HandOver h;
-    h.steps = steps_;
-    h.shell = r.shell;
-    h.release = rows_.front().shell.pose;
-    h.measured = shown_;
-    h.measured.behaviour = Behaviour::running;
-    h.landed_vertex = 1 + static_cast<long>(shown_.impacts.size());
-    h.potential_J = r.potential_J;
-    return h;
+    return counted_hand_over(steps_, r.shell, rows_.front().shell.pose, shown_, r.potential_J);
 }
 
 }  // namespace polyroll::dem3d

@@ -100,17 +100,9 @@ TrajectorySample ReducedRun::state_for_hand_over() const {
 }
 
 HandOver ReducedRun::hand_over() const {
-    HandOver h;
-    h.steps = steps_;
     const TrajectorySample n = state_for_hand_over();
-    h.shell = rolling_state(scene_, n);
-    h.release = release_pose(scene_, full_.shell);
-    h.measured = shown_;
-    h.measured.behaviour = Behaviour::running;
-    // The model lands each vertex in turn and counts an impact only for a new highest one.
-    h.landed_vertex = 1 + static_cast<long>(shown_.impacts.size());
-    h.potential_J = n.potential_J;
-    return h;
+    return counted_hand_over(steps_, rolling_state(scene_, n), release_pose(scene_, full_.shell), shown_,
+                             n.potential_J);
 }
 
 }  // namespace polyroll::models
