@@ -52,7 +52,6 @@ std::vector<ControlRow> make_rows() {
                    {"face", "on a face", "Set down flat on a face, then let go."},
                    {"tipped", "tipped", "Filled lying on a face, then stood on its vertex with the pile as it lay, "
                                         "and let go."}}},
-        // The window offers the everyday models and auto: the 3D reference takes a minute of CPU a run.
         {.path = "run.model", .scope = kShared, .section = S::physics,
          .note = "All lanes. The window offers all but dem3d, the 3D reference (about a minute of CPU a run); the "
                  "reduced models compute a whole run in under a millisecond and draw the shell only.",
