@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "sim/assets.h"
 #include "sim/dem3d/dem3d_input.h"

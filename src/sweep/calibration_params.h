@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "sim/scene/scene.h"
 #include "sweep/observations.h"

@@ -107,13 +107,13 @@ void score_share(const Observation& ob, const std::vector<ScoredRun>& runs, Obse
     }
     if (points.size() > 1) {
         // The point whose seeds agree least: most showing a forbidden behaviour, fewest showing the one seen.
-        const json* worst = nullptr;
         auto agreeing = [&](const json& p) {
             const double k = p["showed"].get<double>(), m = p["runs"].get<double>();
             return negative ? (m - k) / m : k / m;
         };
+        const json* worst = &points.front();
         for (const json& p : points)
-            if (!worst || agreeing(p) < agreeing(*worst)) worst = &p;
+            if (agreeing(p) < agreeing(*worst)) worst = &p;
         if (agreeing(*worst) < 1.0)  // every point agreeing fully has no spread worth a word
             c.simulation += fmt::format("; least agreeing point {}: {} of {} seeds {}",
                                         worst->at("point").get<std::string>(), worst->at("showed").get<int>(),

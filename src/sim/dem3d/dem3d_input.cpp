@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "sim/geometry/shell_outline.h"
 #include "sim/geometry/geometry.h"

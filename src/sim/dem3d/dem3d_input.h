@@ -4,7 +4,7 @@
 // the 2D models use, so both models start from the same pose and end at the same place.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "sim/scene/scene.h"
 

@@ -1,4 +1,6 @@
 // A scene moved to a fidelity preset: see fidelity_preset.h.
+#include <nlohmann/json.hpp>
+
 #include "sim/scene/fidelity_preset.h"
 
 #include "sim/assets.h"
