@@ -5,7 +5,6 @@
 // by the core. No GLFW or ImGui here: the mapping is unit-tested without a window.
 #pragma once
 
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
