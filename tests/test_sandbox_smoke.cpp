@@ -241,12 +241,22 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
 }
 
 // --out names the headless render's folder too; run again, the fallback replaces its own earlier
-// render (its marker says so) and never a folder it did not write, said on the first line.
+// render (its marker says so) and never a folder it did not write, said on the first line. What is
+// checked here is where the frames go, not the scene: its three renders read a default scene cut to
+// 2 simulated seconds from a replacement assets folder (POLYROLL_ASSETS, as a user's would be),
+// the test above renders the real one.
 TEST_CASE("without a display the sandbox renders into --out and replaces only its own earlier render",
           "[app][sandbox]") {
     const fs::path dir = scratch("fallback-out");
-    const std::string cmd =
-        "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe + " --out mine/";
+    const fs::path assets = dir / "short-default";
+    fs::create_directories(assets);
+    nlohmann::ordered_json defaults =
+        nlohmann::ordered_json::parse(polyroll::test::read_file(fs::path(POLYROLL_SOURCE_DIR) / "assets" / "defaults.json"));
+    defaults.at("scene").at("run").at("time_limit_s") = 2;
+    std::ofstream(assets / "defaults.json") << defaults.dump(2) << "\n";
+    const std::string sandbox = "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY POLYROLL_ASSETS=" +
+                                assets.string() + " " + kSandboxExe;
+    const std::string cmd = sandbox + " --out mine/";
     const Run first = run(cmd);
     INFO(first.out);
     REQUIRE(first.exit_code == 0);
@@ -270,8 +280,7 @@ TEST_CASE("without a display the sandbox renders into --out and replaces only it
     // A folder the fallback did not write is left as it is: the render goes to the next number.
     fs::create_directories(dir / "theirs");
     std::ofstream(dir / "theirs" / "notes.txt") << "kept\n";
-    const Run third = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe +
-                          " --out theirs");
+    const Run third = run(sandbox + " --out theirs");
     INFO(third.out);
     REQUIRE(third.exit_code == 0);
     CHECK_THAT(third.out, Catch::Contains("(polyroll render --out theirs-2; theirs is not this fallback's and is "
