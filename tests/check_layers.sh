@@ -30,5 +30,6 @@ check figures "figures sim process"
 check app "app render sim flags process"
 check web "web app render sim flags process"
 check cli "cli sweep render figures sim flags process"
+check python "python sweep sim process"
 [ "$failed" -eq 0 ] || exit 1
 echo "check_layers: every include of src/ follows the layers"

@@ -3,10 +3,12 @@
 `build/` (as the project folder does after the main command), with the heavy ones cut short by flags
 this test adds (a shorter simulated time); checks each exits 0 and writes what the README says.
 
-Usage: check_readme_quick_start.py SOURCE_DIR BUILD_DIR
+Usage: check_readme_quick_start.py SOURCE_DIR BUILD_DIR [--no-python]
+(--no-python: a build without the Python module, the sanitizer builds; its lines are then not run)
 """
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -46,11 +48,28 @@ def quick_start_commands(readme):
         if line.startswith("```"):
             in_block = not in_block
             continue
-        if in_block and line.startswith("build/"):
+        if in_block and (line.startswith("build/") or line.startswith(PYTHON_PREFIX)):
             commands.append(re.split(r"\s+#", line, 1)[0].strip())
         elif not in_block:
             commands += [c.strip() for c in re.findall(r"`(build/[^`]+)`", line)]
     return commands
+
+
+# The Python lines: run with this test's Python (Debian's, which has numpy: the README says so), the
+# module from the build folder. The notebook's line is executed by its own test
+# (tests/python/execute_notebook.py), with the notebook's short version.
+PYTHON_PREFIX = "PYTHONPATH=build/python "
+
+
+def python_argv(command, work):
+    """argv and environment of a README Python line, or None for the notebook's."""
+    argv = shlex.split(command[len(PYTHON_PREFIX):])
+    if argv[0] == "jupyter-execute":
+        return None
+    if argv[0] != "python3":
+        raise SystemExit(f"a Python line this test does not know how to run: {command}")
+    env = dict(os.environ, PYTHONPATH=os.path.join(work, "build", "python"))
+    return [sys.executable] + argv[1:], env
 
 
 def cut_for(command):
@@ -64,6 +83,7 @@ def cut_for(command):
 
 def main():
     source_dir, build_dir = sys.argv[1], sys.argv[2]
+    with_python = "--no-python" not in sys.argv[3:]
     with open(os.path.join(source_dir, "README.md"), encoding="utf-8") as f:
         commands = quick_start_commands(f.read())
     if len(commands) < 6:
@@ -73,6 +93,21 @@ def main():
     try:
         os.symlink(os.path.abspath(build_dir), os.path.join(work, "build"))
         for command in commands:
+            if command.startswith(PYTHON_PREFIX):
+                python = python_argv(command, work)
+                if not with_python:
+                    print(f"$ {command}\n  not run: this build has no Python module")
+                    continue
+                if python is None:
+                    print(f"$ {command}\n  executed by the notebook's own test")
+                    continue
+                argv, env = python
+                r = subprocess.run(argv, cwd=work, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                   text=True, timeout=600)
+                print(f"$ {command}\n  exit {r.returncode}: {r.stdout.strip()[-300:]}")
+                if r.returncode != 0:
+                    failures.append(f"{command}: exit {r.returncode}\n{r.stdout[-2000:]}")
+                continue
             argv = command.split() + cut_for(command)
             env = dict(os.environ)
             if argv[0].endswith("polyroll-sandbox"):

@@ -1,6 +1,7 @@
 // Starting other programs (process/child_process.h): how a child ended, what it said, its limits.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -65,4 +66,27 @@ TEST_CASE("find_on_path and sibling_executable") {
     const std::string sibling = sibling_executable("polyroll");
     CHECK(sibling.size() > std::string("/polyroll").size());
     CHECK(sibling.substr(sibling.size() - 9) == "/polyroll");
+}
+
+TEST_CASE("run_child: should_stop kills the child and says so") {
+    // The Python module's Ctrl-C reaches a 3D run this way: the child is killed within about 0.2 s.
+    int asked = 0;
+    ChildOptions o;
+    o.keep_stderr = true;
+    o.should_stop = [&asked] { return ++asked >= 3; };
+    const auto start = std::chrono::steady_clock::now();
+    const ChildExit e = run_child({"/bin/sh", "-c", "sleep 30"}, o);
+    const double took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(e.started);
+    CHECK(e.stopped);
+    CHECK_FALSE(e.timed_out);
+    CHECK_FALSE(e.succeeded());
+    CHECK(e.signal == 9);
+    CHECK(asked == 3);
+    CHECK(took_s < 10.0);  // not the child's 30 s: the bound is loose on purpose (a shared machine)
+    // Never asked to stop: it runs to its end.
+    ChildOptions never;
+    never.keep_stderr = true;
+    never.should_stop = [] { return false; };
+    CHECK(run_child({"/bin/sh", "-c", "exit 0"}, never).succeeded());
 }

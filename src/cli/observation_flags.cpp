@@ -53,6 +53,21 @@ std::vector<std::pair<std::string, json>> observation_overrides(const Observatio
     return out;
 }
 
+std::vector<std::string> observation_flags_args(const ObservationSceneFlags& a) {
+    std::vector<std::string> out;
+    for (const SceneField& f : scene_fields()) {
+        const auto it = a.scene_text.find(std::string(f.path));
+        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
+        out.push_back(it->second.second->get_name());
+        out.push_back(it->second.first);
+    }
+    for (const std::string& s : a.sets) {
+        out.push_back("--set");
+        out.push_back(s);
+    }
+    return out;
+}
+
 std::string observation_flags_text(const ObservationSceneFlags& a) {
     std::string out;
     for (const SceneField& f : scene_fields()) {

@@ -24,6 +24,9 @@ void add_observation_scene_flags(CLI::App* sub, const std::shared_ptr<Observatio
 // The given flags as field values (InputError for a bad one: one line naming it and what is allowed).
 std::vector<std::pair<std::string, nlohmann::ordered_json>> observation_overrides(const ObservationSceneFlags& flags);
 
+// The given flags as command-line words, e.g. {"--fidelity", "draft", "--set", "ramp.friction=0.5"}.
+std::vector<std::string> observation_flags_args(const ObservationSceneFlags& flags);
+
 // The given flags as command-line text, e.g. " --fidelity draft --set ramp.friction=0.5".
 std::string observation_flags_text(const ObservationSceneFlags& flags);
 

@@ -11,15 +11,14 @@
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
 #include "cli/scene_options.h"
-#include "sim/atomic_file.h"
+#include "cli/slurm_submit.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
-#include "sim/run_cost.h"
 #include "sim/scene/scene_fields.h"
 #include "sim/scene/scene_json.h"
+#include "sweep/grid_request.h"
 #include "sweep/grid_values.h"
 #include "sweep/merge.h"
-#include "sweep/plan_extension.h"
 #include "sweep/progress.h"
 #include "sweep/run_cost.h"
 #include "sweep/sweep_plan.h"
@@ -31,19 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
-
-// 128 + SIGINT, what shells report for a command stopped by Ctrl-C.
-
-// The swept scene flags: the fields with a sweep_axis in sim/scene/scene_fields.cpp, in the plan's axis
-// order (the last varies fastest; the seed comes last).
-std::vector<const SceneField*> axis_fields() {
-    std::vector<const SceneField*> fields;
-    for (const SceneField& f : scene_fields())
-        if (f.sweep_axis > 0 && !f.flag.empty()) fields.push_back(&f);
-    std::stable_sort(fields.begin(), fields.end(),
-                     [](const SceneField* a, const SceneField* b) { return a->sweep_axis < b->sweep_axis; });
-    return fields;
-}
 
 std::string axis_help(const SceneField& f) {
     const bool listed = f.type == FieldType::preset || f.type == FieldType::choice;
@@ -63,95 +49,22 @@ struct SweepArgs {
 };
 
 
-// A list of numbers given out of order ("--angle 12,5") runs in ascending order, so the table and the
-// figures read in order; the echo says so. Lists of names keep the order given.
-std::vector<json> ascending(const std::string& flag, const std::string& text, std::vector<json> values,
-                            std::vector<std::string>& notes) {
-    const bool numbers = std::all_of(values.begin(), values.end(), [](const json& v) { return v.is_number(); });
-    const auto less = [](const json& x, const json& y) { return x.get<double>() < y.get<double>(); };
-    if (!numbers || std::is_sorted(values.begin(), values.end(), less)) return values;
-    std::stable_sort(values.begin(), values.end(), less);
-    notes.push_back(fmt::format("{} {} runs in ascending order", flag, text));
-    return values;
-}
-
-// Plans beyond these are refused unless --large confirms them: a mistyped step (--fill 0:1:0.001)
-// should cost a line, not a plan.json of hundreds of megabytes or a week of both cores.
-constexpr double kRunsWithoutLarge = 100000;
-constexpr double kHoursWithoutLarge = 100;
-
-// The number of runs a grid makes, from its axes alone, refused over the bound before any run is built.
-void check_grid_size(const SweepArgs& a, const std::vector<sweep::SweepAxis>& axes) {
-    double runs = 1;
-    std::string sizes;
-    for (const sweep::SweepAxis& ax : axes) {
-        runs *= static_cast<double>(ax.values.size());
-        sizes += fmt::format("{}{} {}", sizes.empty() ? "" : " x ", ax.flag, ax.values.size());
-    }
-    if (runs <= kRunsWithoutLarge || a.large) return;
-    throw InputError(fmt::format("sweep: {:.0f} runs ({}) is more than {:.0f}; allowed: fewer values, or --large to "
-                                 "confirm a plan that big",
-                                 runs, sizes, kRunsWithoutLarge));
-}
-
 sweep::SweepPlan plan_from_args(const SweepArgs& a, std::vector<std::string>& notes) {
-    json base = json::object();
-    if (!a.scene_file.empty()) base = read_scene_file(a.scene_file).doc;
-    resolve_scene({SceneLayer{base, a.scene_file.empty() ? "defaults" : a.scene_file, {}}});  // a bad base fails now
-    std::vector<sweep::SweepAxis> axes;
-    for (const SceneField* f : axis_fields()) {
-        const std::string name(f->flag);
-        const auto it = a.axis_text.find(name);
-        if (it == a.axis_text.end()) continue;
-        axes.push_back({std::string(f->path), name,
-                        ascending(name, it->second, sweep::parse_grid_values(name, it->second), notes)});
+    sweep::GridRequest request;
+    if (!a.scene_file.empty()) {
+        request.base = read_scene_file(a.scene_file).doc;
+        request.base_origin = a.scene_file;
     }
-    for (const std::string& s : a.sets) {
-        const auto eq = s.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw InputError(fmt::format("--set '{}' is not FIELD=VALUES (e.g. --set shell.depth_m=0.05,0.062)", s));
-        const std::string field = s.substr(0, eq);
-        const std::string flag = "--set " + field;
-        sweep::check_scene_field(field, flag);
-        if (field == "run.seed")
-            throw InputError("--set run.seed: use --seed LIST or --seeds N for seeds");
-        axes.push_back({field, flag, ascending(flag, s.substr(eq + 1), sweep::parse_grid_values(flag, s.substr(eq + 1)), notes)});
-    }
-    if (!a.seed_list.empty() && a.seeds > 0)
-        throw InputError("--seed and --seeds are both given (allowed: one: --seed 1,5,9 or --seeds 3 for 1,2,3)");
-    if (a.seeds > 0) {
-        std::vector<json> seeds;
-        for (int s = 1; s <= a.seeds; ++s) seeds.emplace_back(static_cast<std::uint64_t>(s));
-        axes.push_back({"run.seed", "--seeds", seeds});
-    } else if (!a.seed_list.empty()) {
-        axes.push_back({"run.seed", "--seed", sweep::parse_grid_values("--seed", a.seed_list)});
-    }
-    check_grid_size(a, axes);
-    return sweep::make_grid_plan(base, axes);
-}
-
-// Every point resolved before anything runs: how many no run could use (and the first one's
-// reason), and what the valid ones cost at most.
-struct GridCheck {
-    std::size_t invalid = 0;
-    std::string first_invalid;
-    double max_cost_s = 0.0;
-};
-
-GridCheck check_grid(const sweep::SweepPlan& plan) {
-    GridCheck c;
-    for (const sweep::PlannedRun& run : plan.runs) {
-        try {
-            c.max_cost_s += max_run_seconds(resolve_scene(sweep::run_layers(plan, run)));
-        } catch (const InputError& e) {
-            if (c.invalid++ == 0) c.first_invalid = e.what();
-        }
-    }
-    return c;
+    request.axis_text = a.axis_text;
+    request.sets = a.sets;
+    request.seed_list = a.seed_list;
+    request.seeds = a.seeds;
+    request.large = a.large;
+    return sweep::make_request_plan(request, notes);
 }
 
 // The grid as planned, each axis with its values in run order, and the cost, before any run starts.
-void print_grid(const sweep::SweepPlan& plan, const GridCheck& c, int jobs, const std::vector<std::string>& notes) {
+void print_grid(const sweep::SweepPlan& plan, const sweep::GridCheck& c, int jobs, const std::vector<std::string>& notes) {
     std::string axes;
     for (std::size_t i = 0; i < plan.fields.size(); ++i) {
         std::vector<std::string> values;
@@ -202,7 +115,7 @@ int run_merge(const SweepArgs& a) {
     return kExitFailure;
 }
 
-int run(const SweepArgs& a) {
+int run(const SweepArgs& a, const SlurmFlags& slurm) {
     const int modes = !a.out.empty() + !a.from.empty() + !a.merge.empty();
     if (modes != 1)
         throw InputError("sweep: give exactly one of --out DIR (a new sweep or its resumption), --from DIR (run a "
@@ -215,6 +128,11 @@ int run(const SweepArgs& a) {
     if (!a.shard.empty() && a.from.empty())
         throw InputError("--shard needs --from DIR (write the plan first with --out DIR --plan-only)");
     if (a.plan_only && a.out.empty()) throw InputError("--plan-only needs --out DIR");
+    if (slurm.asked() && !a.plan_only)
+        throw InputError(fmt::format("--slurm-tasks {} needs --out DIR --plan-only (allowed: --slurm-tasks 1 to {} with "
+                                     "--plan-only: the plan is written, and a job array runs it)",
+                                     slurm.tasks, sweep::kMaxSlurmTasks));
+    check_slurm_flags(slurm);
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);  // flags before folders
     if (!a.merge.empty()) return run_merge(a);
@@ -223,54 +141,36 @@ int run(const SweepArgs& a) {
     sweep::SweepPlan plan;
     const int jobs = a.jobs > 0 ? a.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::string> notes;
-    GridCheck check;
+    sweep::GridCheck check;
     if (!a.out.empty()) {
         dir = a.out;
         plan = plan_from_args(a, notes);
         // A point no run could use (--fill 25) is refused before anything is written, not found
         // after the sweep as a table of failed rows.
-        check = check_grid(plan);
-        if (check.invalid > 0)
-            throw InputError(fmt::format("sweep: {}; {} of {} runs cannot run, so none was started", check.first_invalid,
-                                         check.invalid, plan.runs.size()));
-        const double hours = check.max_cost_s / std::max(1, jobs) / 3600.0;
-        if (hours > kHoursWithoutLarge && !a.large)
-            throw InputError(fmt::format("sweep: {} runs estimated at up to {} with {} job{}, more than {:.0f} h; "
-                                         "allowed: fewer values, a shorter --time-limit, or --large to confirm",
-                                         plan.runs.size(), sweep::duration_text(check.max_cost_s / std::max(1, jobs)), jobs,
-                                         jobs == 1 ? "" : "s", kHoursWithoutLarge));
-        std::error_code ec;
-        if (fs::exists(sweep::plan_path(dir), ec)) {
-            // Resuming: the folder's plan must be this command's.
-            const sweep::SweepPlan existing = sweep::read_plan(dir);
-            if (sweep::plan_to_json(existing) != sweep::plan_to_json(plan)) {
-                // More values for the same fields extend it: the finished runs are kept (by id).
-                const std::string refusal = sweep::extension_refusal(existing, plan);
-                if (!refusal.empty())
-                    throw InputError(fmt::format("--out {}: holds a different sweep ({} runs): {}; allowed: a new "
-                                                 "folder, the same command to resume, or more values to extend it",
-                                                 a.out, existing.runs.size(), refusal));
-                sweep::extend_plan(dir, plan);
-                notes.push_back(fmt::format("extends the sweep in {}: {} runs were planned there, {} now", a.out,
-                                            existing.runs.size(), plan.runs.size()));
-            }
-        } else {
-            prepare_output_dir(dir, false,
-                               "allowed: a new or empty folder, or the folder of this same sweep to resume it");
-            sweep::write_plan(dir, plan);
-        }
+        check = sweep::check_grid(plan);
+        sweep::refuse_unrunnable(plan, check, jobs, a.large);
+        check_slurm_tasks_for_plan(slurm, plan.runs.size());
+        sweep::open_sweep_folder(dir, "--out", plan, notes);
         print_grid(plan, check, jobs, notes);
         if (a.plan_only) {
             fmt::print("polyroll sweep: plan of {} written to {}\n", counted(static_cast<long long>(plan.runs.size()), "run"),
                        sweep::plan_path(dir).string());
             fmt::print("  run a slice:  polyroll sweep --from {} --shard K/N\n  then:        polyroll sweep --merge {}\n",
                        a.out, a.out);
+            if (slurm.asked()) {
+                const fs::path abs = fs::weakly_canonical(fs::absolute(dir));
+                const std::string self = this_program();
+                sweep::SlurmJob job{sweep::slurm_job_name("sweep", abs), abs, slurm.tasks, slurm.cpus_per_task,
+                                    {self, "sweep", "--from", abs.string()}, {self, "sweep", "--merge", abs.string()}};
+                std::fflush(stdout);
+                return write_and_submit_slurm(job, slurm, "polyroll sweep");
+            }
             return kExitOk;
         }
     } else {
         dir = a.from;
         plan = sweep::read_plan(dir);
-        check = check_grid(plan);
+        check = sweep::check_grid(plan);
         print_grid(plan, check, jobs, notes);
     }
 
@@ -304,6 +204,7 @@ Action add_sweep_command(CLI::App& app) {
         "  polyroll sweep ... --out sweeps/big --plan-only     # write the plan, run nothing\n"
         "  polyroll sweep --from sweeps/big --shard 3/16      # one slice of it\n"
         "  polyroll sweep --merge sweeps/big                  # combine the slices into results.csv\n"
+        "  polyroll sweep ... --out sweeps/big --plan-only --slurm-tasks 16   # and submit a Slurm job array running it\n"
         "Numbers listed out of order run in ascending order. Points that cannot run (--fill 25) are refused before\n"
         "anything is written. The same command resumes an interrupted sweep; with more values for the same flags it\n"
         "extends a sweep, keeping the runs done. Exit codes: 0 done (failed runs are\n"
@@ -311,7 +212,7 @@ Action add_sweep_command(CLI::App& app) {
         "failure, or --merge with runs missing.");
     a->scene_options.push_back(
         sub->add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid")->group("Grid"));
-    for (const SceneField* f : axis_fields()) {
+    for (const SceneField* f : sweep::axis_fields()) {
         CLI::Option* o = sub->add_option_function<std::string>(
                                 std::string(f->flag),
                                 [a, name = std::string(f->flag)](const std::string& v) { a->axis_text[name] = v; },
@@ -350,7 +251,9 @@ Action add_sweep_command(CLI::App& app) {
                                        "without it)")
         ->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
-    return [a] { return run(*a); };
+    auto slurm = std::make_shared<SlurmFlags>();
+    add_slurm_flags(sub, slurm, "with --out DIR --plan-only");
+    return [a, slurm] { return run(*a, *slurm); };
 }
 
 }  // namespace polyroll::cli

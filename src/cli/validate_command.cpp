@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/interruptible_sweep.h"
 #include "cli/observation_flags.h"
+#include "cli/slurm_submit.h"
 #include "figures/figures_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
@@ -106,12 +107,40 @@ void print_plan(const sweep::ObservationFile& file, const sweep::ValidationPlan&
     std::fflush(stdout);
 }
 
-int run(const ValidateArgs& a) {
+// --slurm-tasks N: the folder's plan as a job array whose task K runs this command with --shard K/N,
+// then the same command without --shard, which scores (see cli/slurm_submit.h).
+int submit_slurm(const ValidateArgs& a, const SlurmFlags& slurm, const fs::path& dir) {
+    const fs::path abs = fs::weakly_canonical(fs::absolute(dir));
+    std::vector<std::string> argv = {this_program(), "validate"};
+    if (!a.observations.empty()) argv.insert(argv.end(), {"--observations", fs::absolute(a.observations).string()});
+    if (!a.only.empty()) {
+        std::string only;
+        for (const std::string& id : a.only) only += (only.empty() ? "" : ",") + id;
+        argv.insert(argv.end(), {"--only", only});
+    }
+    argv.insert(argv.end(), {"--seeds", std::to_string(a.seeds)});
+    for (const std::string& w : observation_flags_args(a.scene)) argv.push_back(w);
+    argv.insert(argv.end(), {"--out", abs.string()});
+    std::vector<std::string> finish = argv;
+    finish.insert(finish.end(), {"--jobs", "1", "--quiet"});
+    sweep::SlurmJob job{sweep::slurm_job_name("validate", abs), abs, slurm.tasks, slurm.cpus_per_task, argv, finish,
+                        "score"};
+    std::fflush(stdout);
+    return write_and_submit_slurm(job, slurm, "polyroll validate");
+}
+
+int run(const ValidateArgs& a, const SlurmFlags& slurm) {
     std::optional<std::pair<int, int>> shard;
     if (!a.shard.empty()) shard = sweep::parse_shard(a.shard);
+    if (slurm.asked() && shard)
+        throw InputError(fmt::format("--slurm-tasks {} and --shard {} are both given (allowed: one: --slurm-tasks N "
+                                     "writes and submits all N slices, --shard K/N runs one)",
+                                     slurm.tasks, a.shard));
+    check_slurm_flags(slurm);
     sweep::ObservationFile file = sweep::read_observations(a.observations);
     if (!a.only.empty()) file = sweep::only_observations(file, a.only, "--only");
     const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, observation_overrides(a.scene));
+    check_slurm_tasks_for_plan(slurm, vp.plan.runs.size());
 
     const fs::path dir = a.out;
     std::error_code ec;
@@ -161,6 +190,7 @@ int run(const ValidateArgs& a) {
             if (!done.count(i)) todo.push_back(i);
         print_plan(file, vp, a.seeds, todo, slice.size(), o.jobs);
     }
+    if (slurm.asked()) return submit_slurm(a, slurm, dir);
     const sweep::SweepReport r = run_sweep_interruptibly(vp.plan, o, "polyroll validate");
     fmt::print("polyroll validate: {}, {} ({} each): {} run now ({} failed), {} found done before, {}\n",
                counted(static_cast<long long>(file.observations.size()), "observation"),
@@ -205,6 +235,7 @@ Action add_validate_command(CLI::App& app) {
         "  polyroll validate --observations my-lab.json --fidelity draft --jobs 2\n"
         "  polyroll validate --only fig7-hexagon-rolls --seeds 2   # one observation of the file\n"
         "  polyroll validate ... --shard 2/4    # one slice; then the same command without --shard scores\n"
+        "  polyroll validate ... --slurm-tasks 4   # a Slurm job array of the 4 slices, then a job that scores\n"
         "Figures (D against theta, the behaviour map; PNG, SVG and CSV) go to OUT/figures/ when python3-matplotlib\n"
         "is installed; without it the scorecard is still written.\n"
         "The same command resumes; with more seeds it extends the folder, keeping the runs done. Exit codes:\n"
@@ -226,7 +257,9 @@ Action add_validate_command(CLI::App& app) {
                                        "replaced)")->group("Running");
     sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
     add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));
-    return [a] { return run(*a); };
+    auto slurm = std::make_shared<SlurmFlags>();
+    add_slurm_flags(sub, slurm, "run nothing here (the plan is written)");
+    return [a, slurm] { return run(*a, *slurm); };
 }
 
 }  // namespace polyroll::cli

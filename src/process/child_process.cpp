@@ -131,8 +131,10 @@ struct Pipe {
     ::_exit(127);
 }
 
-// Reads the child's pipes until both close or the time limit passes; returns whether it timed out.
-bool read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, std::string& err_text) {
+// Reads the child's pipes until both close, the time limit passes (timed_out) or should_stop says so
+// (stopped); the child is killed in the last two cases.
+void read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, ChildExit& result) {
+    std::string& err_text = result.stderr_tail;
     const auto start = std::chrono::steady_clock::now();
     std::string out_buf;
     pollfd fds[2] = {{out.read, POLLIN, 0}, {err.read, POLLIN, 0}};
@@ -141,9 +143,15 @@ bool read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, std::str
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (o.time_limit_s > 0.0 && elapsed > o.time_limit_s) {
             ::kill(pid, SIGKILL);
-            return true;
+            result.timed_out = true;
+            return;
         }
-        if (::poll(fds, 2, 1000) < 0) continue;  // interrupted by a signal: look again
+        if (o.should_stop && o.should_stop()) {
+            ::kill(pid, SIGKILL);
+            result.stopped = true;
+            return;
+        }
+        if (::poll(fds, 2, o.should_stop ? 200 : 1000) < 0) continue;  // interrupted by a signal: look again
         char buf[4096];
         for (int k = 0; k < 2; ++k) {
             if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
@@ -168,7 +176,6 @@ bool read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, std::str
             }
         }
     }
-    return false;
 }
 
 // Waits for the child; with a time limit and nothing to read, polls so the limit can act.
@@ -234,8 +241,10 @@ ChildExit run_child(const std::vector<std::string>& argv, const ChildOptions& o)
         return result;
     }
     result.started = true;
-    result.timed_out = read_pipes(pid, o, out, err, result.stderr_tail);
-    const int status = wait_for(pid, o.time_limit_s, result.timed_out);
+    read_pipes(pid, o, out, err, result);
+    bool timed_out = result.timed_out || result.stopped;  // killed already: only reaped here
+    const int status = wait_for(pid, o.time_limit_s, timed_out);
+    if (!result.stopped) result.timed_out = timed_out;
     if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
     if (result.stderr_tail.size() > 16384) result.stderr_tail = result.stderr_tail.substr(result.stderr_tail.size() - 16384);

@@ -32,17 +32,20 @@ struct ChildOptions {
     // Called with each line the child writes on stdout (stdout is then read, not shown).
     std::function<void(const std::string& line)> on_output_line{};
     bool keep_stderr = false;  // read stderr (not shown) and keep its last 16 KB in ChildExit
+    // Asked about every 0.2 s while the child runs (with on_output_line or keep_stderr): true kills it.
+    std::function<bool()> should_stop{};
 };
 
 struct ChildExit {
     bool started = false;   // false: no process, or its program could not be executed (why_not says)
     std::string why_not;
     bool timed_out = false;  // killed at ChildOptions::time_limit_s
+    bool stopped = false;    // killed because ChildOptions::should_stop said so
     int exit_code = -1;      // the exit status when it exited, else -1
     int signal = 0;          // the signal that ended it, else 0
     std::string stderr_tail;  // with keep_stderr
 
-    bool succeeded() const { return started && !timed_out && exit_code == 0; }
+    bool succeeded() const { return started && !timed_out && !stopped && exit_code == 0; }
     // The shell's number: the exit status, 128 + the signal, or 127 when it never started.
     int status() const { return !started ? 127 : signal ? 128 + signal : exit_code; }
     // "exit 3" or "signal 9", for a message.

@@ -9,6 +9,7 @@
 
 #include "sim/measurements.h"
 #include "sim/model_choice.h"
+#include "sim/run_progress.h"
 #include "sim/run_result.h"
 #include "sim/run_snapshot.h"
 #include "sim/scene/scene.h"
@@ -60,9 +61,11 @@ public:
     // whole run up front at a cost worth saving (the 3D reference) when it is both measured and drawn.
     // Null where running the scene again is the only way (the engine's state cannot be rewound).
     virtual std::unique_ptr<ModelRun> replay() const { return nullptr; }
-    // Steps to the end (a model that knows its whole run may jump there).
+    // Steps to the end (a model that knows its whole run may jump there). A caller's stop hook
+    // (run_progress.h) is asked between steps: it throws RunStopped.
     virtual void run_to_end() {
         while (step()) {
+            if (run_stop_requested()) throw RunStopped("the run was stopped before its end");
         }
     }
 };

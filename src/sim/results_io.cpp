@@ -83,6 +83,7 @@ json summary_json(const RunResult& r) {
         yade["yade_version"] = r.dem3d->yade_version;
         yade["time_step_s"] = r.dem3d->time_step_s;
         yade["cpu_time_s"] = r.dem3d->cpu_time_s;
+        yade["threads"] = r.dem3d->threads;
         if (const auto& c = r.dem3d->channel) {
             yade["channel"] = {{"max_offset_m", c->max_offset_m},       {"max_yaw_deg", c->max_yaw_deg},
                                {"max_tilt_deg", c->max_tilt_deg},       {"steps", c->steps},

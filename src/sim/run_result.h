@@ -35,6 +35,7 @@ struct RunResult {
         std::string yade_version;
         double time_step_s = 0.0;
         double cpu_time_s = 0.0;  // the subprocess's own CPU time (wall_time_s adds starting it)
+        int threads = 1;          // Yade's OpenMP threads (dem3d::threads)
         // In a channel (dem3d.channel_width_m): how far the box moved out of its plane, and how often
         // and how hard its ends touched the channel's sides (one reading per tracker step).
         struct ChannelMotion {

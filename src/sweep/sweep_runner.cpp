@@ -1,6 +1,7 @@
 // The sweep's thread pool: see sweep_runner.h.
 #include "sweep/sweep_runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <exception>
 #include <mutex>
@@ -14,6 +15,7 @@
 #include "sim/errors.h"
 #include "sim/model_registry.h"
 #include "sim/results_io.h"
+#include "sim/run_cores.h"
 #include "sweep/merge.h"
 #include "sweep/progress.h"
 #include "sweep/run_cost.h"
@@ -130,7 +132,11 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
     std::atomic<bool> abort{false};
     // The failed run first in the plan, whichever thread ran it: the same reason on every machine.
     std::size_t first_failed_index = plan.runs.size();
+    // The cores are shared among the jobs: a run that can use more than one (the 3D reference's
+    // threads) gets its share (sim/run_cores.h).
+    const int cores_per_run = std::max(1, process_cores() / jobs);
     auto worker = [&] {
+        const ScopedRunCores cores(cores_per_run);
         for (;;) {
             if (abort || (stop && *stop)) return;
             const std::size_t k = next++;

@@ -157,9 +157,10 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
 
 Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
     const WorkDir dir;
-    run_script(script_input(scene, scene.run.sample_hz), dir.path());
+    const int threads = run_script(script_input(scene, scene.run.sample_hz), dir.path());
     Dem3dOutput out = read_output(scene, dir.path());
     full_ = std::move(out.result);
+    full_.dem3d->threads = threads;
     rows_ = std::move(out.rows);
     frames_ = std::move(out.frames);
     outer_ = shell_outer_polygon_m(scene.shell);

@@ -1,6 +1,7 @@
 // Running Yade: see yade_process.h.
 #include "sim/dem3d/yade_process.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "process/installed_script.h"
 #include "sim/atomic_file.h"
 #include "sim/errors.h"
+#include "sim/run_cores.h"
 #include "sim/run_progress.h"
 
 namespace polyroll::dem3d {
@@ -73,13 +75,13 @@ namespace {
 // the launcher puts on sys.path (Debian's /usr/bin/yade: "#!/usr/bin/python3" and
 // "sys.path.insert(1,'/usr/lib/x86_64-linux-gnu/yade-double/py')"), so that none of the launcher's
 // servers start: its XMLRPC info server listens on every network interface while a run lasts. A
-// launcher this cannot read runs the script itself ("yade -j1 -n -x").
+// launcher this cannot read runs the script itself ("yade -jN -n -x").
 struct Launch {
     std::vector<std::string> argv;
     std::string yade_py;  // for POLYROLL_YADE_PY; empty through the launcher
 };
 
-Launch launch_for(const std::string& yade, const std::string& script, const fs::path& dir) {
+Launch launch_for(const std::string& yade, const std::string& script, const fs::path& dir, int n_threads) {
     std::ifstream in(yade);
     std::string line, python, py_dir;
     if (std::getline(in, line) && line.rfind("#!", 0) == 0) {
@@ -97,23 +99,43 @@ Launch launch_for(const std::string& yade, const std::string& script, const fs::
     if (!python.empty() && python.find(' ') == std::string::npos && executable(python) && !py_dir.empty() &&
         fs::is_directory(fs::path(py_dir) / "yade"))
         return {{python, script, in_json, dir.string()}, py_dir};
-    return {{yade, "-j1", "-n", "-x", script, in_json, dir.string()}, ""};
+    return {{yade, "-j" + std::to_string(n_threads), "-n", "-x", script, in_json, dir.string()}, ""};
 }
 
 }  // namespace
 
-void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
+int threads() {
+    if (const char* env = std::getenv("POLYROLL_DEM3D_THREADS"); env && *env) {
+        char* end = nullptr;
+        const long n = std::strtol(env, &end, 10);
+        if (end == env || *end != '\0' || n < 1 || n > 64)
+            throw InputError(fmt::format("POLYROLL_DEM3D_THREADS={}: allowed: a whole number from 1 to 64 (unset it "
+                                         "for the cores the run has)", env));
+        return static_cast<int>(n);
+    }
+    // More than one only on cores reserved for the run (a Slurm allocation): threads change a run's
+    // numbers from one time to the next, and on cores shared with other work Yade's threads wait for
+    // each other far longer than they compute (docs/physics.md has both measured).
+    return in_allocation() ? std::min(run_cores(), 64) : 1;
+}
+
+int run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
     const std::string yade = yade_command();
     const std::string script = script_path();
     const double limit_s = timeout_s();
     write_file_atomic(dir / "IN.json", input.dump(2) + "\n");
-    const Launch launch = launch_for(yade, script, dir);
+    // Yade's OpenMP threads: one gives the same numbers for a seed every time; more split its
+    // interaction loops between cores, and then the order of the force sums, and the numbers, vary.
+    const int n_threads = threads();
+    const Launch launch = launch_for(yade, script, dir, n_threads);
 
     process::ChildOptions options{.own_process_group = true, .dies_with_parent = true};
-    options.environment = {{"OMP_NUM_THREADS", "1"}};  // one thread: a seed gives the same run twice
+    options.environment = {{"OMP_NUM_THREADS", std::to_string(n_threads)}};
     if (!launch.yade_py.empty()) options.environment.emplace_back("POLYROLL_YADE_PY", launch.yade_py);
     options.time_limit_s = limit_s;
     options.keep_stderr = true;
+    // A caller that can be interrupted (the Python module: Ctrl-C) is asked while Yade works.
+    if (run_stop_hooked()) options.should_stop = [] { return run_stop_requested(); };
     // Anything but "progress <t> <x>" on stdout is Yade's own chatter.
     options.on_output_line = [](const std::string& line) {
         double t = 0.0, x = 0.0;
@@ -121,6 +143,7 @@ void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
     };
     const process::ChildExit e = process::run_child(launch.argv, options);
     if (!e.started) throw std::runtime_error("cannot start Yade: " + e.why_not);
+    if (e.stopped) throw RunStopped("the 3D reference was stopped before its end");
     const std::string& err_text = e.stderr_tail;
     if (e.timed_out)
         throw std::runtime_error(fmt::format("the 3D reference took longer than {:.0f} s and was stopped (set "
@@ -132,6 +155,7 @@ void run_script(const nlohmann::ordered_json& input, const fs::path& dir) {
         throw std::runtime_error(fmt::format("the 3D reference (Yade) failed ({}): {}", how,
                                              why.empty() ? tail(err_text, 400) : why));
     }
+    return n_threads;
 }
 
 }  // namespace polyroll::dem3d

@@ -1,0 +1,227 @@
+"""import polyroll: the same scene gives the same numbers as the command line; bad input raises
+ValueError with the command line's line; Ctrl-C stops a run, a 3D run and a sweep; Simulation is
+deterministic as run(); sweep() resumes and gives the command's table."""
+import csv
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import polyroll
+from conftest import read_summary, without_wall_time
+
+# A short octagon run that rolls, hits faces and has grains: cheap (a second or two) but not trivial.
+OCTAGON = dict(polygon="octagon-small", fill=0.375, material="bb", angle=14, time_limit=1.5)
+OCTAGON_FLAGS = ["--polygon", "octagon-small", "--fill", "0.375", "--material", "bb", "--angle", "14",
+                 "--time-limit", "1.5"]
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], rows[1:]
+
+
+def assert_columns_match_csv(records, path):
+    """The arrays hold the file's numbers (rounded there: angles to 4 decimals, others to 6 or to 9 digits)."""
+    header, rows = read_csv(path)
+    assert list(records.dtype.names) == header
+    assert len(records) == len(rows)
+    for k, name in enumerate(header):
+        from_file = np.array([float(r[k]) if r[k] != "" else np.nan for r in rows])
+        np.testing.assert_allclose(records[name], from_file, rtol=1e-8, atol=5e-5, equal_nan=True, err_msg=name)
+
+
+@pytest.mark.parametrize("model", ["grains", "auto", "rigid", "dem3d"])
+def test_same_numbers_as_the_command(model, cli, tmp_path):
+    flags = OCTAGON_FLAGS + ["--model", model]
+    fields = dict(OCTAGON, model=model)
+    if model == "dem3d":  # a few hundredths of a simulated second: the comparison, not the physics
+        fields["time_limit"] = 0.05
+        flags[flags.index("--time-limit") + 1] = "0.05"
+    cli("run", *flags, "--out", tmp_path / "cli")
+    r = polyroll.run(**fields)
+    r.save(tmp_path / "py")
+    for name in ("trajectory.csv", "impacts.csv"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    assert without_wall_time(r.summary) == without_wall_time(read_summary(tmp_path / "cli"))
+    assert_columns_match_csv(r.trajectory, tmp_path / "cli" / "trajectory.csv")
+    assert_columns_match_csv(r.impacts, tmp_path / "cli" / "impacts.csv")
+    assert len(r.trajectory) > (2 if model == "dem3d" else 10)
+    if model == "grains":
+        assert r.summary["results"]["grains"] > 0 and len(r.impacts) > 0
+
+
+def test_scene_sources_layer_as_the_command(cli, tmp_path):
+    scene_file = tmp_path / "scene.json"
+    scene_file.write_text('{"shell": "octagon-small", "fill": {"ratio": 0.375}}\n')
+    from_file = polyroll.scene(scene_file, angle=12, set={"ramp.length_m": 1.5})
+    from_dict = polyroll.scene({"shell": "octagon-small", "fill": {"ratio": 0.375}}, angle=12,
+                               set={"ramp.length_m": 1.5})
+    assert from_file == from_dict
+    assert from_file["shell"]["sides"] == 8 and from_file["ramp"]["angle_deg"] == 12
+    assert from_file["ramp"]["length_m"] == 1.5
+    # The resolved document is a scene itself: feeding it back changes nothing.
+    assert polyroll.scene(from_file) == from_file
+    assert polyroll.scene({"shell": {"sides": np.int64(8)}}, angle=np.float64(12.5))["ramp"]["angle_deg"] == 12.5
+
+
+@pytest.mark.parametrize("fields, flags", [
+    (dict(sides=99), ["--sides", "99"]),
+    (dict(angle=95.0), ["--angle", "95"]),
+    (dict(material="gravel"), ["--material", "gravel"]),
+    (dict(set={"fill.material.wall_friction": -1}), ["--set", "fill.material.wall_friction=-1"]),
+    (dict(set={"shell.nonsense": 1}), ["--set", "shell.nonsense=1"]),
+])
+def test_bad_input_raises_the_commands_message(fields, flags, cli):
+    p = cli("run", *flags, check=False)
+    assert p.returncode == 2
+    line = p.stderr.strip().splitlines()[0]
+    assert line.startswith("polyroll: ")
+    with pytest.raises(ValueError) as e:
+        polyroll.run(**fields)
+    assert str(e.value) == line[len("polyroll: "):]
+
+
+def test_bad_python_arguments_raise():
+    with pytest.raises(ValueError, match="sidez=: not a scene keyword"):
+        polyroll.scene(sidez=8)
+    with pytest.raises(ValueError, match="not a scene"):
+        polyroll.scene(42)
+    with pytest.raises(ValueError, match="a object is not a scene value"):
+        polyroll.scene(angle=object())
+    with pytest.raises(ValueError, match=r"step\(n=0\)"):
+        polyroll.Simulation(fill=0.0, time_limit=0.1).step(0)
+    with pytest.raises(ValueError, match="jobs=0"):
+        polyroll.sweep("unused", jobs=0)
+
+
+def test_save_refuses_a_folder_with_files(tmp_path):
+    r = polyroll.run(fill=0.0, time_limit=0.2)
+    (tmp_path / "x").mkdir()
+    (tmp_path / "x" / "keep.txt").write_text("mine\n")
+    with pytest.raises(ValueError, match="force=True"):
+        r.save(tmp_path / "x")
+    assert os.listdir(tmp_path / "x") == ["keep.txt"]
+    r.save(tmp_path / "x", force=True)
+    assert (tmp_path / "x" / "summary.json").exists()
+
+
+def test_simulation_is_deterministic_as_run():
+    whole = polyroll.run(**OCTAGON)
+    sim = polyroll.Simulation(**OCTAGON)
+    assert sim.grain_count == whole.summary["results"]["grains"]
+    grains = sim.grains()
+    assert len(grains) == sim.grain_count and np.all(grains.radius_m > 0)
+    seen_speed = []
+    while sim.step(37):  # an odd chunk: stepping in chunks must not change the run
+        seen_speed.append(sim.shell()["speed_m_s"])
+        e = sim.energies()
+        assert np.isfinite([e["kinetic_J"], e["potential_J"], e["dissipated_J"]]).all()
+    assert sim.finished and sim.behaviour == whole.behaviour
+    stepped = sim.result()
+    assert without_wall_time(stepped.summary) == without_wall_time(whole.summary)
+    np.testing.assert_array_equal(stepped.trajectory.speed_m_s, whole.trajectory.speed_m_s)
+    assert max(seen_speed) > 0.05  # it rolled
+
+
+def interrupt_after(seconds):
+    """Sends this process a SIGINT (a Ctrl-C) after `seconds`, from another thread."""
+    t = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t.start()
+    return t
+
+
+def yade_children():
+    """The 3D reference's processes this test process started (children running polyroll_dem3d.py)."""
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open(f"/proc/{pid}/stat") as f:
+                ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                cmd = f.read()
+        except OSError:
+            continue
+        if ppid == os.getpid() and b"dem3d" in cmd:
+            found.append(int(pid))
+    return found
+
+
+@pytest.mark.parametrize("model", ["grains", "dem3d"])
+def test_ctrl_c_stops_a_run(model):
+    start = time.monotonic()
+    timer = interrupt_after(2.0)
+    with pytest.raises(KeyboardInterrupt):
+        polyroll.run(**dict(OCTAGON, model=model, time_limit=60))  # minutes of work if nothing stopped it
+    timer.join()
+    assert time.monotonic() - start < 10
+    assert yade_children() == []
+
+
+def test_ctrl_c_stops_a_simulation_step():
+    sim = polyroll.Simulation(**dict(OCTAGON, time_limit=60))
+    timer = interrupt_after(1.0)
+    with pytest.raises(KeyboardInterrupt):
+        sim.step(10 ** 9)
+    timer.join()
+    assert 0 < sim.time_s < 60
+    sim.step(10)  # it goes on from where it stopped
+
+
+GRID = dict(polygon="octagon-small", fill=0.375, angle="10,14", time_limit=0.4)
+GRID_FLAGS = ["--polygon", "octagon-small", "--fill", "0.375", "--angle", "10,14", "--time-limit", "0.4"]
+
+
+def table_without_wall_time(path):
+    header, rows = read_csv(path)
+    keep = [k for k, name in enumerate(header) if name != "wall_time_s"]
+    return [header[k] for k in keep], [[r[k] for k in keep] for r in rows]
+
+
+def test_sweep_gives_the_commands_table_and_resumes(cli, tmp_path):
+    cli("sweep", *GRID_FLAGS, "--seeds", "2", "--out", tmp_path / "cli", "-q", "--jobs", "2")
+    s = polyroll.sweep(tmp_path / "py", seeds=2, jobs=2, **GRID)
+    assert s.report["ran"] == 4 and s.report["failed"] == 0
+    assert table_without_wall_time(tmp_path / "py" / "results.csv") == \
+        table_without_wall_time(tmp_path / "cli" / "results.csv")
+    assert list(s.table.angle_deg) == [10, 10, 14, 14] and list(s.table.seed) == [1, 2, 1, 2]
+    assert s.table.behaviour.dtype.kind == "U" and np.all(np.isfinite(s.table.distance_m))
+    again = polyroll.sweep(tmp_path / "py", seeds=2, jobs=2, **GRID)
+    assert again.report["ran"] == 0 and again.report["already"] == 4
+    # More values for the same axis extend the sweep: only the new point runs.
+    wider = polyroll.sweep(tmp_path / "py", seeds=2, jobs=2, **dict(GRID, angle=[10, 12, 14]))
+    assert wider.report["ran"] == 2 and len(wider.table) == 6
+
+
+def test_sweep_refuses_what_the_command_refuses(tmp_path):
+    with pytest.raises(ValueError, match="fill"):
+        polyroll.sweep(tmp_path / "bad", fill=25)
+    assert not (tmp_path / "bad").exists()
+    with pytest.raises(ValueError, match="--angle"):
+        polyroll.sweep(tmp_path / "bad", angle="5:1:1")
+    polyroll.sweep(tmp_path / "one", angle=12, time_limit=0.2, fill=0.0)
+    with pytest.raises(ValueError, match="holds a different sweep"):
+        polyroll.sweep(tmp_path / "one", sides=5, time_limit=0.2, fill=0.0)
+
+
+def test_ctrl_c_stops_a_sweep_and_the_same_call_resumes(tmp_path):
+    grid = dict(polygon="octagon-small", fill=0.375, angle="11:14:1", time_limit=4)
+    timer = interrupt_after(1.5)
+    with pytest.raises(KeyboardInterrupt):
+        polyroll.sweep(tmp_path / "s", jobs=2, **grid)
+    timer.join()
+    done = polyroll.sweep(tmp_path / "s", jobs=2, **grid)
+    assert done.report["already"] + done.report["ran"] == 4 and len(done.table) == 4
+
+
+def test_pandas_frames_where_pandas_is_installed():
+    pandas = pytest.importorskip("pandas")
+    r = polyroll.run(fill=0.0, time_limit=0.3)
+    frame = r.to_pandas()
+    assert isinstance(frame, pandas.DataFrame) and list(frame.columns) == list(r.trajectory.dtype.names)
