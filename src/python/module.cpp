@@ -12,8 +12,9 @@ namespace py = pybind11;
 
 PYBIND11_MODULE(_polyroll, m) {
     m.doc() = "polyroll's simulation core (use the polyroll package, not this module)";
-    // Bad input is the command line's one line, as ValueError.
-    py::register_exception_translator([](std::exception_ptr p) {
+    // Bad input is the command line's one line, as ValueError. The translator's type is pybind11's
+    // void (*)(std::exception_ptr): the pointer is taken by value.
+    py::register_exception_translator([](std::exception_ptr p) {  // NOLINT(performance-unnecessary-value-param)
         try {
             if (p) std::rethrow_exception(p);
         } catch (const polyroll::InputError& e) {

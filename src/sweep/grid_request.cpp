@@ -68,9 +68,11 @@ SweepPlan make_request_plan(const GridRequest& r, std::vector<std::string>& note
         if (it == r.axis_text.end()) continue;
         axes.push_back({std::string(f->path), name, ascending(name, it->second, parse_grid_values(name, it->second), notes)});
     }
-    for (const auto& [name, text] : r.axis_text)
+    for (const auto& entry : r.axis_text) {
+        const std::string& name = entry.first;
         if (std::none_of(axes.begin(), axes.end(), [&name](const SweepAxis& a) { return a.flag == name; }))
             throw InputError(fmt::format("{}: not a swept scene flag", name));
+    }
     for (const std::string& s : r.sets) {
         const auto eq = s.find('=');
         if (eq == std::string::npos || eq == 0)
