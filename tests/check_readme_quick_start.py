@@ -48,7 +48,7 @@ def quick_start_commands(readme):
         if line.startswith("```"):
             in_block = not in_block
             continue
-        if in_block and (line.startswith("build/") or line.startswith(PYTHON_PREFIX)):
+        if in_block and (line.startswith("build/") or line.startswith("PYTHONPATH=")):
             commands.append(re.split(r"\s+#", line, 1)[0].strip())
         elif not in_block:
             commands += [c.strip() for c in re.findall(r"`(build/[^`]+)`", line)]
@@ -58,12 +58,12 @@ def quick_start_commands(readme):
 # The Python lines: run with this test's Python (Debian's, which has numpy: the README says so), the
 # module from the build folder. The notebook's line is executed by its own test
 # (tests/python/execute_notebook.py), with the notebook's short version.
-PYTHON_PREFIX = "PYTHONPATH=build/python "
+PYTHON_PREFIX = "PYTHONPATH="
 
 
 def python_argv(command, work):
     """argv and environment of a README Python line, or None for the notebook's."""
-    argv = shlex.split(command[len(PYTHON_PREFIX):])
+    argv = shlex.split(command)[1:]  # after PYTHONPATH=...: the module is this build's
     if argv[0] == "jupyter-execute":
         return None
     if argv[0] != "python3":

@@ -28,9 +28,10 @@ def main(path):
         if not figures:
             print(f"{path}: executed, but drew no figure", file=sys.stderr)
             return 1
-        if not os.path.exists(os.path.join(work, "sweep", "results.csv")):
-            print(f"{path}: executed, but its sweep wrote no results.csv", file=sys.stderr)
-            return 1
+        for name in ("results.csv", "distance-vs-angle.png"):
+            if not os.path.exists(os.path.join(work, "sweep", name)):
+                print(f"{path}: executed, but wrote no {name} into its sweep folder", file=sys.stderr)
+                return 1
     print(f"{path}: every cell ran; {len(figures)} figure(s)")
     return 0
 
