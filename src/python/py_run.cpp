@@ -43,10 +43,10 @@ void interruptibly(Work&& work) {
 // A run stepped from Python: a notebook's or a control loop's view of it.
 class Simulation {
 public:
-    explicit Simulation(const Scene& scene) {
+    // The wall time counts from here, as run_scene's does: building, pouring and settling included.
+    explicit Simulation(const Scene& scene) : start_(std::chrono::steady_clock::now()) {
         interruptibly([&](InterruptWatch&) { run_ = start_run(scene); });
         if (!run_) throw std::runtime_error("the run could not be started");
-        start_ = std::chrono::steady_clock::now();
     }
 
     // Up to n tracker steps; whether the run goes on.

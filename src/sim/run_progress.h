@@ -1,8 +1,9 @@
 // How far a long run has got, for a person waiting at a terminal, and whether the caller wants it
 // stopped. A model whose runs take minutes (ModelTraits::reports_progress: the 3D reference) calls the
-// progress hook about every quarter simulated second, and asks the stop hook about every 0.2 s of
-// wall time while its subprocess works; the others never do. The hooks belong to the thread that
-// starts the run, so a sweep's many runs on their own threads stay silent unless one of them asks.
+// progress hook about every quarter simulated second; the others never do. The stop hook is asked
+// between the steps of ModelRun::run_to_end, and by the 3D reference about every 0.2 s of wall time
+// while its subprocess works. The hooks belong to the thread that starts the run, so a sweep's many
+// runs on their own threads stay silent and unstopped unless one of them asks.
 #pragma once
 
 #include <functional>

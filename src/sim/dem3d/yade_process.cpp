@@ -110,7 +110,7 @@ int threads() {
         const long n = std::strtol(env, &end, 10);
         if (end == env || *end != '\0' || n < 1 || n > 64)
             throw InputError(fmt::format("POLYROLL_DEM3D_THREADS={}: allowed: a whole number from 1 to 64 (unset it "
-                                         "for the cores the run has)", env));
+                                         "for one thread, or a Slurm task's cores)", env));
         return static_cast<int>(n);
     }
     // More than one only on cores reserved for the run (a Slurm allocation): threads change a run's

@@ -1,6 +1,6 @@
 // Running the 3D reference's script (polyroll_dem3d.py) in Yade, as a subprocess: Yade found on the
-// PATH (or $POLYROLL_YADE) and imported as a library by its own Python, with the threads the run's
-// cores allow, its progress read as it comes, stopped by a timeout, and never outliving polyroll
+// PATH (or $POLYROLL_YADE) and imported as a library by its own Python, on one thread unless a Slurm
+// allocation reserves cores for the run (threads()), its progress read as it comes, stopped by a timeout, and never outliving polyroll
 // (Ctrl-C or a crash of polyroll ends it too).
 #pragma once
 
@@ -24,8 +24,8 @@ double timeout_s();
 // The OpenMP threads Yade runs with for a run started on this thread: $POLYROLL_DEM3D_THREADS (1 to
 // 64; InputError otherwise), else inside a Slurm allocation the cores the run has there
 // (sim/run_cores.h: a run alone has the task's, a sweep's run its share of them), else one.
-// docs/physics.md ("The 3D reference's threads") has the measured speed-up, and why a run's numbers
-// depend on its thread count.
+// docs/physics.md ("Yade's threads") has the measured speed-up, and why a run's numbers depend on
+// its thread count.
 int threads();
 
 // Writes `input` as IN.json into `dir` (an existing folder) and runs the script on it there with
