@@ -2,7 +2,10 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "process/child_process.h"
@@ -68,14 +71,18 @@ TEST_CASE("find_on_path and sibling_executable") {
     CHECK(sibling.substr(sibling.size() - 9) == "/polyroll");
 }
 
-TEST_CASE("run_child: should_stop kills the child and says so") {
-    // The Python module's Ctrl-C reaches a 3D run this way: the child is killed within about 0.2 s.
+TEST_CASE("run_child: should_stop kills the child and what it started and says so") {
+    // The Python module's Ctrl-C reaches a 3D run this way: the child is killed within about 0.2 s,
+    // and with its own process group the programs it started too (here the shell's sleep).
     int asked = 0;
+    std::string grandchild_pid;
     ChildOptions o;
+    o.own_process_group = true;
     o.keep_stderr = true;
-    o.should_stop = [&asked] { return ++asked >= 3; };
+    o.on_output_line = [&grandchild_pid](const std::string& line) { grandchild_pid = line; };
+    o.should_stop = [&asked, &grandchild_pid] { return !grandchild_pid.empty() && ++asked >= 3; };
     const auto start = std::chrono::steady_clock::now();
-    const ChildExit e = run_child({"/bin/sh", "-c", "sleep 30"}, o);
+    const ChildExit e = run_child({"/bin/sh", "-c", "sleep 30 & echo $!; wait"}, o);
     const double took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(e.started);
     CHECK(e.stopped);
@@ -84,6 +91,16 @@ TEST_CASE("run_child: should_stop kills the child and says so") {
     CHECK(e.signal == 9);
     CHECK(asked == 3);
     CHECK(took_s < 10.0);  // not the child's 30 s: the bound is loose on purpose (a shared machine)
+    // The sleep is gone (or a zombie waiting for init to reap it) within a few seconds, not 30.
+    REQUIRE_FALSE(grandchild_pid.empty());
+    const std::filesystem::path stat = "/proc/" + grandchild_pid + "/stat";
+    auto alive = [&stat] {
+        std::ifstream in(stat);
+        std::string pid, name, state;
+        return in >> pid >> name >> state && state != "Z";
+    };
+    for (int k = 0; k < 100 && alive(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    CHECK_FALSE(alive());
     // Never asked to stop: it runs to its end.
     ChildOptions never;
     never.keep_stderr = true;

@@ -159,12 +159,12 @@ TEST_CASE("coarser grains keep the fill's mass and level in fewer grains", "[app
     for (const char* material : {"bb", "rice", "peas"}) {
         for (double r : {0.25, 0.5, 1.0}) {
             const Scene s = test::scene_with({{"shell", "hexagon-large"}, {"fill", {{"ratio", r}, {"material", material}}}});
+            const FillPlan fine = plan_fill(s, shell_properties(s.shell), {0.0, 1.0});
             for (double k : {1.5, 2.0}) {
                 const Scene c = with_coarser_grains(s, k);
                 INFO(material << ", r = " << r << ", grains " << k << "x larger");
                 CHECK(disc_diameter_m(c) == Approx(k * disc_diameter_m(s)));
                 CHECK(fill_mass_kg(c) == Approx(fill_mass_kg(s)).epsilon(1e-9));
-                const FillPlan fine = plan_fill(s, shell_properties(s.shell), {0.0, 1.0});
                 const FillPlan coarse = plan_fill(c, shell_properties(c.shell), {0.0, 1.0});
                 CHECK(coarse.surface_level_m == Approx(fine.surface_level_m));
                 CHECK(coarse.grains.size() < fine.grains.size());

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Prepares the WebAssembly build of the sandbox (README's web command): installs emscripten and
-# chromium (Debian 12 packages), and fetches the C sources the page needs compiled for WebAssembly:
+# chromium (Debian 12 packages) and Ninja, and fetches the C sources the page needs compiled for WebAssembly:
 # Box2D 2.4.1, Dear ImGui 1.86 and FreeType from Debian's own source packages (the binary packages
 # are for this machine's CPU only). Nothing is downloaded from anywhere but the Debian mirror the
 # machine already uses, and nothing fetched is committed: the sources land in build-web-src/.
@@ -12,7 +12,7 @@ src="$root/build-web-src"
 
 export DEBIAN_FRONTEND=noninteractive
 missing=""
-for p in emscripten chromium dpkg-dev fonts-dejavu-core python3 python3-websocket xvfb; do
+for p in emscripten chromium dpkg-dev fonts-dejavu-core ninja-build python3 python3-websocket xvfb; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
 if [ -n "$missing" ]; then

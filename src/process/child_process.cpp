@@ -131,6 +131,13 @@ struct Pipe {
     ::_exit(127);
 }
 
+// Kills the child, and with its own process group everything it started too (a shell's programs):
+// killed alone, they would live on, holding the pipes polyroll or its caller reads.
+void kill_child(pid_t pid, const ChildOptions& o) {
+    if (o.own_process_group && ::kill(-pid, SIGKILL) == 0) return;
+    ::kill(pid, SIGKILL);
+}
+
 // Reads the child's pipes until both close, the time limit passes (timed_out) or should_stop says so
 // (stopped); the child is killed in the last two cases.
 void read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, ChildExit& result) {
@@ -142,12 +149,12 @@ void read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, ChildExi
     while (open_fds > 0) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (o.time_limit_s > 0.0 && elapsed > o.time_limit_s) {
-            ::kill(pid, SIGKILL);
+            kill_child(pid, o);
             result.timed_out = true;
             return;
         }
         if (o.should_stop && o.should_stop()) {
-            ::kill(pid, SIGKILL);
+            kill_child(pid, o);
             result.stopped = true;
             return;
         }
@@ -179,7 +186,7 @@ void read_pipes(pid_t pid, const ChildOptions& o, Pipe& out, Pipe& err, ChildExi
 }
 
 // Waits for the child; with a time limit and nothing to read, polls so the limit can act.
-int wait_for(pid_t pid, double time_limit_s, bool& timed_out) {
+int wait_for(pid_t pid, const ChildOptions& o, double time_limit_s, bool& timed_out) {
     int status = 0;
     if (time_limit_s > 0.0 && !timed_out) {
         const auto start = std::chrono::steady_clock::now();
@@ -188,7 +195,7 @@ int wait_for(pid_t pid, double time_limit_s, bool& timed_out) {
             if (got == pid) return status;
             if (got < 0 && errno != EINTR) return status;
             if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > time_limit_s) {
-                ::kill(pid, SIGKILL);
+                kill_child(pid, o);
                 timed_out = true;
                 break;
             }
@@ -226,6 +233,8 @@ ChildExit run_child(const std::vector<std::string>& argv, const ChildOptions& o)
         return result;
     }
     if (pid == 0) become_child(o, args, parent, out, err, exec_error);
+    // The parent sets the group too, so a kill of the group right after fork cannot miss the child.
+    if (o.own_process_group) ::setpgid(pid, pid);
     close_fd(out.write);
     close_fd(err.write);
     close_fd(exec_error.write);
@@ -236,14 +245,14 @@ ChildExit run_child(const std::vector<std::string>& argv, const ChildOptions& o)
     }
     if (got == sizeof exec_errno) {
         bool ignored = false;
-        wait_for(pid, 0.0, ignored);
+        wait_for(pid, o, 0.0, ignored);
         result.why_not = fmt::format("cannot run {}: {}", argv[0], std::strerror(exec_errno));
         return result;
     }
     result.started = true;
     read_pipes(pid, o, out, err, result);
     bool timed_out = result.timed_out || result.stopped;  // killed already: only reaped here
-    const int status = wait_for(pid, o.time_limit_s, timed_out);
+    const int status = wait_for(pid, o, o.time_limit_s, timed_out);
     if (!result.stopped) result.timed_out = timed_out;
     if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);

@@ -22,7 +22,7 @@ struct ChildOptions {
     bool search_path = false;  // argv[0] may be a bare name, looked up on PATH
     bool silent = false;       // stdout and stderr to /dev/null (a probe: only the exit status matters)
     // Its own process group, so a Ctrl-C at the terminal reaches polyroll alone, which then decides
-    // (a sweep lets its runs in flight finish).
+    // (a sweep lets its runs in flight finish). A time limit or should_stop then kills the whole group.
     bool own_process_group = false;
     // Killed when the thread that started it ends, so a polyroll stopped by Ctrl-C or a crash never
     // leaves it running.
