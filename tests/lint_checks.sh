@@ -9,8 +9,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 t0=$(date +%s)
-# Ninja for a new build-hardening/ (a folder configured before keeps its generator): it compiles a
-# target's files while the targets it links are still being built, where make waits for them.
+# Ninja for a new build-hardening/, as tests/ci_checks.sh (which says why) when run on its own.
 export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"
 step() { echo "== lint_checks [$(( $(date +%s) - t0 )) s]: $*"; }
 

@@ -1,7 +1,7 @@
 // Running the 3D reference's script (polyroll_dem3d.py) in Yade, as a subprocess: Yade found on the
 // PATH (or $POLYROLL_YADE) and imported as a library by its own Python, on one thread unless a Slurm
-// allocation reserves cores for the run (threads()), its progress read as it comes, stopped by a timeout, and never outliving polyroll
-// (Ctrl-C or a crash of polyroll ends it too).
+// allocation reserves cores for the run (threads()), its progress read as it comes, stopped by a
+// timeout, and never outliving polyroll (Ctrl-C or a crash of polyroll ends it too).
 #pragma once
 
 #include <filesystem>
