@@ -114,11 +114,11 @@ int bench(const BenchOptions& o) {
 
 }  // namespace
 
-Action add_bench_command(CLI::App& app) {
+Action add_bench_command(Command& app) {
     auto opts = std::make_shared<BenchOptions>();
-    CLI::App* sub = app.add_subcommand("bench", "measure speed: real-time factor per fidelity preset, and overhead "
-                                                "over bare Box2D stepping");
-    sub->footer(
+    Command sub = app.add_subcommand("bench", "measure speed: real-time factor per fidelity preset, and overhead "
+                                              "over bare Box2D stepping");
+    sub.footer(
         "Without flags: the scene at each fidelity preset, the reduced models and headless rendering, on one core. "
         "The slow rows opt in.\n"
         "Examples:\n"
@@ -127,39 +127,39 @@ Action add_bench_command(CLI::App& app) {
         "  polyroll bench --auto                            # auto against grains on the empty shells\n"
         "  polyroll bench --scaling --repeats 1             # cost per disc from 124 to 2,221 discs\n"
         "  polyroll bench --all                             # everything, the 3D reference and calibration too");
-    opts->scene.add_to(*sub);
-    sub->add_option("--repeats", opts->repeats,
-                    "runs per preset, the best reported (default 1: about 100 s for the default tables; 3 for "
-                    "figures to compare)")
-        ->check(CLI::Range(1, 100));
-    sub->add_option("--presets", opts->presets, "fidelity presets to measure (default: all)")->delimiter(',');
-    sub->add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
-    CLI::Option* auto_flag =
-        sub->add_flag("--auto", opts->auto_only,
-                      "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
-    sub->add_option("--ensemble", opts->ensemble,
-                    "with --auto: also run each shell from this many releases 0.001 deg apart and compare the "
-                    "models' mean terminal velocities and ranges (hopping shells are sensitive to tiny changes)")
-        ->check(CLI::Range(2, 50))
-        ->needs(auto_flag);
-    CLI::Option* dem3d_flag = sub->add_flag(
+    opts->scene.add_to(sub);
+    sub.add_option("--repeats", opts->repeats,
+                   "runs per preset, the best reported (default 1: about 100 s for the default tables; 3 for "
+                   "figures to compare)")
+        .check(Range(1, 100));
+    sub.add_option("--presets", opts->presets, "fidelity presets to measure (default: all)").delimiter(',');
+    sub.add_flag("--render-only", opts->render_only, "measure only headless rendering (frames per second)");
+    Flag auto_flag =
+        sub.add_flag("--auto", opts->auto_only,
+                     "measure only --model auto against grains on the empty n = 6, 8, 10, 18 at 5, 10, 20, 30 deg");
+    sub.add_option("--ensemble", opts->ensemble,
+                   "with --auto: also run each shell from this many releases 0.001 deg apart and compare the "
+                   "models' mean terminal velocities and ranges (hopping shells are sensitive to tiny changes)")
+        .check(Range(2, 50))
+        .needs(auto_flag);
+    Flag dem3d_flag = sub.add_flag(
         "--dem3d", opts->dem3d_only, "measure only the 3D reference (--model dem3d: one Yade run, about a minute)");
-    CLI::Option* scaling_flag = sub->add_flag(
+    Flag scaling_flag = sub.add_flag(
         "--scaling", opts->scaling_only,
         "measure only the grain engine's cost against the grains: six BB scenes from 124 to about 2,200 discs, "
         "the cost per disc and step and Box2D's contacts per disc (about 30 s a repeat)");
-    CLI::Option* calibration_flag = sub->add_flag(
+    Flag calibration_flag = sub.add_flag(
         "--calibration", opts->calibration_only,
         "measure only the calibration's cost: one evaluation of the bundled observations at standard (about 3 "
         "minutes on one core) and the three-parameter fit it projects");
-    sub->add_flag("--all", opts->all,
-                  "the default tables, then the grain-count rows, the 3D reference and the calibration's cost "
-                  "(several minutes: the calibration row alone takes about 3 on one core)")
-        ->excludes(dem3d_flag)
-        ->excludes(scaling_flag)
-        ->excludes(calibration_flag)
-        ->excludes(auto_flag);
-    sub->add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
+    sub.add_flag("--all", opts->all,
+                 "the default tables, then the grain-count rows, the 3D reference and the calibration's cost "
+                 "(several minutes: the calibration row alone takes about 3 on one core)")
+        .excludes(dem3d_flag)
+        .excludes(scaling_flag)
+        .excludes(calibration_flag)
+        .excludes(auto_flag);
+    sub.add_flag("--no-render", opts->no_render, "skip the headless rendering measurements");
     return [opts] { return bench(*opts); };
 }
 

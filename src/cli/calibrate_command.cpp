@@ -339,10 +339,10 @@ int run(const CalibrateArgs& a) {
 
 }  // namespace
 
-Action add_calibrate_command(CLI::App& app) {
+Action add_calibrate_command(Command& app) {
     auto a = std::make_shared<CalibrateArgs>();
-    CLI::App* sub = app.add_subcommand("calibrate", "fit unmeasured scene fields to an observations file");
-    sub->footer(
+    Command sub = app.add_subcommand("calibrate", "fit unmeasured scene fields to an observations file");
+    sub.footer(
         "Each candidate runs every observation over seeds 1..N (the same seeds for every candidate) as rows of\n"
         "one sweep folder; NLopt minimises the scorecard's summed squared misses within the bounds. Bounds:\n"
         "FIELD=FROM:TO, else assets/calibration.json's, else the field's limits. docs/calibrate.md.\n"
@@ -352,27 +352,27 @@ Action add_calibrate_command(CLI::App& app) {
         "  polyroll calibrate --params ramp.friction --plan-only   # the plan and its time, nothing run\n"
         "The same command resumes (a larger --max-evals continues). Exit codes: 0 done, 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
-    sub->add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)")->required();
-    sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
-    sub->add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
-        ->check(CLI::Range(1, 1000));
-    sub->add_option("--max-evals", a->max_evals,
-                    fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
-    sub->add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");
-    sub->add_option("--start", a->starts, "start FIELD=VALUE instead of the scene's own value (repeatable)");
-    sub->add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "
-                                     "(default runs/calibrate); the same command there resumes");
+    sub.add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)").required();
+    sub.add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub.add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
+        .check(Range(1, 1000));
+    sub.add_option("--max-evals", a->max_evals,
+                   fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
+    sub.add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");
+    sub.add_option("--start", a->starts, "start FIELD=VALUE instead of the scene's own value (repeatable)");
+    sub.add_option("--out", a->out, "folder: evaluations.csv, calibration.json, calibrated-scene.json, the runs "
+                                    "(default runs/calibrate); the same command there resumes");
     // 0 is refused as sweep's and tradeoff's --jobs 0 are (leaving the flag out means all cores).
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
-        ->check(CLI::Range(1, 1024))
-        ->group("Running");
-    sub->add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
-                                         "(the same command, other K, sharing --out) run the rest")
-        ->group("Running");
-    sub->add_flag("--plan-only", a->plan_only, "print the plan and its estimated time, run nothing, write nothing")
-        ->group("Running");
-    sub->add_flag("--force", a->force, "start over in a folder holding something else")->group("Running");
-    sub->add_flag("--quiet,-q", a->quiet, "no progress lines")->group("Running");
+    sub.add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        .check(Range(1, 1024))
+        .group("Running");
+    sub.add_option("--shard", a->shard, "run slice K of N of every candidate's runs; the other slices' processes "
+                                        "(the same command, other K, sharing --out) run the rest")
+        .group("Running");
+    sub.add_flag("--plan-only", a->plan_only, "print the plan and its estimated time, run nothing, write nothing")
+        .group("Running");
+    sub.add_flag("--force", a->force, "start over in a folder holding something else").group("Running");
+    sub.add_flag("--quiet,-q", a->quiet, "no progress lines").group("Running");
     add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));
     return [a] { return run(*a); };
 }

@@ -5,9 +5,10 @@ namespace polyroll::cli {
 
 std::vector<std::pair<CLI::App*, Action>> add_all_commands(CLI::App& app) {
     std::vector<std::pair<CLI::App*, Action>> commands;
-    auto add = [&](Action (*adder)(CLI::App&)) {
-        Action a = adder(app);
-        commands.emplace_back(app.get_subcommands({}).back(), std::move(a));
+    Command root(app);
+    auto add = [&](Action (*adder)(Command&)) {
+        Action a = adder(root);
+        commands.emplace_back(&root.newest_subcommand(), std::move(a));
     };
     add(add_run_command);
     add(add_presets_command);

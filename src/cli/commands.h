@@ -4,9 +4,15 @@
 
 #include <functional>
 
-#include <CLI/CLI.hpp>
+#include "flags/command_flags.h"
 
 namespace polyroll::cli {
+
+// The commands declare their flags through the handles of flags/command_flags.h (not CLI11's own
+// header: that header says why).
+using flags::Command;
+using flags::Flag;
+using flags::Range;
 
 // Exit codes, the same for every command.
 inline constexpr int kExitOk = 0;
@@ -16,15 +22,15 @@ inline constexpr int kExitDiverged = 3;   // the run was numerically unsound; it
 
 using Action = std::function<int()>;
 
-Action add_run_command(CLI::App& app);
-Action add_presets_command(CLI::App& app);
-Action add_bench_command(CLI::App& app);
-Action add_compare_command(CLI::App& app);
-Action add_render_command(CLI::App& app);
-Action add_sweep_command(CLI::App& app);
-Action add_figures_command(CLI::App& app);
-Action add_tradeoff_command(CLI::App& app);
-Action add_validate_command(CLI::App& app);
-Action add_calibrate_command(CLI::App& app);
+Action add_run_command(Command& app);
+Action add_presets_command(Command& app);
+Action add_bench_command(Command& app);
+Action add_compare_command(Command& app);
+Action add_render_command(Command& app);
+Action add_sweep_command(Command& app);
+Action add_figures_command(Command& app);
+Action add_tradeoff_command(Command& app);
+Action add_validate_command(Command& app);
+Action add_calibrate_command(Command& app);
 
 }  // namespace polyroll::cli

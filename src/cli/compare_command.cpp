@@ -152,12 +152,12 @@ int compare(const CompareOptions& o) {
 
 }  // namespace
 
-Action add_compare_command(CLI::App& app) {
+Action add_compare_command(Command& app) {
     auto opts = std::make_shared<CompareOptions>();
     const std::string models = model_list(everyday_models());
-    CLI::App* sub = app.add_subcommand(
+    Command sub = app.add_subcommand(
         "compare", fmt::format("run one scene with every model ({}), side by side", models));
-    sub->footer(fmt::format(
+    sub.footer(fmt::format(
         "Examples:\n"
         "  polyroll compare\n"
         "  polyroll compare --sides 6 --fill 0.25 --angle 20 --out runs/cmp\n"
@@ -167,16 +167,16 @@ Action add_compare_command(CLI::App& app) {
         "Exit codes: 0 done, 2 bad input, 3 a run diverged, 1 other failure.",
         models));
     // No --model: compare runs every model, so the flag would be listed and ignored.
-    opts->scene.add_to(*sub, {"run.model"});
-    sub->add_option("--out", opts->out,
-                    fmt::format("folder for {}/ (each summary.json, trajectory.csv, impacts.csv) and speed_vs_time.csv",
-                                model_list(everyday_models(), "/, ")))
-        ->group("Output");
-    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
-    sub->add_flag("--json", opts->json, "print the table as JSON (the scene, then one object per model) instead")
-        ->group("Output");
-    sub->add_flag("--dem3d", opts->dem3d,
-                  "also run the 3D reference (Yade; about a minute for a whole-ramp run), into dem3d/");
+    opts->scene.add_to(sub, {"run.model"});
+    sub.add_option("--out", opts->out,
+                   fmt::format("folder for {}/ (each summary.json, trajectory.csv, impacts.csv) and speed_vs_time.csv",
+                               model_list(everyday_models(), "/, ")))
+        .group("Output");
+    sub.add_flag("--force", opts->force, "write into an existing non-empty --out folder").group("Output");
+    sub.add_flag("--json", opts->json, "print the table as JSON (the scene, then one object per model) instead")
+        .group("Output");
+    sub.add_flag("--dem3d", opts->dem3d,
+                 "also run the 3D reference (Yade; about a minute for a whole-ramp run), into dem3d/");
     return [opts] { return compare(*opts); };
 }
 

@@ -223,12 +223,12 @@ int run(const FiguresArgs& a) {
 
 }  // namespace
 
-Action add_figures_command(CLI::App& app) {
+Action add_figures_command(Command& app) {
     auto a = std::make_shared<FiguresArgs>();
-    CLI::App* sub = app.add_subcommand(
+    Command sub = app.add_subcommand(
         "figures", "draw the figures of a sweep, run or compare folder, each with a CSV of what it plots "
                    "(python3-matplotlib)");
-    sub->footer(
+    sub.footer(
         "A sweep folder: distance_vs_angle, terminal_velocity_vs_fill, behaviour_map, speed_vs_time.\n"
         "A run folder (polyroll run --out) or a compare folder (polyroll compare --out): speed_vs_time,\n"
         "energy_vs_time and report.md (a row per run).\n"
@@ -238,13 +238,13 @@ Action add_figures_command(CLI::App& app) {
         "  polyroll figures runs/cmp --out figures/cmp --format png,svg\n"
         "Runs shown against time whose trajectory the sweep did not keep (sweep --trajectories) are run again\n"
         "into OUT/runs/<id>/. Exit codes: 0 done, 2 bad input, 1 other failure (e.g. matplotlib missing).");
-    sub->add_option("folder", a->folder, "sweep folder (plan.json, results.csv), run folder or compare folder")
-        ->required();
-    sub->add_option("--out", a->out, "folder for the figures (default: figures)");
-    sub->add_option("--format", a->format, "png, svg or png,svg (default: png)");
-    sub->add_option("--runs", a->runs, "run ids for speed_vs_time.png, comma-separated (default: one run per "
-                                       "behaviour)");
-    sub->add_flag("--force", a->force, "write into an existing non-empty --out folder");
+    sub.add_option("folder", a->folder, "sweep folder (plan.json, results.csv), run folder or compare folder")
+        .required();
+    sub.add_option("--out", a->out, "folder for the figures (default: figures)");
+    sub.add_option("--format", a->format, "png, svg or png,svg (default: png)");
+    sub.add_option("--runs", a->runs, "run ids for speed_vs_time.png, comma-separated (default: one run per "
+                                      "behaviour)");
+    sub.add_flag("--force", a->force, "write into an existing non-empty --out folder");
     return [a] { return run(*a); };
 }
 

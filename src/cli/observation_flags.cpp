@@ -15,21 +15,21 @@ namespace polyroll::cli {
 
 using json = nlohmann::ordered_json;
 
-void add_observation_scene_flags(CLI::App* sub, const std::shared_ptr<ObservationSceneFlags>& flags) {
+void add_observation_scene_flags(flags::Command& sub, const std::shared_ptr<ObservationSceneFlags>& flags) {
     // No --param alias: beside calibrate's --params it read as the same flag, and its errors named
     // --set; one name, the one every error uses.
-    sub->add_option("--set", flags->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
-                                          "--set fill.material.wall_friction=0.05 (repeatable)")
-        ->group("Scene");
+    sub.add_option("--set", flags->sets, "any scene field on top of every observation: FIELD=VALUE, e.g. "
+                                         "--set fill.material.wall_friction=0.05 (repeatable)")
+        .group("Scene");
     // Every scene flag but the seed (--seeds gives those), from the field table.
     for (const SceneField& f : scene_fields()) {
         if (f.flag.empty() || f.type == FieldType::seed) continue;
         const std::string path(f.path);
-        CLI::Option* o = sub->add_option_function<std::string>(
-                                std::string(f.flag),
-                                [flags, path](const std::string& v) { flags->scene_text[path].first = v; },
-                                field_help(f) + " (on top of every observation)")
-                             ->group("Scene");
+        flags::Flag o = sub.add_option_function(
+                               std::string(f.flag),
+                               [flags, path](const std::string& v) { flags->scene_text[path].first = v; },
+                               field_help(f) + " (on top of every observation)")
+                            .group("Scene");
         flags->scene_text[path] = {"", o};
     }
 }
@@ -38,8 +38,8 @@ std::vector<std::pair<std::string, json>> observation_overrides(const Observatio
     std::vector<std::pair<std::string, json>> out;
     for (const SceneField& f : scene_fields()) {
         const auto it = a.scene_text.find(std::string(f.path));
-        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
-        const std::string flag = it->second.second->get_name();
+        if (it == a.scene_text.end() || it->second.second.count() == 0) continue;
+        const std::string flag = it->second.second.name();
         const std::vector<json> v = sweep::parse_grid_values(flag, it->second.first);
         if (v.size() != 1) throw InputError(fmt::format("{} {}: one value (allowed: a single value, applied to every observation)", flag, it->second.first));
         out.emplace_back(std::string(f.path), v.front());
@@ -57,8 +57,8 @@ std::vector<std::string> observation_flags_args(const ObservationSceneFlags& a) 
     std::vector<std::string> out;
     for (const SceneField& f : scene_fields()) {
         const auto it = a.scene_text.find(std::string(f.path));
-        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
-        out.push_back(it->second.second->get_name());
+        if (it == a.scene_text.end() || it->second.second.count() == 0) continue;
+        out.push_back(it->second.second.name());
         out.push_back(it->second.first);
     }
     for (const std::string& s : a.sets) {
@@ -72,8 +72,8 @@ std::string observation_flags_text(const ObservationSceneFlags& a) {
     std::string out;
     for (const SceneField& f : scene_fields()) {
         const auto it = a.scene_text.find(std::string(f.path));
-        if (it == a.scene_text.end() || it->second.second->count() == 0) continue;
-        out += fmt::format(" {} {}", it->second.second->get_name(), it->second.first);
+        if (it == a.scene_text.end() || it->second.second.count() == 0) continue;
+        out += fmt::format(" {} {}", it->second.second.name(), it->second.first);
     }
     for (const std::string& s : a.sets) out += " --set " + s;
     return out;

@@ -8,18 +8,19 @@
 #include <utility>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json_fwd.hpp>
+
+#include "flags/command_flags.h"
 
 namespace polyroll::cli {
 
 struct ObservationSceneFlags {
     std::vector<std::string> sets;                                            // FIELD=VALUE
-    std::map<std::string, std::pair<std::string, CLI::Option*>> scene_text;  // field path -> flag text, its option
+    std::map<std::string, std::pair<std::string, flags::Flag>> scene_text;  // field path -> flag text, its option
 };
 
 // Registers --set and the scene flags on `sub` (group "Scene"); `flags` receives their text.
-void add_observation_scene_flags(CLI::App* sub, const std::shared_ptr<ObservationSceneFlags>& flags);
+void add_observation_scene_flags(flags::Command& sub, const std::shared_ptr<ObservationSceneFlags>& flags);
 
 // The given flags as field values (InputError for a bad one: one line naming it and what is allowed).
 std::vector<std::pair<std::string, nlohmann::ordered_json>> observation_overrides(const ObservationSceneFlags& flags);

@@ -68,19 +68,19 @@ int list(bool as_json) {
 
 }  // namespace
 
-Action add_presets_command(CLI::App& app) {
+Action add_presets_command(Command& app) {
     auto as_json = std::make_shared<bool>(false);
-    CLI::App* sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps, fidelity levels, the "
-                                                  "window's presets and the experiment's observations");
-    sub->footer(fmt::format("The presets are the files of assets/, compiled in. {}=DIR reads any of them from DIR "
-                            "instead (e.g. DIR/materials.json with a material of your own), for every command and "
-                            "polyroll-sandbox.\n"
-                            "Examples:\n"
-                            "  polyroll presets\n"
-                            "  polyroll presets --json > presets.json\n"
-                            "  {}=my-assets polyroll presets       # my-assets/materials.json and the rest",
-                            assets::kDirectoryVariable, assets::kDirectoryVariable));
-    sub->add_flag("--json", *as_json, "print them, with their sources, as JSON");
+    Command sub = app.add_subcommand("presets", "list the bundled polygons, materials, ramps, fidelity levels, the "
+                                                "window's presets and the experiment's observations");
+    sub.footer(fmt::format("The presets are the files of assets/, compiled in. {}=DIR reads any of them from DIR "
+                           "instead (e.g. DIR/materials.json with a material of your own), for every command and "
+                           "polyroll-sandbox.\n"
+                           "Examples:\n"
+                           "  polyroll presets\n"
+                           "  polyroll presets --json > presets.json\n"
+                           "  {}=my-assets polyroll presets       # my-assets/materials.json and the rest",
+                           assets::kDirectoryVariable, assets::kDirectoryVariable));
+    sub.add_flag("--json", *as_json, "print them, with their sources, as JSON");
     return [as_json] { return list(*as_json); };
 }
 

@@ -304,10 +304,10 @@ int render(const RenderOptions& given) {
 
 }  // namespace
 
-Action add_render_command(CLI::App& app) {
+Action add_render_command(Command& app) {
     auto opts = std::make_shared<RenderOptions>();
-    CLI::App* sub = app.add_subcommand("render", "render a scene headless to PNG frames (and a video with ffmpeg)");
-    sub->footer(
+    Command sub = app.add_subcommand("render", "render a scene headless to PNG frames (and a video with ffmpeg)");
+    sub.footer(
         "Frames are taken whenever simulated time has advanced by 1/(fps x slow), until the run ends, then\n"
         "the final state is held for --hold seconds. summary.json, trajectory.csv and impacts.csv go beside\n"
         "the frames, as 'polyroll run' writes them. No display or GPU is needed (OSMesa).\n"
@@ -319,31 +319,31 @@ Action add_render_command(CLI::App& app) {
         "Exit codes: 0 done, 2 bad input, 3 the run diverged (frames and files are written), 130 interrupted (the\n"
         "folder it made is removed), 1 other failure (including a --video that could not be made; the frames are\n"
         "still written).");
-    opts->scene.add_to(*sub);
-    sub->add_option("--out", opts->out, "folder for the frames and the run's files")->required()->group("Output");
-    sub->add_option("--size", opts->size, "frame size WIDTHxHEIGHT in pixels (default 1280x720)")->group("Output");
-    sub->add_option("--fps", opts->fps, "frames per second of video, 1 to 240 (default 30)")->group("Output");
-    sub->add_option("--slow", opts->slow, "slow motion: K times as many frames per simulated second (default 1)")
-        ->group("Output");
-    sub->add_option("--hold", opts->hold_s, "seconds of video the final state is held for (default 1)")->group("Output");
-    sub->add_flag("--follow", opts->follow, "the camera follows the polygon instead of showing the whole ramp")
-        ->group("Output");
-    sub->add_option("--color-by", opts->colour_by, "grain colours: material (default) or speed")->group("Output");
+    opts->scene.add_to(sub);
+    sub.add_option("--out", opts->out, "folder for the frames and the run's files").required().group("Output");
+    sub.add_option("--size", opts->size, "frame size WIDTHxHEIGHT in pixels (default 1280x720)").group("Output");
+    sub.add_option("--fps", opts->fps, "frames per second of video, 1 to 240 (default 30)").group("Output");
+    sub.add_option("--slow", opts->slow, "slow motion: K times as many frames per simulated second (default 1)")
+        .group("Output");
+    sub.add_option("--hold", opts->hold_s, "seconds of video the final state is held for (default 1)").group("Output");
+    sub.add_flag("--follow", opts->follow, "the camera follows the polygon instead of showing the whole ramp")
+        .group("Output");
+    sub.add_option("--color-by", opts->colour_by, "grain colours: material (default) or speed").group("Output");
     // The same flag in British spelling, echoed as typed in its messages.
-    sub->add_option_function<std::string>(
+    sub.add_option_function(
            "--colour-by",
            [opts](const std::string& v) {
                opts->colour_by = v;
                opts->colour_flag = "--colour-by";
            },
            "the same as --color-by")
-        ->group("Output");
-    sub->add_option("--video", opts->video,
-                    "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4); a "
-                    "relative name goes into the --out folder")
-        ->group("Output");
-    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder (old frames are removed)")
-        ->group("Output");
+        .group("Output");
+    sub.add_option("--video", opts->video,
+                   "also encode the frames to this video file with ffmpeg (H.264: .mp4, .mkv or .mov; e.g. run.mp4); a "
+                   "relative name goes into the --out folder")
+        .group("Output");
+    sub.add_flag("--force", opts->force, "write into an existing non-empty --out folder (old frames are removed)")
+        .group("Output");
     return [opts] { return render(*opts); };
 }
 

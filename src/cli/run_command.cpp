@@ -171,10 +171,10 @@ int run(const RunOptions& o) {
 
 }  // namespace
 
-Action add_run_command(CLI::App& app) {
+Action add_run_command(Command& app) {
     auto opts = std::make_shared<RunOptions>();
-    CLI::App* sub = app.add_subcommand("run", "run one scene and report what the experiment measured");
-    sub->footer(
+    Command sub = app.add_subcommand("run", "run one scene and report what the experiment measured");
+    sub.footer(
         "Examples:\n"
         "  polyroll run\n"
         "  polyroll run --sides 8 --fill 0.375 --material rice --angle 14 --out runs/oct-rice\n"
@@ -182,10 +182,10 @@ Action add_run_command(CLI::App& app) {
         "  polyroll run --set fill.material.wall_friction=0.05 --set ramp.length_m=1.5\n"
         "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 130 interrupted (the folder it\n"
         "made is removed), 1 other failure.");
-    opts->scene.add_to(*sub);
-    sub->add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv")->group("Output");
-    sub->add_flag("--json", opts->json, "print the summary as JSON instead of text")->group("Output");
-    sub->add_flag("--force", opts->force, "write into an existing non-empty --out folder")->group("Output");
+    opts->scene.add_to(sub);
+    sub.add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv").group("Output");
+    sub.add_flag("--json", opts->json, "print the summary as JSON instead of text").group("Output");
+    sub.add_flag("--force", opts->force, "write into an existing non-empty --out folder").group("Output");
     return [opts] { return run(*opts); };
 }
 

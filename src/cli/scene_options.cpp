@@ -36,34 +36,32 @@ std::string default_note(const SceneField& f) {
 }
 
 template <class T>
-void SceneOptions::add_flag(CLI::App& app, const std::string& name, const std::string& field,
+void SceneOptions::add_flag(flags::Command& app, const std::string& name, const std::string& field,
                             const std::string& help) {
     // The value lives on the heap so the flag's reader stays valid however flags_ grows.
     auto value = std::make_shared<T>();
-    CLI::Option* o = app.add_option(name, *value, help)->group("Scene");
+    flags::Flag o = app.add_option(name, *value, help).group("Scene");
     // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1) and clamps a
     // number past 2^64-1 to 2^64-1: only digits that fit are a value.
     if constexpr (std::is_unsigned_v<T>)
-        o->check(CLI::Validator(
-            [](const std::string& text) {
-                T parsed = 0;
-                const char* end = text.data() + text.size();
-                const auto [ptr, error] = std::from_chars(text.data(), end, parsed);
-                return error == std::errc() && ptr == end ? std::string()
-                                                          : "must be a whole number from 0 to 2^64-1, got " + text;
-            },
-            ""));  // no description: help shows the type, UINT, once
+        o.check([](const std::string& text) {
+            T parsed = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, error] = std::from_chars(text.data(), end, parsed);
+            return error == std::errc() && ptr == end ? std::string()
+                                                      : "must be a whole number from 0 to 2^64-1, got " + text;
+        });
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
 
-void SceneOptions::add_to(CLI::App& app, const std::vector<std::string>& without) {
+void SceneOptions::add_to(flags::Command& app, const std::vector<std::string>& without) {
     without_ = without;
     scene_option_ = app.add_option("--scene", scene_file_, "scene file (JSON); flags given too override it")
-                        ->group("Scene");
+                        .group("Scene");
     app.add_option("--set", sets_,
                    "any scene field: FIELD=VALUE, e.g. --set fill.material.wall_friction=0.05 (repeatable; fields "
                    "as in a scene file; null unsets an optional field); over the scene file, beside the flags")
-        ->group("Scene");
+        .group("Scene");
     // One flag per field that has one (sim/scene/scene_fields.cpp), in scene-file order.
     std::vector<const SceneField*> fields;
     for (const SceneField& f : scene_fields())
@@ -110,13 +108,13 @@ std::vector<std::pair<std::string, json>> SceneOptions::parsed_sets() const {
 
 Scene SceneOptions::resolve() const {
     std::vector<SceneLayer> layers;
-    if (scene_option_ && scene_option_->count() > 0) layers.push_back(read_scene_file(scene_file_));
+    if (scene_option_.count() > 0) layers.push_back(read_scene_file(scene_file_));
     SceneLayer cli;
     cli.origin = "command line";
     cli.doc = json::object();
     for (const Flag& f : flags_) {
-        if (f.option->count() == 0) continue;
-        cli.field_labels.emplace_back(f.field, f.option->get_name());
+        if (f.option.count() == 0) continue;
+        cli.field_labels.emplace_back(f.field, f.option.name());
         node_at(cli.doc, f.field) = f.value();
     }
     for (const std::pair<std::string, json>& set : parsed_sets()) {

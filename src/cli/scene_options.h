@@ -9,8 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json_fwd.hpp>
+
+#include "flags/command_flags.h"
 
 #include "sim/scene/scene.h"
 #include "sim/scene/scene_fields.h"
@@ -31,24 +32,24 @@ public:
     // Registers one flag per field that has one, but the fields in `without` (paths, e.g. "run.model":
     // a command that sets that field itself does not list a flag it would ignore), and --set for
     // any other field.
-    void add_to(CLI::App& app, const std::vector<std::string>& without = {});
+    void add_to(flags::Command& app, const std::vector<std::string>& without = {});
     // Resolves and validates the scene; throws InputError.
     Scene resolve() const;
 
 private:
     struct Flag {
-        CLI::Option* option = nullptr;
+        flags::Flag option;
         std::string field;                           // e.g. "shell.sides"
         std::function<nlohmann::ordered_json()> value;  // the parsed value, as JSON
     };
     template <class T>
-    void add_flag(CLI::App& app, const std::string& name, const std::string& field, const std::string& help);
+    void add_flag(flags::Command& app, const std::string& name, const std::string& field, const std::string& help);
 
     // --set FIELD=VALUE: any field of a scene file, as sweep, validate and calibrate take it.
     std::vector<std::pair<std::string, nlohmann::ordered_json>> parsed_sets() const;
 
     std::string scene_file_;
-    CLI::Option* scene_option_ = nullptr;
+    flags::Flag scene_option_;
     std::vector<Flag> flags_;
     std::vector<std::string> sets_;
     std::vector<std::string> without_;  // fields the command sets itself: no flag, and refused by --set

@@ -17,32 +17,32 @@ namespace polyroll::cli {
 
 namespace fs = std::filesystem;
 
-void add_slurm_flags(CLI::App* sub, const std::shared_ptr<SlurmFlags>& flags, const std::string& needs) {
-    sub->add_option("--slurm-tasks", flags->tasks,
-                    fmt::format("{}: write slurm/array.sbatch in the folder, a Slurm job array of N tasks (1 to {}; "
-                                "task K runs --shard K/N), and slurm/merge.sbatch, the step after it; submit both "
-                                "when sbatch is on PATH",
-                                needs, sweep::kMaxSlurmTasks))
-        ->check(CLI::Range(1, sweep::kMaxSlurmTasks))
-        ->group("Slurm");
-    flags->cpus_option = sub->add_option("--slurm-cpus-per-task", flags->cpus_per_task,
-                                         fmt::format("with --slurm-tasks: CPUs each task asks for and runs at a time "
-                                                     "(its --jobs), 1 to {} (default 1)",
-                                                     sweep::kMaxSlurmCpusPerTask))
-                             ->check(CLI::Range(1, sweep::kMaxSlurmCpusPerTask))
-                             ->group("Slurm");
+void add_slurm_flags(flags::Command& sub, const std::shared_ptr<SlurmFlags>& flags, const std::string& needs) {
+    sub.add_option("--slurm-tasks", flags->tasks,
+                   fmt::format("{}: write slurm/array.sbatch in the folder, a Slurm job array of N tasks (1 to {}; "
+                               "task K runs --shard K/N), and slurm/merge.sbatch, the step after it; submit both "
+                               "when sbatch is on PATH",
+                               needs, sweep::kMaxSlurmTasks))
+        .check(flags::Range(1, sweep::kMaxSlurmTasks))
+        .group("Slurm");
+    flags->cpus_option = sub.add_option("--slurm-cpus-per-task", flags->cpus_per_task,
+                                        fmt::format("with --slurm-tasks: CPUs each task asks for and runs at a time "
+                                                    "(its --jobs), 1 to {} (default 1)",
+                                                    sweep::kMaxSlurmCpusPerTask))
+                             .check(flags::Range(1, sweep::kMaxSlurmCpusPerTask))
+                             .group("Slurm");
     flags->no_submit_option =
-        sub->add_flag("--slurm-no-submit", flags->no_submit,
-                      "with --slurm-tasks: write the scripts and print the sbatch commands, submit nothing")
-            ->group("Slurm");
+        sub.add_flag("--slurm-no-submit", flags->no_submit,
+                     "with --slurm-tasks: write the scripts and print the sbatch commands, submit nothing")
+            .group("Slurm");
 }
 
 void check_slurm_flags(const SlurmFlags& flags) {
     if (flags.asked()) return;
-    if (flags.cpus_option && flags.cpus_option->count() > 0)
+    if (flags.cpus_option.count() > 0)
         throw InputError(fmt::format("--slurm-cpus-per-task {} needs --slurm-tasks N (allowed: --slurm-tasks 1 to {})",
                                      flags.cpus_per_task, sweep::kMaxSlurmTasks));
-    if (flags.no_submit_option && flags.no_submit_option->count() > 0)
+    if (flags.no_submit_option.count() > 0)
         throw InputError(fmt::format("--slurm-no-submit needs --slurm-tasks N (allowed: --slurm-tasks 1 to {})",
                                      sweep::kMaxSlurmTasks));
 }

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "flags/command_flags.h"
 
 #include "sweep/slurm_scripts.h"
 
@@ -20,15 +20,15 @@ struct SlurmFlags {
     int tasks = 0;  // --slurm-tasks N; 0: not given
     int cpus_per_task = 1;
     bool no_submit = false;
-    CLI::Option* cpus_option = nullptr;
-    CLI::Option* no_submit_option = nullptr;
+    flags::Flag cpus_option;
+    flags::Flag no_submit_option;
 
     bool asked() const { return tasks > 0; }
 };
 
 // Registers --slurm-tasks, --slurm-cpus-per-task and --slurm-no-submit on `sub` (group "Slurm").
 // `needs` says in the help what --slurm-tasks goes with (sweep: "with --out DIR --plan-only").
-void add_slurm_flags(CLI::App* sub, const std::shared_ptr<SlurmFlags>& flags, const std::string& needs);
+void add_slurm_flags(flags::Command& sub, const std::shared_ptr<SlurmFlags>& flags, const std::string& needs);
 
 // Refuses (InputError) --slurm-cpus-per-task or --slurm-no-submit without --slurm-tasks, and an array
 // of more tasks than the plan has runs (a task with nothing to do).

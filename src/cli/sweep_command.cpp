@@ -45,7 +45,7 @@ struct SweepArgs {
     std::string out, from, merge, shard;
     bool plan_only = false, trajectories = false, retry_failed = false, quiet = false, large = false;
     int jobs = 0;
-    std::vector<CLI::Option*> scene_options;  // every option that defines the grid
+    std::vector<Flag> scene_options;  // every option that defines the grid
 };
 
 
@@ -121,7 +121,7 @@ int run(const SweepArgs& a, const SlurmFlags& slurm) {
         throw InputError("sweep: give exactly one of --out DIR (a new sweep or its resumption), --from DIR (run a "
                          "written plan) or --merge DIR");
     const bool grid_flags = std::any_of(a.scene_options.begin(), a.scene_options.end(),
-                                        [](const CLI::Option* o) { return o->count() > 0; });
+                                        [](const Flag& o) { return o.count() > 0; });
     if (a.out.empty() && grid_flags)
         throw InputError(fmt::format("sweep: scene and grid flags are not allowed with --from or --merge (the plan "
                                      "in the folder defines the runs)"));
@@ -194,10 +194,10 @@ int run(const SweepArgs& a, const SlurmFlags& slurm) {
 
 }  // namespace
 
-Action add_sweep_command(CLI::App& app) {
+Action add_sweep_command(Command& app) {
     auto a = std::make_shared<SweepArgs>();
-    CLI::App* sub = app.add_subcommand("sweep", "run a grid of scenes in parallel into one results table");
-    sub->footer(
+    Command sub = app.add_subcommand("sweep", "run a grid of scenes in parallel into one results table");
+    sub.footer(
         "Lists a,b,c and ranges start:stop:step (stop included) may be mixed: --fill 0,0.05:0.95:0.15,1.\n"
         "Examples:\n"
         "  polyroll sweep --sides 6,8 --fill 0:1:0.125 --angle 5:30:1 --material bb,rice,peas --seeds 3 --out sweeps/grid\n"
@@ -211,46 +211,46 @@ Action add_sweep_command(CLI::App& app) {
         "rows of the table), 2 bad input, 130 interrupted (resume with the same command), 1 every run failed, another\n"
         "failure, or --merge with runs missing.");
     a->scene_options.push_back(
-        sub->add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid")->group("Grid"));
+        sub.add_option("--scene", a->scene_file, "base scene file (JSON) under every point of the grid").group("Grid"));
     for (const SceneField* f : sweep::axis_fields()) {
-        CLI::Option* o = sub->add_option_function<std::string>(
-                                std::string(f->flag),
-                                [a, name = std::string(f->flag)](const std::string& v) { a->axis_text[name] = v; },
-                                axis_help(*f))
-                             ->group("Grid");
+        Flag o = sub.add_option_function(
+                        std::string(f->flag),
+                        [a, name = std::string(f->flag)](const std::string& v) { a->axis_text[name] = v; },
+                        axis_help(*f))
+                     .group("Grid");
         a->scene_options.push_back(o);
     }
     // One name (no --param alias: errors name --set, and calibrate's --params is another flag).
-    a->scene_options.push_back(sub->add_option("--set", a->sets,
-                                               "any scene field: FIELD=VALUES, e.g. --set shell.depth_m=0.05:0.07:0.01 "
-                                               "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m; null unsets an "
-                                               "optional field)")
-                                   ->group("Grid"));
+    a->scene_options.push_back(sub.add_option("--set", a->sets,
+                                              "any scene field: FIELD=VALUES, e.g. --set shell.depth_m=0.05:0.07:0.01 "
+                                              "(repeatable; fields as in a scene file, e.g. fill.material.diameter_m; "
+                                              "null unsets an optional field)")
+                                   .group("Grid"));
     a->scene_options.push_back(
-        sub->add_option("--seed", a->seed_list, "a LIST of seeds for the grain packing, e.g. 1,5,9 "
-                                                "(--seeds N is the count form: 1, 2, ..., N)")->group("Grid"));
-    a->scene_options.push_back(sub->add_option("--seeds", a->seeds, "a COUNT: N seeds per point, 1, 2, ..., N "
-                                                                    "(--seed LIST names them instead)")
-                                   ->check(CLI::Range(1, 100000))
-                                   ->group("Grid"));
-    sub->add_option("--out", a->out, "sweep folder: plan.json, results.csv, runs/<id>/; an existing sweep folder "
-                                     "of the same command is resumed")
-        ->group("Folders");
-    sub->add_flag("--plan-only", a->plan_only, "write the plan into --out and run nothing")->group("Folders");
-    sub->add_option("--from", a->from, "run the plan in this sweep folder (what is left of it)")->group("Folders");
-    sub->add_option("--shard", a->shard, "with --from: run slice K of N (runs whose index is K-1 modulo N)")
-        ->group("Folders");
-    sub->add_option("--merge", a->merge, "combine the folder's tables into its results.csv")->group("Folders");
+        sub.add_option("--seed", a->seed_list, "a LIST of seeds for the grain packing, e.g. 1,5,9 "
+                                               "(--seeds N is the count form: 1, 2, ..., N)").group("Grid"));
+    a->scene_options.push_back(sub.add_option("--seeds", a->seeds, "a COUNT: N seeds per point, 1, 2, ..., N "
+                                                                   "(--seed LIST names them instead)")
+                                   .check(Range(1, 100000))
+                                   .group("Grid"));
+    sub.add_option("--out", a->out, "sweep folder: plan.json, results.csv, runs/<id>/; an existing sweep folder "
+                                    "of the same command is resumed")
+        .group("Folders");
+    sub.add_flag("--plan-only", a->plan_only, "write the plan into --out and run nothing").group("Folders");
+    sub.add_option("--from", a->from, "run the plan in this sweep folder (what is left of it)").group("Folders");
+    sub.add_option("--shard", a->shard, "with --from: run slice K of N (runs whose index is K-1 modulo N)")
+        .group("Folders");
+    sub.add_option("--merge", a->merge, "combine the folder's tables into its results.csv").group("Folders");
     // 0 is refused like tradeoff's --jobs 0 (not read as "all cores": leaving the flag out says that).
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
-        ->check(CLI::Range(1, 1024))
-        ->group("Running");
-    sub->add_flag("--trajectories", a->trajectories, "also write each run's trajectory.csv")->group("Running");
-    sub->add_flag("--retry-failed", a->retry_failed, "run again the runs recorded as failed")->group("Running");
-    sub->add_flag("--large", a->large, "confirm a plan of more than 100000 runs or 100 estimated hours (refused "
-                                       "without it)")
-        ->group("Running");
-    sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
+    sub.add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        .check(Range(1, 1024))
+        .group("Running");
+    sub.add_flag("--trajectories", a->trajectories, "also write each run's trajectory.csv").group("Running");
+    sub.add_flag("--retry-failed", a->retry_failed, "run again the runs recorded as failed").group("Running");
+    sub.add_flag("--large", a->large, "confirm a plan of more than 100000 runs or 100 estimated hours (refused "
+                                      "without it)")
+        .group("Running");
+    sub.add_flag("--quiet,-q", a->quiet, "no progress line").group("Running");
     auto slurm = std::make_shared<SlurmFlags>();
     add_slurm_flags(sub, slurm, "with --out DIR --plan-only");
     return [a, slurm] { return run(*a, *slurm); };

@@ -111,10 +111,10 @@ int run(const TradeoffArgs& a) {
 
 }  // namespace
 
-Action add_tradeoff_command(CLI::App& app) {
+Action add_tradeoff_command(Command& app) {
     auto a = std::make_shared<TradeoffArgs>();
-    CLI::App* sub = app.add_subcommand("tradeoff", "measure error against cost for every model and fidelity preset");
-    sub->footer(
+    Command sub = app.add_subcommand("tradeoff", "measure error against cost for every model and fidelity preset");
+    sub.footer(
         "Runs a fixed set of scenes with every model and preset (resumable: the same command continues),\n"
         "compares each with the converged reference and writes tradeoff.md, points.csv and tradeoff.png.\n"
         "With --dem3d, the 2D cross-section against the 3D reference instead (168 runs, half of them in Yade:\n"
@@ -123,11 +123,11 @@ Action add_tradeoff_command(CLI::App& app) {
         "Examples:\n"
         "  polyroll tradeoff\n"
         "  polyroll tradeoff --dem3d --out docs/tradeoff");
-    sub->add_option("--out", a->out, "folder for tradeoff.md, points.csv and tradeoff.png (default runs/tradeoff)");
-    sub->add_flag("--dem3d", a->dem3d, "the 2D grain model against the 3D reference (Yade) instead");
-    sub->add_option("--work", a->work, "sweep folder for the runs (default OUT/sweep)");
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)")->check(CLI::Range(1, 1024));
-    sub->add_flag("--quiet,-q", a->quiet, "no progress line");
+    sub.add_option("--out", a->out, "folder for tradeoff.md, points.csv and tradeoff.png (default runs/tradeoff)");
+    sub.add_flag("--dem3d", a->dem3d, "the 2D grain model against the 3D reference (Yade) instead");
+    sub.add_option("--work", a->work, "sweep folder for the runs (default OUT/sweep)");
+    sub.add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)").check(Range(1, 1024));
+    sub.add_flag("--quiet,-q", a->quiet, "no progress line");
     return [a] { return run(*a); };
 }
 

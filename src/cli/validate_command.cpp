@@ -223,11 +223,11 @@ int run(const ValidateArgs& a, const SlurmFlags& slurm) {
 
 }  // namespace
 
-Action add_validate_command(CLI::App& app) {
+Action add_validate_command(Command& app) {
     auto a = std::make_shared<ValidateArgs>();
-    CLI::App* sub = app.add_subcommand("validate", "run the experiment's observations over seeds and score the "
-                                                   "simulation against them");
-    sub->footer(
+    Command sub = app.add_subcommand("validate", "run the experiment's observations over seeds and score the "
+                                                 "simulation against them");
+    sub.footer(
         "Observations: assets/experiment.json (bundled) or --observations FILE of the same form (its \"format\"\n"
         "block describes every key). Scene flags apply on top of every observation.\n"
         "Examples:\n"
@@ -241,21 +241,21 @@ Action add_validate_command(CLI::App& app) {
         "The same command resumes; with more seeds it extends the folder, keeping the runs done. Exit codes:\n"
         "0 ran (agreement or not is in the scorecard), 2 bad input,\n"
         "130 interrupted (resume with the same command), 1 other failure.");
-    sub->add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
-    sub->add_option("--only", a->only, "run only the observation with this id (repeat the flag or give a list a,b; "
-                                       "default: every observation of the file)")
-        ->delimiter(',');
-    sub->add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)")->check(CLI::Range(1, 1000));
-    sub->add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
-                                     "figures/ (default runs/validate); the same command there resumes, more seeds extend it");
+    sub.add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub.add_option("--only", a->only, "run only the observation with this id (repeat the flag or give a list a,b; "
+                                      "default: every observation of the file)")
+        .delimiter(',');
+    sub.add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)").check(Range(1, 1000));
+    sub.add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
+                                    "figures/ (default runs/validate); the same command there resumes, more seeds extend it");
     // 0 is refused as sweep's and tradeoff's --jobs 0 are (leaving the flag out means all cores).
-    sub->add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
-        ->check(CLI::Range(1, 1024))
-        ->group("Running");
-    sub->add_option("--shard", a->shard, "run slice K of N only (runs whose index is K-1 modulo N)")->group("Running");
-    sub->add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
-                                       "replaced)")->group("Running");
-    sub->add_flag("--quiet,-q", a->quiet, "no progress line")->group("Running");
+    sub.add_option("--jobs,-j", a->jobs, "runs at a time, 1 to 1024 (default: all cores)")
+        .check(Range(1, 1024))
+        .group("Running");
+    sub.add_option("--shard", a->shard, "run slice K of N only (runs whose index is K-1 modulo N)").group("Running");
+    sub.add_flag("--force", a->force, "start over in a folder holding something else (its validation files are "
+                                      "replaced)").group("Running");
+    sub.add_flag("--quiet,-q", a->quiet, "no progress line").group("Running");
     add_observation_scene_flags(sub, std::shared_ptr<ObservationSceneFlags>(a, &a->scene));
     auto slurm = std::make_shared<SlurmFlags>();
     add_slurm_flags(sub, slurm, "run nothing here (the plan is written)");

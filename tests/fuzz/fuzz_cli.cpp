@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command_table.h"
 #include "cli/scene_options.h"
 #include "sim/errors.h"
@@ -57,7 +59,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::vector<char*> argv = argv_of(args);
         CLI::App app{"scene flags"};
         cli::SceneOptions scene;
-        scene.add_to(app);
+        flags::Command command(app);
+        scene.add_to(command);
         app.allow_extras();
         try {
             app.parse(static_cast<int>(args.size()), argv.data());
