@@ -63,9 +63,9 @@ Flag Command::add_option(const std::string& name, T& value, const std::string& h
     return Flag(app_->add_option(name, value, help));
 }
 
-Flag Command::add_option_function(const std::string& name, std::function<void(const std::string&)> take,
+Flag Command::add_option_function(const std::string& name, const std::function<void(const std::string&)>& take,
                                   const std::string& help) {
-    return Flag(app_->add_option_function<std::string>(name, std::move(take), help));
+    return Flag(app_->add_option_function<std::string>(name, take, help));
 }
 
 Flag Command::add_flag(const std::string& name, bool& value, const std::string& help) {

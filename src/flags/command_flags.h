@@ -59,7 +59,7 @@ public:
     template <class T>
     Flag add_option(const std::string& name, T& value, const std::string& help);
     // A flag whose text is passed to `take` when it is given.
-    Flag add_option_function(const std::string& name, std::function<void(const std::string&)> take,
+    Flag add_option_function(const std::string& name, const std::function<void(const std::string&)>& take,
                              const std::string& help);
     Flag add_flag(const std::string& name, bool& value, const std::string& help);
 
