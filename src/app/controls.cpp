@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "app/sandbox_settings.h"
 #include "sim/assets.h"

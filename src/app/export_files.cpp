@@ -1,7 +1,7 @@
 // Saving screenshots and runs from the sandbox: see export_files.h.
 #include "app/export_files.h"
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/results_io.h"
 

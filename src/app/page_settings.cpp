@@ -10,7 +10,7 @@
 #include <system_error>
 #include <vector>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "app/controls.h"
 #include "app/sandbox_presets.h"

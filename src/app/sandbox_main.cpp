@@ -13,7 +13,7 @@
 #include <utility>
 
 #include <CLI/CLI.hpp>
-#include <fmt/format.h>
+#include <fmt/core.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 

@@ -8,7 +8,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "app/sandbox_settings.h"
 #include "render/font.h"

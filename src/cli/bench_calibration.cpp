@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/model_registry.h"
 #include "sim/run_cost.h"

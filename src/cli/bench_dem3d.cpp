@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/dem3d/yade_process.h"
 #include "sim/errors.h"

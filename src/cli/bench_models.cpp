@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/scene/scene_json.h"
 #include "sim/model_registry.h"

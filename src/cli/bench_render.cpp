@@ -9,7 +9,7 @@
 #include <thread>
 #include <unistd.h>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "render/font.h"
 #include "render/frame_builder.h"

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <vector>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include "sim/assets.h"

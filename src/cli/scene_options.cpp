@@ -8,7 +8,7 @@
 #include <system_error>
 #include <type_traits>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/errors.h"
 #include "sim/scene/json_path.h"

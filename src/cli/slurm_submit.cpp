@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cstdio>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "cli/commands.h"
 #include "process/child_process.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "process/child_process.h"
 #include "process/installed_script.h"

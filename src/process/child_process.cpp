@@ -16,7 +16,7 @@
 #include <sys/prctl.h>
 #endif
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 extern char** environ;
 

@@ -8,7 +8,7 @@
 #include <exception>
 #include <thread>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 

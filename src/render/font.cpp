@@ -10,7 +10,7 @@
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 namespace polyroll::render {
 

@@ -6,7 +6,7 @@
 
 #include <png.h>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/atomic_file.h"
 

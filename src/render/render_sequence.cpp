@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "render/font.h"
 #include "render/frame_builder.h"

@@ -2,7 +2,7 @@
 #include "sim/build_info.h"
 
 #include <box2d/box2d.h>
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #ifndef POLYROLL_VERSION
 #error "POLYROLL_VERSION must be defined by the build (src/CMakeLists.txt)"

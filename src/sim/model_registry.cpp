@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/auto_run.h"
 #ifndef __EMSCRIPTEN__

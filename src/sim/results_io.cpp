@@ -1,7 +1,7 @@
 // A run's output files: see results_io.h.
 #include "sim/results_io.h"
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/atomic_file.h"
 #include "sim/model_registry.h"

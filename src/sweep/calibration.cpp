@@ -6,7 +6,7 @@
 #include <exception>
 #include <thread>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 #include <nlopt.hpp>
 
 #include "sim/errors.h"

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/assets.h"
 #include "sweep/scene_matrices.h"

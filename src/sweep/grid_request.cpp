@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <system_error>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"

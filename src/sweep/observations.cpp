@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/assets.h"
 #include "sim/errors.h"

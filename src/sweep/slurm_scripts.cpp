@@ -1,7 +1,7 @@
 // The Slurm batch scripts of a sweep folder: see slurm_scripts.h.
 #include "sweep/slurm_scripts.h"
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 namespace polyroll::sweep {
 

@@ -9,7 +9,7 @@
 #include <set>
 #include <thread>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/atomic_file.h"
 #include "sim/errors.h"

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/geometry/shell_pose.h"
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/geometry/ramp_profile.h"
 #include "sim/geometry/vertex_rounding.h"

@@ -20,7 +20,7 @@
 #include <optional>
 #include <limits>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/errors.h"
 #include "sim/reduced/pivot_motion.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/geometry/geometry.h"
 #include "sim/model_registry.h"

@@ -11,7 +11,7 @@
 #include <variant>
 #include <sstream>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/assets.h"
 #include "sim/errors.h"

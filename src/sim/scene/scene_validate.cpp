@@ -9,7 +9,7 @@
 #include <set>
 #include <string_view>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/grains/disc_size.h"
 #include "sim/errors.h"

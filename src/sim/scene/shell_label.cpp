@@ -4,7 +4,7 @@
 #include <array>
 #include <exception>
 
-#include <fmt/format.h>
+#include <fmt/core.h>
 
 #include "sim/assets.h"
 #include "sim/scene/scene_json.h"
