@@ -1,8 +1,9 @@
 // A command's flags as the commands declare them: thin handles over CLI11's App and Option, so that
 // a file which only declares flags does not include CLI11. CLI11 is header-only and large: a file
 // that includes it costs about 5.5 CPU-seconds more to compile (g++ -O3) and 10 more in clang-tidy,
-// paid by every file that saw it (measured in docs/testing.md). Only command_flags.cpp and the
-// programs that build and parse the app (cli/main.cpp, app/sandbox_main.cpp, the fuzzer) include it.
+// paid by every file that saw it (measured in docs/testing.md). Only command_flags.cpp, the parse
+// errors' wording (parse_errors.cpp) and the programs that build and parse an app (cli/main.cpp,
+// app/sandbox_main.cpp, the command-line fuzzer) include it.
 //
 // The handles keep CLI11's names and meaning (add_option, group, check, excludes, ...): whatever
 // CLI11's documentation says of them holds here. add_option is defined for the value types the
