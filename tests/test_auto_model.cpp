@@ -22,7 +22,7 @@ using polyroll::test::with_model;
 
 namespace {
 
-Scene empty_scene(int sides, double angle_deg) {
+Scene empty_auto_scene(int sides, double angle_deg) {
     Scene s = test::scene_with({{"fill", {{"ratio", 0.0}}},
                                 {"shell", {{"sides", sides}}},
                                 {"ramp", {{"angle_deg", angle_deg}}},
@@ -108,7 +108,7 @@ TEST_CASE("auto on a filled shell computes exactly what the grain model computes
 
 TEST_CASE("auto on an empty shell that lifts off carries it on as a free rigid body, records carrying on",
           "[runs][models][handover][auto]") {
-    const Scene s = empty_scene(8, 30.0);
+    const Scene s = empty_auto_scene(8, 30.0);
     // Where the rigid model stops holding by auto's rule: lift-off, or a slip (the ramp's friction).
     const RunResult rigid = models::run_reduced_model(with_model(s, Model::rigid), models::FillMotion::frozen, true);
     REQUIRE(rigid.model_invalid_time_s);
@@ -170,7 +170,7 @@ TEST_CASE("auto on an empty shell that lifts off carries it on as a free rigid b
 TEST_CASE("auto hands a shell to Box2D at the step before a contact the free rigid body does not model",
           "[runs][models][handover][auto]") {
     // A triangle released on a vertex at 20 deg sets its next face down flat on both vertices.
-    const Scene s = empty_scene(3, 20.0);
+    const Scene s = empty_auto_scene(3, 20.0);
     AutoRun run(s);
     run.run_to_end();
     const RunResult r = run.result();
@@ -192,7 +192,7 @@ TEST_CASE("auto hands the rigid model's shell on where it would slip, not only w
     // The empty hexagon at 20 deg never lifts off, but just before each impact its no-slip rolling
     // needs a friction force 16.7 times the normal force (docs/guide.md, polyroll bench --auto): the ramp's
     // 0.9 cannot give it, and the free rigid body takes over there, sliding, with no Box2D.
-    const Scene s = empty_scene(6, 20.0);
+    const Scene s = empty_auto_scene(6, 20.0);
     const Scene rigid = with_model(s, Model::rigid);
     CHECK(run_scene(rigid).model_valid);
     const RunResult until = models::run_reduced_model(rigid, models::FillMotion::frozen, true);
@@ -211,7 +211,7 @@ TEST_CASE("auto hands the rigid model's shell on where it would slip, not only w
 }
 
 TEST_CASE("auto on an empty shell that never lifts off is the rigid model throughout", "[runs][models][auto]") {
-    const Scene s = empty_scene(8, 5.0);
+    const Scene s = empty_auto_scene(8, 5.0);
     const RunResult a = run_scene(s);
     REQUIRE(a.model_choice);
     CHECK(!a.model_choice->hand_over_time_s);
@@ -226,7 +226,7 @@ TEST_CASE("auto on an empty shell that never lifts off is the rigid model throug
 TEST_CASE("auto on the empty shells of bench --auto behaves as the grain model does", "[models][auto]") {
     for (const auto& [sides, angle] : scenes::auto_shells()) {
         INFO("n = " << sides << " at " << angle << " deg");
-        const Scene s = empty_scene(sides, angle);
+        const Scene s = empty_auto_scene(sides, angle);
         const RunResult a = run_scene(s);
         const RunResult g = run_scene(with_model(s, Model::grains));
         CHECK(a.measured.behaviour == g.measured.behaviour);

@@ -10,6 +10,7 @@
 #include "sweep/calibration_params.h"
 #include "sweep/observations.h"
 #include "sweep/scorecard.h"
+#include "test_helpers.h"
 
 using namespace polyroll;
 using namespace polyroll::sweep;
@@ -41,13 +42,9 @@ json lab_doc(const json& observed, const json& tolerance) {
                                    {"observed", observed}, {"tolerance", tolerance}}})}};
 }
 
-std::string error_of(const json& doc) {
-    try {
-        parse_observations(doc, "lab.json");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+// The message a lab's observations file is refused with; "" if it is read.
+std::string lab_error_of(const json& doc) {
+    return test::input_error_of([&] { parse_observations(doc, "lab.json"); });
 }
 
 }  // namespace
@@ -124,16 +121,16 @@ TEST_CASE("observations: measured numbers need their tolerance, and may stand al
     CHECK(*f.observations[0].terminal_velocity_m_s == 0.35);
     CHECK(f.observations[0].distance_tolerance_m == 0.05);
     CHECK(f.observations[0].behaviour.empty());
-    CHECK_THAT(error_of(lab_doc({{"terminal_velocity_m_s", 0.35}}, json::object())),
+    CHECK_THAT(lab_error_of(lab_doc({{"terminal_velocity_m_s", 0.35}}, json::object())),
                Catch::Contains("tolerance.terminal_velocity_m_s is missing"));
-    CHECK_THAT(error_of(lab_doc({{"behaviour", "stopped"}}, {{"behaviour_share", 0.5}, {"distance_m", 0.1}})),
+    CHECK_THAT(lab_error_of(lab_doc({{"behaviour", "stopped"}}, {{"behaviour_share", 0.5}, {"distance_m", 0.1}})),
                Catch::Contains("tolerance.distance_m") && Catch::Contains("only with observed.distance_m"));
-    CHECK_THAT(error_of(lab_doc({{"distance_m", 0.3}}, {{"distance_m", 0.1}, {"behaviour_share", 0.5}})),
+    CHECK_THAT(lab_error_of(lab_doc({{"distance_m", 0.3}}, {{"distance_m", 0.1}, {"behaviour_share", 0.5}})),
                Catch::Contains("tolerance.behaviour_share") && Catch::Contains("only with observed.behaviour"));
-    CHECK_THAT(error_of(lab_doc({{"distance_m", -1}}, {{"distance_m", 0.1}})),
+    CHECK_THAT(lab_error_of(lab_doc({{"distance_m", -1}}, {{"distance_m", 0.1}})),
                Catch::Contains("observed.distance_m = -1"));
-    CHECK_THAT(error_of(lab_doc({{"distance_m", 1}}, {{"distance_m", 0}})), Catch::Contains("m above 0"));
-    CHECK_THAT(error_of(lab_doc({{"terminal_velocity", "smooth"}}, json::object())),
+    CHECK_THAT(lab_error_of(lab_doc({{"distance_m", 1}}, {{"distance_m", 0}})), Catch::Contains("m above 0"));
+    CHECK_THAT(lab_error_of(lab_doc({{"terminal_velocity", "smooth"}}, json::object())),
                Catch::Contains("or a measured 'distance_m'"));
 }
 

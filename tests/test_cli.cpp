@@ -30,12 +30,12 @@ using polyroll::test::kPolyrollExe;
 using polyroll::test::line_count;
 using polyroll::test::run_polyroll;
 
-const polyroll::test::Scratch scratch("cli-");
+const polyroll::test::Scratch cli_scratch("cli-");
 
 }  // namespace
 
 TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing written", "[cli][bad-input]") {
-    const fs::path out = scratch("bad-flags");
+    const fs::path out = cli_scratch("bad-flags");
     struct Case {
         std::string args;
         std::vector<std::string> words;
@@ -67,7 +67,7 @@ TEST_CASE("bad flags: one line naming the value and the range, exit 2, nothing w
 
 TEST_CASE("one vocabulary: --jobs 1 to 1024 everywhere, no --param alias, no --model for compare", "[cli][bad-input]") {
     // Each refused with one line and exit 2 before any run.
-    const fs::path out = scratch("vocabulary");
+    const fs::path out = cli_scratch("vocabulary");
     struct Case {
         std::string args;
         std::vector<std::string> words;
@@ -182,7 +182,7 @@ TEST_CASE("the real-time factor keeps significant digits for slow runs", "[cli]"
 }
 
 TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][bad-input]") {
-    const fs::path dir = scratch("bad-files");
+    const fs::path dir = cli_scratch("bad-files");
     fs::create_directories(dir);
     std::ofstream(dir / "malformed.json") << "{\"fill\": {\"ratio\": 0.5,}";
     std::ofstream(dir / "unknown.json") << R"({"fill": {"ratio": 0.5, "colour": "red"}})";
@@ -215,7 +215,7 @@ TEST_CASE("bad scene files and output folders: exit 2, nothing written", "[cli][
 // --set reaches any field of a scene file from run, render, compare and bench, as sweep, validate and
 // calibrate have it: one value, over the scene file, beside the named flags but never against them.
 TEST_CASE("run --set FIELD=VALUE sets any scene field, and a bad one is refused in one line", "[cli][bad-input]") {
-    const fs::path out = scratch("set-run");
+    const fs::path out = cli_scratch("set-run");
     const Result r = run_polyroll("run --fill 0.25 --time-limit 0.2 --set fill.material.wall_friction=0.05 "
                                   "--set fill.material.grains_per_disc=null --set ramp.preset=wooden --out " +
                                   out.string());
@@ -227,7 +227,7 @@ TEST_CASE("run --set FIELD=VALUE sets any scene field, and a bad one is refused 
     CHECK(scene.at("fill").at("material").at("grains_per_disc").is_null());
     CHECK(scene.at("ramp").at("preset") == "wooden");
 
-    const fs::path refused = scratch("set-refused");
+    const fs::path refused = cli_scratch("set-refused");
     struct Case {
         std::string args;
         std::vector<std::string> words;
@@ -246,7 +246,7 @@ TEST_CASE("run --set FIELD=VALUE sets any scene field, and a bad one is refused 
 }
 
 TEST_CASE("a run writes summary.json, trajectory.csv and impacts.csv", "[cli]") {
-    const fs::path out = scratch("good-run");
+    const fs::path out = cli_scratch("good-run");
     // A trailing slash, as shells complete folder names: the files line joins it as a path.
     const Result r = run_polyroll("run --fill 0 --angle 10 --ramp wooden --out " + out.string() + "/");
     INFO(r.out);
@@ -299,7 +299,7 @@ TEST_CASE("presets lists every bundled preset", "[cli]") {
 }
 
 TEST_CASE("a diverged run exits with 3 and says why, its files complete", "[cli][divergence]") {
-    const fs::path out = scratch("diverged");
+    const fs::path out = cli_scratch("diverged");
     const Result r = run_polyroll("run --step-hz 30 --angle 60 --out " + out.string());
     CHECK(r.exit_code == 3);
     CHECK(r.out.find("diverged") != std::string::npos);
@@ -331,7 +331,7 @@ TEST_CASE("polyroll --version and polyroll-sandbox --version name the version, t
 
 TEST_CASE("the shell is named for what it is: --sides 8 on the small hexagon is an octagon", "[cli]") {
     // The header and summary.json said "hexagon-small (n = 8)".
-    const fs::path out = scratch("octagon");
+    const fs::path out = cli_scratch("octagon");
     const Result r = run_polyroll("run --sides 8 --fill 0 --time-limit 0.01 --out " + out.string());
     INFO(r.out);
     REQUIRE(r.exit_code == 0);

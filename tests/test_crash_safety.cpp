@@ -36,7 +36,7 @@ using polyroll::test::kPolyrollExe;
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
 
-const polyroll::test::Scratch scratch("crash-");
+const polyroll::test::Scratch crash_scratch("crash-");
 
 pid_t start(const std::vector<std::string>& args) {
     std::vector<char*> argv;
@@ -138,7 +138,7 @@ void check_same(const fs::path& dir, const fs::path& reference) {
 
 TEST_CASE("a run killed at random moments leaves whole files, and running it again completes it",
           "[hardening][crash-safety]") {
-    const fs::path ref = scratch("run-ref"), dir = scratch("run");
+    const fs::path ref = crash_scratch("run-ref"), dir = crash_scratch("run");
     const std::vector<std::string> scene = {"run", "--fill", "0.5", "--time-limit", "12"};  // 41 faces, ~0.4 s
     auto with_out = [&](const fs::path& out, bool force) {
         auto a = scene;
@@ -162,7 +162,7 @@ TEST_CASE("a run killed at random moments leaves whole files, and running it aga
 
 TEST_CASE("a render killed at random moments leaves whole frames, and rendering again completes it",
           "[hardening][crash-safety]") {
-    const fs::path ref = scratch("render-ref"), dir = scratch("render");
+    const fs::path ref = crash_scratch("render-ref"), dir = crash_scratch("render");
     auto args = [&](const fs::path& out, bool force) {
         std::vector<std::string> a = {"render", "--fill", "0.25", "--fidelity", "draft", "--time-limit", "1.5",
                                       "--size", "320x180", "--fps", "20", "--hold", "0", "--out", out.string()};
@@ -208,7 +208,7 @@ std::vector<std::string> table_indices(const fs::path& csv) {
 
 TEST_CASE("a sweep killed at random moments resumes with the same command, nothing lost or duplicated",
           "[hardening][crash-safety]") {
-    const fs::path ref = scratch("sweep-ref"), dir = scratch("sweep");
+    const fs::path ref = crash_scratch("sweep-ref"), dir = crash_scratch("sweep");
     auto args = [&](const fs::path& out) {
         return std::vector<std::string>{"sweep", "--sides", "6,8", "--fill", "0,0.125", "--angle", "10,25",
                                         "--fidelity", "draft", "--time-limit", "0.8", "-q", "--jobs", "2",
@@ -253,7 +253,7 @@ TEST_CASE("a sweep killed at random moments resumes with the same command, nothi
 // just made (the sweep test above hit it: 1 of 17 runs refused the same command as "not empty").
 TEST_CASE("a folder holding only a killed process's probe or temporary is used again as empty",
           "[hardening][crash-safety]") {
-    const fs::path dir = scratch("leftovers");
+    const fs::path dir = crash_scratch("leftovers");
     fs::create_directories(dir);
     // 999999999 is above Linux's largest pid (2^22), so no process holds these names.
     for (const char* name : {".polyroll-probe-999999999", ".plan.json.tmp-999999999"}) {
@@ -274,7 +274,7 @@ TEST_CASE("commands creating the same new output folder at once all proceed (sha
     // Two calibration shards started side by side both found the folder missing; the one that lost
     // the race to create it stopped with "cannot create the folder (unknown error)", and the other
     // waited for it for ever. Each round races threads on one new folder; every one must be let in.
-    const fs::path base = scratch("same-folder");
+    const fs::path base = crash_scratch("same-folder");
     for (int round = 0; round < 20; ++round) {
         const fs::path dir = base / std::to_string(round) / "out";
         std::vector<std::thread> threads;
@@ -296,7 +296,7 @@ TEST_CASE("commands creating the same new output folder at once all proceed (sha
 }
 
 TEST_CASE("Ctrl-C in run and render says so in one line and leaves no folder behind", "[hardening][cli]") {
-    const fs::path dir = scratch("ctrl-c");
+    const fs::path dir = crash_scratch("ctrl-c");
     fs::create_directories(dir);
     // Both still running after 1.5 s: the large hexagon half full steps 1,488 grains (about 30 s), and a
     // render's data run of the default scene takes about 2.5 s before the first frame.

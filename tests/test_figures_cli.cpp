@@ -17,13 +17,12 @@ namespace fs = std::filesystem;
 namespace {
 
 using polyroll::test::read_file;
+using polyroll::test::have_matplotlib;
 using polyroll::test::run_command;
 
 using polyroll::test::kPolyrollExe;
 // A short scene at draft fidelity: fast and deterministic.
 const std::string kScene = " --polygon octagon-small --fill 0.125 --angle 10 --fidelity draft --time-limit 1.5";
-
-bool have_matplotlib() { return run_command("/usr/bin/python3 -c 'import matplotlib, numpy'").exit_code == 0; }
 
 using polyroll::test::line_count;
 

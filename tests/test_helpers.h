@@ -46,14 +46,20 @@ inline Scene scene_with(const nlohmann::ordered_json& overrides) {
     return resolve_scene({SceneLayer{overrides, "test", {}}});
 }
 
-// The message a scene document (JSON text) is refused with; "" if it resolves.
-inline std::string scene_error_of(const std::string& doc) {
+// The message `call` is refused with (an InputError); "" if it returns.
+template <class Call>
+std::string input_error_of(Call&& call) {
     try {
-        scene_with(nlohmann::ordered_json::parse(doc));
+        call();
     } catch (const InputError& e) {
         return e.what();
     }
     return "";
+}
+
+// The message a scene document (JSON text) is refused with; "" if it resolves.
+inline std::string scene_error_of(const std::string& doc) {
+    return input_error_of([&] { scene_with(nlohmann::ordered_json::parse(doc)); });
 }
 
 // The scene with another model (the rest unchanged).
@@ -83,6 +89,9 @@ inline CommandResult run_command(const std::string& cmd) {
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
+
+// Whether Debian's Python can draw figures (matplotlib and numpy), as polyroll's figure scripts need.
+inline bool have_matplotlib() { return run_command("/usr/bin/python3 -c 'import matplotlib, numpy'").exit_code == 0; }
 
 // A file's bytes ("" if it cannot be read).
 inline std::string read_file(const std::filesystem::path& p) {

@@ -24,7 +24,7 @@ using namespace polyroll::models;
 
 namespace {
 
-constexpr double kPi = geom::kPi;
+using geom::kPi;
 
 Scene empty_scene(int sides, double angle_deg) {
     return test::scene_with({{"fill", {{"ratio", 0.0}}}, {"shell", {{"sides", sides}}}, {"ramp", {{"angle_deg", angle_deg}}}});

@@ -31,13 +31,14 @@ constexpr double kHangGuardS = kSanitized ? 60.0 : 30.0;
 
 using Result = polyroll::test::CommandResult;
 
-Result run_polyroll(const std::string& args) {
+// polyroll with its address space capped: a refusal must not need much memory.
+Result run_polyroll_limited(const std::string& args) {
     // 1 GiB of address space is far more than refusing any input needs (a run takes ~150 MiB).
     const std::string limit = kSanitized ? "" : "ulimit -v 1048576; ";
     return polyroll::test::run_command(limit + "exec " + std::string(POLYROLL_EXE) + " " + args);
 }
 
-const polyroll::test::Scratch scratch("malformed-", true);
+const polyroll::test::Scratch malformed_scratch("malformed-", true);
 
 void write(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
 
@@ -50,7 +51,7 @@ bool one_printable_line(const std::string& out) {
 
 TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, no hang, nothing written",
           "[hardening][bad-input]") {
-    const fs::path dir = scratch("table");
+    const fs::path dir = malformed_scratch("table");
     const fs::path out = dir / "out";
     struct Case {
         std::string name;
@@ -112,7 +113,7 @@ TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, n
             write(dir / (c.name + ".json"), c.scene);
             args += " --scene " + (dir / (c.name + ".json")).string();
         }
-        const Result r = run_polyroll(args);
+        const Result r = run_polyroll_limited(args);
         INFO(c.name << ": polyroll " << args.substr(0, 200) << " -> " << r.out.substr(0, 400));
         CHECK(r.exit_code == 2);
         CHECK(one_printable_line(r.out));
@@ -127,7 +128,7 @@ TEST_CASE("malformed scene files and flags: one line naming the field, exit 2, n
 }
 
 TEST_CASE("render and compare refuse malformed flags the same way", "[hardening][bad-input]") {
-    const fs::path dir = scratch("render");
+    const fs::path dir = malformed_scratch("render");
     const fs::path out = dir / "out";
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"render --size -5x10", "--size"},
@@ -139,7 +140,7 @@ TEST_CASE("render and compare refuse malformed flags the same way", "[hardening]
         {"compare --fill -0.5", "fill.ratio"},
     };
     for (const auto& [args, words] : cases) {
-        const Result r = run_polyroll(args + " --out " + out.string());
+        const Result r = run_polyroll_limited(args + " --out " + out.string());
         INFO("polyroll " << args << " -> " << r.out);
         CHECK(r.exit_code == 2);
         CHECK(one_printable_line(r.out));
@@ -199,7 +200,7 @@ TEST_CASE("a resolved scene's written form resolves to the same scene", "[harden
 
 TEST_CASE("an empty folder name and a scene description that is not text are refused in one line",
           "[hardening][bad-input]") {
-    const fs::path dir = scratch("empty-out");
+    const fs::path dir = malformed_scratch("empty-out");
     fs::create_directories(dir);
     // An unset shell variable gives --out "": refused, not written into the current folder.
     for (const char* cmd : {"run --out ''", "render --out ''", "sweep --fill 0 --out ''", "validate --out ''",

@@ -23,7 +23,7 @@ using geom::Vec2;
 
 namespace {
 
-constexpr double kPi = geom::kPi;
+using geom::kPi;
 
 using test::scene_with;
 

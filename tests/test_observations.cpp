@@ -6,6 +6,7 @@
 
 #include "sim/errors.h"
 #include "sweep/observations.h"
+#include "test_helpers.h"
 
 using namespace polyroll::sweep;
 using json = nlohmann::ordered_json;
@@ -34,12 +35,7 @@ json good_doc() {
 }
 
 std::string error_of(const json& doc) {
-    try {
-        parse_observations(doc, "obs.json");
-    } catch (const polyroll::InputError& e) {
-        return e.what();
-    }
-    return "";
+    return polyroll::test::input_error_of([&] { parse_observations(doc, "obs.json"); });
 }
 
 }  // namespace

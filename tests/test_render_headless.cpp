@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const polyroll::test::Scratch scratch("render-", true);
+const polyroll::test::Scratch render_scratch("render-", true);
 
 struct Rgb {
     int r, g, b;
@@ -64,7 +64,7 @@ Cli run_cli(const std::string& args, const std::string& env = "") {
 }  // namespace
 
 TEST_CASE("a headless render writes the expected PNG frames with the shell where it is", "[render]") {
-    const fs::path dir = scratch("pixels");
+    const fs::path dir = render_scratch("pixels");
     const Scene scene = short_scene();
     const SequenceSettings st = small_settings(640, 360);
     const SequenceResult res = render_sequence(scene, st, dir);
@@ -129,7 +129,7 @@ TEST_CASE("a headless render writes the expected PNG frames with the shell where
 }
 
 TEST_CASE("two renders of the same scene give byte-identical frames", "[render]") {
-    const fs::path a = scratch("det-a"), b = scratch("det-b");
+    const fs::path a = render_scratch("det-a"), b = render_scratch("det-b");
     const Scene scene = test::scene_with({{"run", {{"time_limit_s", 0.2}}}});
     SequenceSettings st = small_settings(320, 180);
     st.frame.grain_colouring = GrainColouring::speed;
@@ -148,7 +148,7 @@ TEST_CASE("two renders of the same scene give byte-identical frames", "[render]"
 }
 
 TEST_CASE("polyroll render writes the run's files as polyroll run does", "[render][cli]") {
-    const fs::path base = scratch("cli");
+    const fs::path base = render_scratch("cli");
     const std::string scene = "--time-limit 0.2 --sides 8 --fill 0.375 --material peas --angle 12";
     const Cli run = run_cli("run " + scene + " --out " + (base / "run").string());
     REQUIRE(run.exit_code == 0);
@@ -168,7 +168,7 @@ TEST_CASE("polyroll render writes the run's files as polyroll run does", "[rende
 }
 
 TEST_CASE("polyroll render refuses bad flags with one line, exit 2 and nothing written", "[render][cli][bad-input]") {
-    const fs::path base = scratch("bad");
+    const fs::path base = render_scratch("bad");
     const fs::path out = base / "new";
     struct Case {
         std::string args;
@@ -213,7 +213,7 @@ TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[rend
     // ffmpeg (and its ffprobe) come from Debian's ffmpeg package, in third_party/debian-packages.txt.
     INFO("ffmpeg and ffprobe are needed (Debian package ffmpeg, in third_party/debian-packages.txt)");
     REQUIRE(polyroll::test::run_command("command -v ffmpeg && command -v ffprobe").exit_code == 0);
-    const fs::path base = scratch("video-made");
+    const fs::path base = render_scratch("video-made");
     // Odd sides: the video pads them to even ones (yuv420p needs even sides).
     const Cli r = run_cli("render --time-limit 0.5 --fps 10 --size 321x181 --hold 0 --out " + (base / "f").string() +
                           " --video " + (base / "v.mp4").string());
@@ -236,7 +236,7 @@ TEST_CASE("render with --video makes a video of every frame with ffmpeg", "[rend
 }
 
 TEST_CASE("render with --video but no ffmpeg says how to get it and still writes the frames", "[render][cli]") {
-    const fs::path base = scratch("video");
+    const fs::path base = render_scratch("video");
     // An empty PATH hides any installed ffmpeg.
     const Cli r = run_cli("render --time-limit 0.1 --size 320x180 --hold 0 --out " + (base / "f").string() +
                                " --video " + (base / "v.mp4").string(),
@@ -253,7 +253,7 @@ TEST_CASE("render with --video but no ffmpeg says how to get it and still writes
 TEST_CASE("render --video may go into the --out folder the render creates", "[render][cli]") {
     // frames/x.mp4 with --out frames was refused because frames/ did not exist yet. Without
     // ffmpeg on PATH the render runs and says so (exit 1), which shows the video's folder was accepted.
-    const fs::path base = scratch("video-in-out");
+    const fs::path base = render_scratch("video-in-out");
     const Cli r = run_cli("render --time-limit 0.1 --size 320x180 --hold 0 --out " + (base / "f").string() +
                               " --video " + (base / "f" / "v.mp4").string(),
                           "env PATH=/nonexistent");
@@ -282,7 +282,7 @@ TEST_CASE("render --video may go into the --out folder the render creates", "[re
 }
 
 TEST_CASE("polyroll render plays every model: the reduced models' frames turn the polygon as they compute", "[render][cli][models]") {
-    const fs::path base = scratch("models");
+    const fs::path base = render_scratch("models");
     for (const char* model : {"segments", "rigid"}) {
         INFO(model);
         const std::string scene = std::string("--time-limit 1 --model ") + model;

@@ -27,8 +27,8 @@ using Run = polyroll::test::CommandResult;
 
 Run run(const std::string& cmd) { return polyroll::test::run_command(cmd); }
 
-// This file's scratch folders, created fresh: scratch("smoke") is /tmp/polyroll-test-PID-sandbox-smoke/.
-const polyroll::test::Scratch scratch("sandbox-", true);
+// This file's sandbox_scratch folders, created fresh: sandbox_scratch("smoke") is /tmp/polyroll-test-PID-sandbox-smoke/.
+const polyroll::test::Scratch sandbox_scratch("sandbox-", true);
 
 using polyroll::test::kSandboxExe;
 
@@ -69,7 +69,7 @@ TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[
     const Run which = run("command -v xvfb-run");
     INFO("xvfb-run is needed (Debian package xvfb, in third_party/debian-packages.txt)");
     REQUIRE(which.exit_code == 0);
-    const fs::path dir = scratch("smoke");
+    const fs::path dir = sandbox_scratch("smoke");
     const fs::path shot = dir / "shot.png";
     const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe + " --screenshot " + shot.string() +
                       " --frames 300");
@@ -115,7 +115,7 @@ TEST_CASE("the sandbox under Xvfb draws its panel and the shell on the ramp", "[
 // The window's own path, where each frame's physics runs on a second thread while the frame is
 // drawn (a --frames capture steps first instead): --bench plays at real time through it.
 TEST_CASE("the sandbox plays at real time with the physics beside the drawing", "[app][sandbox]") {
-    const fs::path dir = scratch("bench");
+    const fs::path dir = sandbox_scratch("bench");
     const Run r = run("cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe +
                       " --bench --preset race --frames 90");
     INFO(r.out);
@@ -134,7 +134,7 @@ TEST_CASE("the sandbox plays at real time with the physics beside the drawing", 
 // real time: the window steps it as asked all the same (same grains), says so, and offers the cheaper
 // model; only --coarser (or the panel's button) steps that one. From a scene file (--scene).
 TEST_CASE("the sandbox steps a costly scene as asked and a cheaper model only when picked", "[app][sandbox]") {
-    const fs::path dir = scratch("budget");
+    const fs::path dir = sandbox_scratch("budget");
     std::ofstream(dir / "rice.json") << R"({"shell": "hexagon-large", "fill": {"ratio": 0.8, "material": "rice"},
                                            "run": {"model": "grains"}})";
     const std::string bench = "cd " + dir.string() + " && " + sandbox_env() + kXvfb + kSandboxExe +
@@ -179,7 +179,7 @@ bool inside(double x, double y, const Box& b) { return x >= b[0] && x <= b[2] &&
 // ramps' starts and the badges are inside the scene, and the speed plot, where shown, is no thumbnail.
 TEST_CASE("the sandbox's text fits its boxes and the status covers no ramp start at 800x600 to 1920x1080",
           "[app][sandbox]") {
-    const fs::path dir = scratch("layout");
+    const fs::path dir = sandbox_scratch("layout");
     struct Case {
         std::string size;
         std::string scale;
@@ -229,7 +229,7 @@ TEST_CASE("the sandbox's text fits its boxes and the status covers no ramp start
 }
 
 TEST_CASE("without a display the sandbox renders the default scene headless and says where", "[app][sandbox]") {
-    const fs::path dir = scratch("fallback");
+    const fs::path dir = sandbox_scratch("fallback");
     const Run r = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe);
     INFO(r.out);
     CHECK(r.exit_code == 0);
@@ -247,7 +247,7 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
 // the test above renders the real one.
 TEST_CASE("without a display the sandbox renders into --out and replaces only its own earlier render",
           "[app][sandbox]") {
-    const fs::path dir = scratch("fallback-out");
+    const fs::path dir = sandbox_scratch("fallback-out");
     const fs::path assets = dir / "short-default";
     fs::create_directories(assets);
     nlohmann::ordered_json defaults =
@@ -291,11 +291,11 @@ TEST_CASE("without a display the sandbox renders into --out and replaces only it
     fs::remove_all(dir);
 }
 
-// Bad flags are refused before any window or headless render: run in a scratch folder, nothing is
+// Bad flags are refused before any window or headless render: run in a sandbox_scratch folder, nothing is
 // written there (no runs/ of the headless fallback).
 TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][sandbox]") {
     using polyroll::test::expect_refused;
-    const fs::path dir = scratch("refused");
+    const fs::path dir = sandbox_scratch("refused");
     const std::string sandbox = "cd " + dir.string() + " && env -u DISPLAY " + kSandboxExe + " ";
     const fs::path written = dir / "runs";
     struct Refused {

@@ -19,10 +19,10 @@ using polyroll::test::kPolyrollExe;
 using polyroll::test::read_file;
 using polyroll::test::run_command;
 
-const polyroll::test::Scratch scratch("slurm-");
+const polyroll::test::Scratch slurm_scratch("slurm-");
 
 // Four cheap runs.
-const std::string kGrid = "--sides 6,8 --fill 0 --angle 10,20 --fidelity draft --time-limit 0.2";
+const std::string kSlurmGrid = "--sides 6,8 --fill 0 --angle 10,20 --fidelity draft --time-limit 0.2";
 
 // A folder holding a stand-in `sbatch` that appends its arguments to calls.txt and prints a job id
 // as sbatch --parsable does (41 for the first call, 42 for the second; "41;cluster" the form with a cluster).
@@ -77,9 +77,9 @@ TEST_CASE("slurm scripts: the job array runs slice K of N, the merge job merges,
 }
 
 TEST_CASE("slurm: sweep --plan-only --slurm-tasks submits the array, then the merge after it", "[slurm][sweep][cli]") {
-    const fs::path out = scratch("submit"), bin = scratch("submit-bin");
+    const fs::path out = slurm_scratch("submit"), bin = slurm_scratch("submit-bin");
     fake_sbatch(bin);
-    const auto r = run_command("PATH=" + bin.string() + ":$PATH " + kPolyrollExe + " sweep " + kGrid + " --out " +
+    const auto r = run_command("PATH=" + bin.string() + ":$PATH " + kPolyrollExe + " sweep " + kSlurmGrid + " --out " +
                                out.string() + " --plan-only --slurm-tasks 3 --slurm-cpus-per-task 2");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -103,8 +103,8 @@ TEST_CASE("slurm: sweep --plan-only --slurm-tasks submits the array, then the me
 }
 
 TEST_CASE("slurm: without sbatch, or with --slurm-no-submit, the two sbatch commands are printed", "[slurm][sweep][cli]") {
-    const fs::path out = scratch("nosbatch"), bin = scratch("nosbatch-bin");
-    const auto r = run_command("PATH=/nonexistent " + kPolyrollExe + " sweep " + kGrid + " --out " + out.string() +
+    const fs::path out = slurm_scratch("nosbatch"), bin = slurm_scratch("nosbatch-bin");
+    const auto r = run_command("PATH=/nonexistent " + kPolyrollExe + " sweep " + kSlurmGrid + " --out " + out.string() +
                                " --plan-only --slurm-tasks 4");
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
@@ -116,7 +116,7 @@ TEST_CASE("slurm: without sbatch, or with --slurm-no-submit, the two sbatch comm
     // --slurm-no-submit with an sbatch on PATH: written, not submitted.
     fake_sbatch(bin);
     fs::remove_all(out);
-    const auto kept = run_command("PATH=" + bin.string() + ":$PATH " + kPolyrollExe + " sweep " + kGrid + " --out " +
+    const auto kept = run_command("PATH=" + bin.string() + ":$PATH " + kPolyrollExe + " sweep " + kSlurmGrid + " --out " +
                                   out.string() + " --plan-only --slurm-tasks 2 --slurm-no-submit");
     INFO(kept.out);
     REQUIRE(kept.exit_code == 0);
@@ -129,7 +129,7 @@ TEST_CASE("slurm: without sbatch, or with --slurm-no-submit, the two sbatch comm
 
 TEST_CASE("slurm: validate --slurm-tasks writes the plan, its tasks run --shard K/N, the last step scores",
           "[slurm][validate][cli]") {
-    const fs::path out = scratch("validate");
+    const fs::path out = slurm_scratch("validate");
     const auto r = run_command("POLYROLL_PYTHON=/bin/false " + kPolyrollExe +
                                " validate --only fig7-hexagon-rolls --seeds 2 --fidelity draft --set ramp.friction=0.5 "
                                "--out " + out.string() + " --slurm-tasks 2 --slurm-no-submit");
@@ -151,12 +151,12 @@ TEST_CASE("slurm: validate --slurm-tasks writes the plan, its tasks run --shard 
 
 TEST_CASE("slurm: bad --slurm flags give one line naming the value and what is allowed, exit 2, nothing written",
           "[slurm][cli][bad-input]") {
-    const fs::path out = scratch("bad");
+    const fs::path out = slurm_scratch("bad");
     struct Case {
         std::string args;
         std::vector<std::string> words;
     };
-    const std::string sweep = " sweep " + kGrid + " --out " + out.string();
+    const std::string sweep = " sweep " + kSlurmGrid + " --out " + out.string();
     const std::vector<Case> cases = {
         {sweep + " --plan-only --slurm-tasks 0", {"--slurm-tasks 0 is out of range (allowed: 1 to 10000)"}},
         {sweep + " --plan-only --slurm-tasks 10001", {"--slurm-tasks 10001 is out of range (allowed: 1 to 10000)"}},

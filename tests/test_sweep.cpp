@@ -30,7 +30,7 @@ namespace {
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
 
-const polyroll::test::Scratch scratch("sweep-");
+const polyroll::test::Scratch sweep_scratch("sweep-");
 
 // A cheap grid: empty shells and a few grains, short runs; one point out of range. Standard fidelity:
 // at draft a grain of a filled shell tumbling at 30 deg slips through a wall now and then (measured: 2
@@ -153,7 +153,7 @@ TEST_CASE("results tables: CSV cells round-trip, and a line cut short is dropped
     CHECK(back[4] == " padded ");
     CHECK(back[5] == "line break");
 
-    const fs::path dir = scratch("partial");
+    const fs::path dir = sweep_scratch("partial");
     fs::create_directories(dir);
     std::ofstream(dir / "t.csv") << "index,x\n0,a\n1,b\n2,c";  // the last row lost its newline
     TableFile t = read_table(dir / "t.csv");
@@ -165,7 +165,7 @@ TEST_CASE("results tables: CSV cells round-trip, and a line cut short is dropped
 }
 
 TEST_CASE("the table writer only ever replaces the table whole, and no row waits long in memory", "[sweep]") {
-    const fs::path dir = scratch("writer");
+    const fs::path dir = sweep_scratch("writer");
     fs::create_directories(dir);
     const fs::path path = dir / "results.csv";
     const std::vector<std::string> header{"index", "run_id", "status", "wall_time_s"};
@@ -212,7 +212,7 @@ TEST_CASE("the table writer only ever replaces the table whole, and no row waits
 TEST_CASE("a sweep records failed points, survives a crash and resumes without duplicates", "[sweep]") {
     const SweepPlan plan = tiny_plan();
     const ResultsTable columns(plan);
-    const fs::path dir = scratch("resume");
+    const fs::path dir = sweep_scratch("resume");
     SweepOptions o;
     o.dir = dir;
     o.jobs = 2;
@@ -280,7 +280,7 @@ TEST_CASE("a sweep records failed points, survives a crash and resumes without d
 
 TEST_CASE("shards merged give the one-process table, and tables of another plan are refused", "[sweep]") {
     const SweepPlan plan = tiny_plan();
-    const fs::path one = scratch("one"), sharded = scratch("sharded");
+    const fs::path one = sweep_scratch("one"), sharded = sweep_scratch("sharded");
     SweepOptions o;
     o.dir = one;
     o.jobs = 1;

@@ -26,7 +26,7 @@ Result shell(const std::string& cmd) { return polyroll::test::run_command(cmd); 
 
 using polyroll::test::kPolyrollExe;
 
-const polyroll::test::Scratch scratch("sweep-cli-");
+const polyroll::test::Scratch sweep_cli_scratch("sweep-cli-");
 
 using polyroll::test::read_file;
 using polyroll::test::table_without_wall_time;
@@ -41,7 +41,7 @@ const std::string kGrid =
 
 TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-process table", "[sweep][cli]") {
     REQUIRE(shell("parallel --version").exit_code == 0);  // GNU parallel: third_party/debian-packages.txt
-    const fs::path one = scratch("one"), big = scratch("big");
+    const fs::path one = sweep_cli_scratch("one"), big = sweep_cli_scratch("big");
     const Result single = shell(kPolyrollExe + " sweep " + kGrid + " --jobs 1 --out " + one.string());
     INFO(single.out);
     REQUIRE(single.exit_code == 0);
@@ -79,7 +79,7 @@ TEST_CASE("a plan run as slices under GNU parallel and merged equals the one-pro
 }
 
 TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing written", "[sweep][cli][bad-input]") {
-    const fs::path out = scratch("bad");
+    const fs::path out = sweep_cli_scratch("bad");
     struct Case {
         std::string args;
         std::vector<std::string> words;
@@ -138,7 +138,7 @@ TEST_CASE("sweep: bad grid flags and folders give one line, exit 2, nothing writ
 }
 
 TEST_CASE("sweep: more values for the same flags extend a finished sweep and keep its runs", "[sweep][cli]") {
-    const fs::path out = scratch("extend");
+    const fs::path out = sweep_cli_scratch("extend");
     const std::string common = " --sides 6 --fill 0 --fidelity draft --time-limit 0.2 -q --jobs 1 --out " + out.string();
     REQUIRE(shell(kPolyrollExe + " sweep --angle 20" + common).exit_code == 0);
     const std::string first_row = read_file(out / "results.csv").substr(read_file(out / "results.csv").find('\n') + 1);
@@ -167,7 +167,7 @@ TEST_CASE("sweep: more values for the same flags extend a finished sweep and kee
 
 TEST_CASE("sweep: the grid and its time echoed first, lists out of order run ascending, all failed exits 1",
           "[sweep][cli]") {
-    const fs::path out = scratch("echo");
+    const fs::path out = sweep_cli_scratch("echo");
     const Result r = shell(kPolyrollExe + " sweep --fill 0 --angle 12,5 --fidelity draft --time-limit 0.1 -q --jobs 1 --out " +
                            out.string());
     INFO(r.out);
@@ -201,7 +201,7 @@ TEST_CASE("sweep: the grid and its time echoed first, lists out of order run asc
 }
 
 TEST_CASE("sweep: results.csv names the model each run used and no preset polygon for another n", "[sweep][cli]") {
-    const fs::path out = scratch("model-used");
+    const fs::path out = sweep_cli_scratch("model-used");
     const Result r = shell(kPolyrollExe + " sweep --sides 6,7 --fill 0,0.25 --fidelity draft --time-limit 0.1 -q --jobs 2 "
                            "--out " + out.string());
     INFO(r.out);

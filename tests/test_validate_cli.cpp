@@ -14,6 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using polyroll::test::read_file;
+using polyroll::test::have_matplotlib;
 using polyroll::test::run_command;
 
 using polyroll::test::kPolyrollExe;
@@ -34,8 +35,6 @@ const char* kTinyObservations = R"({
   ]})";
 
 // Whether the figures can be drawn here (the Python polyroll validate picks, with matplotlib).
-bool have_matplotlib() { return run_command("/usr/bin/python3 -c 'import matplotlib, numpy'").exit_code == 0; }
-
 // A Python that cannot import matplotlib: polyroll validate says so and writes its scorecard; also
 // spares the tests that are not about figures the time matplotlib takes to draw them.
 const std::string kNoMatplotlib = "POLYROLL_PYTHON=/bin/false ";

@@ -11,6 +11,7 @@
 #include "app/sandbox_settings.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sim/model_registry.h"
 #include "sim/scene/scene_fields.h"
 #include "sim/scene/scene_json.h"
@@ -225,20 +226,12 @@ Scene lane_scene(const json& base, const LaneControls& lane, const SharedControl
     return resolve_scene({SceneLayer{base, "sandbox preset", {}}, SceneLayer{controls_layer(lane, shared), "panel", {}}});
 }
 
-namespace {
-std::string join(const std::vector<std::string>& v) {
-    std::string s;
-    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-}  // namespace
-
 Model model_from(const std::string& name) {
     // The window offers the everyday models: the 3D reference takes a minute of CPU a run.
     const std::vector<std::string>& allowed = window_model_names();
     if (auto model = model_named(name); model && std::find(allowed.begin(), allowed.end(), name) != allowed.end())
         return *model;
-    throw InputError(fmt::format("model '{}' is not one the window runs (allowed: {})", name, join(allowed)));
+    throw InputError(fmt::format("model '{}' is not one the window runs (allowed: {})", name, comma_list(allowed)));
 }
 
 std::string polygon_combo_text(const std::string& polygon, int sides) {

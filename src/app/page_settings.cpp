@@ -16,6 +16,7 @@
 #include "app/sandbox_presets.h"
 #include "sim/assets.h"
 #include "sim/errors.h"
+#include "sim/message_text.h"
 #include "sim/scene/scene_fields.h"
 
 namespace polyroll::app {
@@ -73,12 +74,6 @@ double field_number(const std::string& key, const std::string& text, std::string
     return *v;
 }
 
-std::string join(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out;
-}
-
 }  // namespace
 
 std::string page_query_keys() { return "preset, sides, fill, material, angle, seed, frames, paused, bench"; }
@@ -103,7 +98,7 @@ PageSettings parse_page_query(std::string_view query) {
         if (key == "preset") {
             const std::vector<std::string> names = sandbox_preset_names();
             if (std::find(names.begin(), names.end(), value) == names.end())
-                throw InputError(fmt::format("preset={}: unknown (allowed: {})", value, join(names)));
+                throw InputError(fmt::format("preset={}: unknown (allowed: {})", value, comma_list(names)));
             p.preset = value;
         } else if (key == "sides") {
             p.sides = static_cast<int>(field_number(key, value, "shell.sides"));
@@ -122,7 +117,7 @@ PageSettings parse_page_query(std::string_view query) {
         } else if (key == "material") {
             const std::vector<std::string> names = assets::preset_names(assets::Kind::material);
             if (std::find(names.begin(), names.end(), value) == names.end())
-                throw InputError(fmt::format("material={}: unknown (allowed: {})", value, join(names)));
+                throw InputError(fmt::format("material={}: unknown (allowed: {})", value, comma_list(names)));
             p.material = value;
         } else if (key == "frames") {
             if (value.empty())

@@ -18,6 +18,7 @@
 #include "sim/scene/fidelity_preset.h"
 #include "sim/model_registry.h"
 #include "sim/scene/shell_label.h"
+#include "sim/wall_clock.h"
 
 namespace polyroll::cli {
 
@@ -34,13 +35,11 @@ struct BenchOptions {
     int ensemble = 0;  // with auto_only: members per shell of the ensemble table; 0: none
 };
 
-using Clock = std::chrono::steady_clock;
 
 // Simulated seconds after the release for the grain-count rows: long enough for the first impacts,
 // where the pile starts to tumble and its contacts churn.
 constexpr double kScalingSimS = 1.5;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 int bench(const BenchOptions& o) {
     Scene base = o.scene.resolve();
@@ -80,10 +79,10 @@ int bench(const BenchOptions& o) {
         long steps = 0;
         RunResult last;
         for (int rep = 0; rep < o.repeats; ++rep) {
-            auto t0 = Clock::now();
+            auto t0 = WallClock::now();
             const std::unique_ptr<ModelRun> run = start_run(s);
             best_build = std::min(best_build, seconds_since(t0));
-            t0 = Clock::now();
+            t0 = WallClock::now();
             run->run_to_end();
             best_run = std::min(best_run, seconds_since(t0));
             steps = run->steps();

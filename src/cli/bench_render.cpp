@@ -16,13 +16,12 @@
 #include "render/frame_schedule.h"
 #include "render/render_sequence.h"
 #include "sim/model_registry.h"
+#include "sim/wall_clock.h"
 
 namespace polyroll::cli {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Enough frames to time: the default scene stops after about 1.2 s, so 4x slow motion.
 constexpr int kWidth = 1280, kHeight = 720, kSlow = 4;
@@ -55,11 +54,11 @@ void bench_rendering(const Scene& scene, int repeats) {
             const std::unique_ptr<ModelRun> run = start_run(scene);
             double sim_s = 0.0, list_s = 0.0;
             for (long k = 0; k < frames; ++k) {
-                auto t0 = Clock::now();
+                auto t0 = WallClock::now();
                 while (run->steps() < sched.step_for_frame(k) && run->step()) {
                 }
                 sim_s += seconds_since(t0);
-                t0 = Clock::now();
+                t0 = WallClock::now();
                 const render::DrawList dl = render::build_frame(run->snapshot(), options, font);
                 list_s += seconds_since(t0);
             }
@@ -94,7 +93,7 @@ void bench_rendering(const Scene& scene, int repeats) {
             std::filesystem::create_directories(dir);
             st.write_png = c.png;
             st.encoder_threads = c.threads;
-            const auto t0 = Clock::now();
+            const auto t0 = WallClock::now();
             const render::SequenceResult r = render::render_sequence(scene, st, dir);
             best_total = std::min(best_total, seconds_since(t0));
             best_loop = std::min(best_loop, r.render_wall_s);

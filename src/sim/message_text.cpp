@@ -2,6 +2,7 @@
 #include "sim/message_text.h"
 
 #include <cctype>
+#include <cmath>
 #include <system_error>
 
 #include <fmt/core.h>
@@ -72,6 +73,16 @@ std::string real_time_text(double simulated_s, double wall_s) {
     if (wall_s <= 0.0) return "too fast to time";
     const double factor = simulated_s / wall_s;
     return factor >= 10.0 ? fmt::format("{:.0f}x real time", factor) : fmt::format("{:.2g}x real time", factor);
+}
+
+std::string comma_list(const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+    return out;
+}
+
+std::string fixed_or_dash(double v, int digits) {
+    return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : "-";
 }
 
 std::string counted(long long n, std::string_view noun) {

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace polyroll {
 
@@ -23,6 +24,12 @@ std::string json_error_text(std::string_view what);
 // Whole numbers hide nothing above 10x, but a run at 0.4x printed as "0x": below 10x, two
 // significant digits. "too fast to time" when the clock saw no time pass.
 std::string real_time_text(double simulated_s, double wall_s);
+
+// Items as a message lists them: "bb, rice, peas" ("" for none).
+std::string comma_list(const std::vector<std::string>& items);
+
+// A number with `digits` decimals, or "-" for NaN or infinity (a table cell with nothing measured).
+std::string fixed_or_dash(double v, int digits);
 
 // A count with its noun: "1 run", "24 runs" (the plural adds an s: the nouns counted are regular).
 std::string counted(long long n, std::string_view noun);

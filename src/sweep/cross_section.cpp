@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "sim/assets.h"
+#include "sim/message_text.h"
 #include "sweep/scene_matrices.h"
 #include "sweep/grid_values.h"
 
@@ -21,25 +22,17 @@ using json = nlohmann::ordered_json;
 
 // The air track, as the experiment rolled its small polygons: a whole-ramp 3D run of the hexagon a
 // quarter full costs about 40 CPU-seconds, so the matrix takes about half an hour on two cores.
-const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"fill", {{"material", "bb"}}}, {"ramp", {{"preset", "air-track"}}}};
+const json kAirTrackScene = {{"shell", {{"preset", "hexagon-small"}}}, {"fill", {{"material", "bb"}}}, {"ramp", {{"preset", "air-track"}}}};
 const std::vector<std::string> kModels = {"grains", "dem3d"};
 const std::vector<unsigned> kSeeds = {1, 2};
 
-struct Run {
+// A run of the matrix: what its row says (RowOutcome), its scene and what its first impact kept.
+struct Run : RowOutcome {
     std::string shell, model;
     double fill = 0.0, angle = 0.0;
     unsigned seed = 0;
-    bool ok = false;
-    std::string behaviour;
-    double distance_m = NAN, vt_m_s = NAN, wall_s = NAN, first_kept = NAN;
+    double first_kept = NAN;
 };
-
-std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& name) {
-    const auto it = std::find(t.header.begin(), t.header.end(), name);
-    return it == t.header.end() ? std::string() : row.at(static_cast<std::size_t>(it - t.header.begin()));
-}
-double number(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
-std::string fixed(double v, int digits) { return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : "-"; }
 
 // The first impact's kinetic energy ratio read kKineticDelay_s after the landing (impacts.csv's
 // ratio_3ms), NaN without one.
@@ -52,7 +45,7 @@ double first_impact_kept(const std::filesystem::path& impacts_csv) {
     for (std::istringstream h(header); std::getline(h, c, ',');) names.push_back(c);
     for (std::istringstream r(first); std::getline(r, c, ',');) cells.push_back(c);
     for (std::size_t i = 0; i < names.size() && i < cells.size(); ++i)
-        if (names[i] == "ratio_3ms") return number(cells[i]);
+        if (names[i] == "ratio_3ms") return cell_number(cells[i]);
     return NAN;
 }
 
@@ -104,7 +97,7 @@ Threshold threshold(const std::map<double, std::vector<const Run*>>& by_angle, F
 
 SweepPlan cross_section_plan() {
     SweepPlan plan;
-    plan.base = kBase;
+    plan.base = kAirTrackScene;
     plan.fields = {"shell.preset", "fill.ratio", "ramp.angle_deg", "run.model", "run.seed"};
     plan.flags = plan.fields;
     for (const auto& [shell, angles] : scenes::cross_section_shells())
@@ -165,11 +158,7 @@ std::vector<Run> read_runs(const SweepPlan& plan, const TableFile& t, const std:
         r.angle = p.at("ramp.angle_deg");
         r.model = p.at("run.model");
         r.seed = p.at("run.seed");
-        r.ok = cell(t, row, "status") == "ok";
-        r.behaviour = r.ok ? cell(t, row, "behaviour") : "failed";
-        r.distance_m = number(cell(t, row, "distance_m"));
-        r.vt_m_s = number(cell(t, row, "terminal_velocity_m_s"));
-        r.wall_s = number(cell(t, row, "wall_time_s"));
+        static_cast<RowOutcome&>(r) = row_outcome(t, row);
         r.first_kept = first_impact_kept(dir / "runs" / pr.id / "impacts.csv");
         runs.push_back(r);
     }
@@ -257,9 +246,9 @@ std::string thresholds_table(const std::vector<SceneComparison>& scenes) {
                           sides_of(c.scene.shell), c.scene.fill, c.first.at("grains").text(c.lo, c.hi),
                           c.first.at("dem3d").text(c.lo, c.hi), signed_deg(c.first_gap()),
                           c.roll.at("grains").text(c.lo, c.hi), c.roll.at("dem3d").text(c.lo, c.hi),
-                          signed_deg(c.roll_gap()), fixed(mean(c.kept, "grains"), 2), fixed(mean(c.kept, "dem3d"), 2),
-                          fixed(mean(c.vt, "grains"), 3), fixed(mean(c.vt, "dem3d"), 3), fixed(mean(c.wall, "grains"), 1),
-                          fixed(mean(c.wall, "dem3d"), 1));
+                          signed_deg(c.roll_gap()), fixed_or_dash(mean(c.kept, "grains"), 2), fixed_or_dash(mean(c.kept, "dem3d"), 2),
+                          fixed_or_dash(mean(c.vt, "grains"), 3), fixed_or_dash(mean(c.vt, "dem3d"), 3), fixed_or_dash(mean(c.wall, "grains"), 1),
+                          fixed_or_dash(mean(c.wall, "dem3d"), 1));
     }
     return md;
 }
@@ -278,8 +267,8 @@ std::string summary_text(const Summary& s) {
                std::isfinite(s.roll_gap.mean()) ? fmt::format("{:+.1f}", s.roll_gap.mean()) : "-",
                std::isfinite(s.kept_gap.mean()) ? fmt::format("{:+.3f}", s.kept_gap.mean()) : "-",
                std::isfinite(s.vt_gap.mean()) ? fmt::format("{:+.1f}%", 100.0 * s.vt_gap.mean()) : "-",
-               fixed(s.cost_2d.mean(), 1), fixed(s.cost_3d.mean(), 1),
-               s.cost_2d.mean() > 0 ? fixed(s.cost_3d.mean() / s.cost_2d.mean(), 0) : std::string("-"));
+               fixed_or_dash(s.cost_2d.mean(), 1), fixed_or_dash(s.cost_3d.mean(), 1),
+               s.cost_2d.mean() > 0 ? fixed_or_dash(s.cost_3d.mean() / s.cost_2d.mean(), 0) : std::string("-"));
 }
 
 std::string every_run_table(std::map<Scene2, ByModel>& by) {
@@ -296,7 +285,7 @@ std::string every_run_table(std::map<Scene2, ByModel>& by) {
                     std::string text = "-";
                     for (const Run* r : models[model][angle])
                         if (r->seed == seed)
-                            text = r->ok ? fmt::format("{} {}", short_name(r->behaviour), fixed(r->distance_m, 2)) : "failed";
+                            text = r->ok ? fmt::format("{} {}", short_name(r->behaviour), fixed_or_dash(r->distance_m, 2)) : "failed";
                     md += " " + text + " |";
                 }
             md += "\n";

@@ -47,6 +47,23 @@ std::string scene_value(const Scene& s, const std::string& field) {
 
 std::string number_cell(double v) { return fmt::format("{}", v); }
 
+std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& column) {
+    const auto it = std::find(t.header.begin(), t.header.end(), column);
+    return it == t.header.end() ? std::string() : row.at(static_cast<std::size_t>(it - t.header.begin()));
+}
+
+double cell_number(const std::string& cell) { return cell.empty() ? NAN : std::stod(cell); }
+
+RowOutcome row_outcome(const TableFile& t, const std::vector<std::string>& row) {
+    RowOutcome o;
+    o.ok = cell(t, row, "status") == "ok";
+    o.behaviour = o.ok ? cell(t, row, "behaviour") : "failed";
+    o.distance_m = cell_number(cell(t, row, "distance_m"));
+    o.vt_m_s = cell_number(cell(t, row, "terminal_velocity_m_s"));
+    o.wall_s = cell_number(cell(t, row, "wall_time_s"));
+    return o;
+}
+
 ResultsTable::ResultsTable(const SweepPlan& plan) {
     columns_ = {"index", "run_id"};
     for (const auto& [name, field] : kSceneColumns) columns_.push_back(name);

@@ -4,6 +4,7 @@
 // plan, so tables of the same plan agree byte for byte once wall_time_s is set aside.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -60,5 +61,18 @@ std::string table_text(const std::vector<std::string>& header, std::vector<std::
 
 // How numbers are written in the table: shortest exact form, so equal doubles give equal text.
 std::string number_cell(double v);
+
+// A row's cell by column name; "" where the table has no such column.
+std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& column);
+// A number cell read back; NaN for an empty one (a run that measured nothing there).
+double cell_number(const std::string& cell);
+
+// What a row says of its run, as the studies' reports read it.
+struct RowOutcome {
+    bool ok = false;                    // status "ok"
+    std::string behaviour;              // "failed" when the run did not end well
+    double distance_m = NAN, vt_m_s = NAN, wall_s = NAN;  // NaN where the row has none
+};
+RowOutcome row_outcome(const TableFile& t, const std::vector<std::string>& row);
 
 }  // namespace polyroll::sweep

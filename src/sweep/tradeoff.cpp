@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "sim/assets.h"
+#include "sim/message_text.h"
 #include "sim/scene/scene_json.h"
 #include "sweep/scene_matrices.h"
 #include "sim/geometry/shell_properties.h"
@@ -21,7 +22,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 // The scenes' fixed parts: the short wooden ramp keeps the costly reference runs affordable.
-const json kBase = {{"shell", {{"preset", "hexagon-small"}}}, {"ramp", {{"preset", "wooden"}}},
+const json kWoodenRampScene = {{"shell", {{"preset", "hexagon-small"}}}, {"ramp", {{"preset", "wooden"}}},
                     {"run", {{"time_limit_s", 20}}}};
 const std::vector<std::string> kPresets = {"draft", "standard", "precise", "reference"};
 
@@ -44,29 +45,20 @@ struct Variant {
     }
 };
 
-struct Row {
+// A run of the table: what its row says (RowOutcome), its scene and variant.
+struct Row : RowOutcome {
     std::string scene;  // n, r, material, angle
     Variant v;
-    bool ok = false;
-    std::string behaviour;
-    double distance_m = NAN, vt_m_s = NAN, wall_s = NAN, side_m = NAN;
+    double side_m = NAN;
 };
 
-std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& name) {
-    const auto it = std::find(t.header.begin(), t.header.end(), name);
-    return row.at(static_cast<std::size_t>(it - t.header.begin()));
-}
-
-double number(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
-
-std::string fixed(double v, int digits) { return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : "-"; }
 std::string percent(double v) { return std::isfinite(v) ? fmt::format("{:.1f}%", 100.0 * v) : "-"; }
 
 }  // namespace
 
 SweepPlan tradeoff_plan() {
     SweepPlan plan;
-    plan.base = kBase;
+    plan.base = kWoodenRampScene;
     plan.fields = {"shell.sides",     "fill.ratio",         "fill.material.preset", "ramp.angle_deg",
                    "run.model",       "fidelity.preset",    "fidelity.substeps",    "fill.material.diameter_m",
                    "fill.material.grains_per_disc", "run.seed"};
@@ -147,11 +139,7 @@ std::vector<Row> read_rows(const SweepPlan& plan, const TableFile& t) {
                                 p.at("fill.ratio") == 0.0 ? "empty" : p.at("fill.material.preset").get<std::string>(),
                                 value_text(p.at("ramp.angle_deg")));
         row.v = variant_of(p);
-        row.ok = cell(t, r, "status") == "ok";
-        row.behaviour = row.ok ? cell(t, r, "behaviour") : "failed";
-        row.distance_m = number(cell(t, r, "distance_m"));
-        row.vt_m_s = number(cell(t, r, "terminal_velocity_m_s"));
-        row.wall_s = number(cell(t, r, "wall_time_s"));
+        static_cast<RowOutcome&>(row) = row_outcome(t, r);
         if (!side_of_scene.count(row.scene)) {
             // The outer side length: the floor of the distance error's scale (a first-impact stop
             // moves the lid centre by a fraction of it).
@@ -301,9 +289,9 @@ std::string convergence_table(const std::vector<Row>& rows, const std::map<std::
         const double diff = std::fabs(half->distance_m - ref->distance_m) / std::max(ref->distance_m, ref->side_m);
         if (half->behaviour == ref->behaviour) ++agree;
         md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", scene, ref->behaviour, half->behaviour,
-                          fixed(ref->distance_m, 3), fixed(half->distance_m, 3), percent(diff), fixed(ref->vt_m_s, 3),
-                          fixed(half->vt_m_s, 3),
-                          seed2 ? seed2->behaviour + ", " + fixed(seed2->distance_m, 3) : std::string("-"));
+                          fixed_or_dash(ref->distance_m, 3), fixed_or_dash(half->distance_m, 3), percent(diff), fixed_or_dash(ref->vt_m_s, 3),
+                          fixed_or_dash(half->vt_m_s, 3),
+                          seed2 ? seed2->behaviour + ", " + fixed_or_dash(seed2->distance_m, 3) : std::string("-"));
     }
     md += fmt::format("\nThe reference and its halved step agree on the behaviour in {} of {} scenes.\n", agree, scenes);
     return md;

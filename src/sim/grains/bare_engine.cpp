@@ -2,20 +2,15 @@
 #include "sim/grains/bare_engine.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "sim/grains/world_builder.h"
+#include "sim/wall_clock.h"
 
 namespace polyroll {
 
-namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-}  // namespace
-
 double time_bare_engine_s(const Scene& scene, long steps) {
     std::unique_ptr<SimWorld> bare = build_world(scene);
-    const auto start = Clock::now();
+    const auto start = WallClock::now();
     for (long i = 0; i < steps; ++i) bare->step();
     return seconds_since(start);
 }
@@ -29,7 +24,7 @@ EngineLoad measure_engine_load(const Scene& scene, long steps) {
     long samples = 0, contacts = 0, touching = 0;
     for (long done = 0; done < steps;) {
         const long stretch = std::min(kSampleEvery, steps - done);
-        const auto start = Clock::now();
+        const auto start = WallClock::now();
         for (long i = 0; i < stretch; ++i) w->step();
         load.wall_s += seconds_since(start);
         done += stretch;

@@ -42,8 +42,7 @@ namespace {
 void turn_gravity_to_track(SimWorld& w, double /*engine_step_s*/) {
     const double x_m = w.units.to_m(w.shell->GetPosition().x);
     w.gravity_m_s2 = gravity_at_m_s2(w.scene.ramp, w.scene.run.gravity_m_s2, x_m);
-    w.world->SetGravity(b2Vec2(static_cast<float>(w.units.to_units(w.gravity_m_s2.x)),
-                               static_cast<float>(w.units.to_units(w.gravity_m_s2.y))));
+    w.world->SetGravity(world_parts::to_b2(w.gravity_m_s2, w.units));
 }
 }  // namespace
 
@@ -67,9 +66,7 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
     w->end_centre_x_m = end_centre_x_m(scene, w->shell_props);
 
     w->materials = std::make_unique<ContactMaterials>(w->scene);
-    const b2Vec2 gravity_units = {static_cast<float>(w->units.to_units(w->gravity_m_s2.x)),
-                                  static_cast<float>(w->units.to_units(w->gravity_m_s2.y))};
-    w->world = std::make_unique<b2World>(gravity_units);
+    w->world = std::make_unique<b2World>(to_b2(w->gravity_m_s2, w->units));
     w->world->SetContactListener(w->materials.get());
     w->world->SetAllowSleeping(true);
     // Continuous collision in Box2D 2.4 only guards dynamic-vs-static pairs, here the shell on the

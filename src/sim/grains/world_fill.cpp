@@ -10,10 +10,6 @@ using geom::Vec2;
 
 namespace {
 
-b2Vec2 to_b2(Vec2 v_m, const EngineUnits& u) {
-    return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
-}
-
 // The slope the pile settles on: the track's at the release (the ramp's angle on a straight track).
 double ramp_angle_rad(const SimWorld& w) { return release_slope_deg(w.scene, w.shell_props) * geom::kPi / 180.0; }
 
@@ -46,8 +42,7 @@ double balance_on_pivot(SimWorld& w, double theta) {
         mass += b->GetMass();
     }
     const geom::Vec2 v1 = w.outer_local_m[1];
-    const b2Vec2 pivot = w.shell->GetWorldPoint(b2Vec2(static_cast<float>(u.to_units(v1.x)),
-                                                       static_cast<float>(u.to_units(v1.y))));
+    const b2Vec2 pivot = w.shell->GetWorldPoint(to_b2(v1, u));
     const geom::Vec2 lean = {mx / mass - pivot.x, my / mass - pivot.y};
     const geom::Vec2 up = {-std::sin(theta), std::cos(theta)};
     const double lean_rad = std::atan2(geom::cross(up, lean), geom::dot(up, lean));  // + is uphill
@@ -69,8 +64,7 @@ void tip_onto_vertex(SimWorld& w) {
     const EngineUnits& u = w.units;
     const double delta = release_pose(w.scene, w.shell_props).angle_rad - static_cast<double>(w.shell->GetAngle());
     const geom::Vec2 v1 = w.outer_local_m[1];
-    const b2Vec2 pivot = w.shell->GetWorldPoint(b2Vec2(static_cast<float>(u.to_units(v1.x)),
-                                                       static_cast<float>(u.to_units(v1.y))));
+    const b2Vec2 pivot = w.shell->GetWorldPoint(to_b2(v1, u));
     turn_all_about(w, pivot, delta);
     // Turned about the sharp vertex, a rounded one stands above the ramp: down onto its arc.
     const b2Vec2 sink = {0.0f, -static_cast<float>(u.to_units(rounding_drop_m(w, w.shell->GetAngle())))};

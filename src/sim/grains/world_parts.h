@@ -10,6 +10,11 @@
 
 namespace polyroll::world_parts {
 
+// A point or vector in metres as Box2D's single-precision engine units.
+inline b2Vec2 to_b2(geom::Vec2 v_m, const EngineUnits& u) {
+    return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
+}
+
 // The engine's world with the scene's units, gravity tilted into the ramp frame, the contact
 // materials, the shell's polygons and where the run ends; no bodies yet.
 std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook> hooks);

@@ -7,12 +7,6 @@
 
 namespace polyroll::world_parts {
 
-namespace {
-b2Vec2 to_b2(geom::Vec2 v_m, const EngineUnits& u) {
-    return {static_cast<float>(u.to_units(v_m.x)), static_cast<float>(u.to_units(v_m.y))};
-}
-}  // namespace
-
 void add_ramp(SimWorld& w) {
     // Reaching past both ends so a polygon at the end still has a surface under it until the run
     // stops it.

@@ -29,7 +29,7 @@ using geom::Vec2;
 
 namespace {
 
-constexpr double kPi = geom::kPi;
+using geom::kPi;
 // A contact stretch follows a Taylor series, exact to rounding (the rigid model's pendulum for a
 // sticking vertex, pivot_motion.h; slide_motion.h for a sliding one), so it needs no small steps; its
 // events are looked for on a grid of series evaluations this far apart in time and in turn, which
@@ -47,7 +47,7 @@ constexpr double kFlightMinStepS = 1e-4;
 constexpr int kMaxChatter = 100;
 constexpr double kChatterS = 1e-6;
 // Far more events than a 2.5 m ramp gives (about 4 per face): a run stuck in a loop stops.
-constexpr long kMaxSteps = 2'000'000;
+constexpr long kMaxFreeBodySteps = 2'000'000;
 // The longest stretch on a curved track, between two turns of gravity.
 constexpr double kCurvedStretchS = 1e-3;
 
@@ -623,7 +623,7 @@ void FreeBodySolver::flight_stretch() {
     long hit = 0;
     bool touched = false;
     while (tau < left) {
-        if (++out_.steps > kMaxSteps) return stop_unsupported("the flight search took too many steps");
+        if (++out_.steps > kMaxFreeBodySteps) return stop_unsupported("the flight search took too many steps");
         const State s = flight_at(s0, tau);
         const long k = lowest(s.a);
         double d = d_turn;
@@ -686,7 +686,7 @@ FreeBodyMotion FreeBodySolver::run() {
         settle_on(j);
     }
     while (running_) {
-        if (out_.steps > kMaxSteps) {
+        if (out_.steps > kMaxFreeBodySteps) {
             stop_unsupported("more than two million steps");
             break;
         }

@@ -32,7 +32,7 @@ using geom::Vec2;
 
 namespace {
 
-constexpr double kPi = geom::kPi;
+using geom::kPi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Points per integrator step at which events and the normal force are checked; the series is exact
 // between them, and a turning point between two points is found and checked too.
@@ -46,7 +46,7 @@ constexpr double kShortestWantedStepS = 1e-6;
 // Longest integrator step: keeps the event checks dense on a slow, nearly linear stretch.
 constexpr double kMaxStepS = 0.1;
 // A run needing more steps than this is stuck (for example in ever-faster rocking): ends as diverged.
-constexpr long kMaxSteps = 2'000'000;
+constexpr long kMaxRollerSteps = 2'000'000;
 
 class Roller {
 public:
@@ -610,10 +610,10 @@ RollingRun Roller::run() {
     for (long j = 0; j <= 1; ++j)
         if (phi_ == face_angle(j)) land(j);  // released flat on a face: rests or tips
     while (running_) {
-        if (++out_.steps > kMaxSteps || !std::isfinite(omega_) || !std::isfinite(phi_)) {
+        if (++out_.steps > kMaxRollerSteps || !std::isfinite(omega_) || !std::isfinite(phi_)) {
             out_.measured.behaviour = Behaviour::diverged;
             out_.measured.divergence =
-                fmt::format("at t = {:.4f} s: the reduced model took more than {} steps", t_, kMaxSteps);
+                fmt::format("at t = {:.4f} s: the reduced model took more than {} steps", t_, kMaxRollerSteps);
             out_.measured.end_time_s = t_;
             if (!out_.measured.trajectory.empty())
                 out_.measured.distance_m = out_.measured.trajectory.back().position_m;

@@ -11,6 +11,7 @@
 #include "sim/model_registry.h"
 #include "sim/scene/scene_names.h"
 #include "sim/geometry/shell_properties.h"
+#include "sim/message_text.h"
 
 namespace polyroll {
 namespace {
@@ -262,12 +263,6 @@ std::vector<SceneField> make_table() {
     };
 }
 
-std::string join(const std::vector<std::string>& v) {
-    std::string s;
-    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-
 }  // namespace
 
 const std::vector<SceneField>& scene_fields() {
@@ -306,11 +301,11 @@ std::string field_allowed(const SceneField& f) {
             // Help texts are built before a command runs; an unreadable replacement asset file is
             // reported by the command itself, not while its help is set up.
             try {
-                return join(field_choices(f));
+                return comma_list(field_choices(f));
             } catch (const std::exception&) {
                 return "see 'polyroll presets'";
             }
-        case FieldType::choice: return join(field_choices(f));
+        case FieldType::choice: return comma_list(field_choices(f));
         case FieldType::seed: return "0 to 2^64-1";
         case FieldType::integer: return fmt::format("{:g} to {:g}", f.min, f.max);
         case FieldType::number:

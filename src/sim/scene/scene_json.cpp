@@ -89,12 +89,6 @@ std::string shown(const json& v) {
     return s;
 }
 
-std::string join(const std::vector<std::string>& v) {
-    std::string s;
-    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-    return s;
-}
-
 // Where each resolved field came from, for messages.
 using Origins = std::map<std::string, std::string>;
 
@@ -125,7 +119,7 @@ public:
                     layer.origin, key));
             if (std::find(top.begin(), top.end(), key) == top.end())
                 throw InputError(
-                    fmt::format("{}: unknown key '{}' (allowed: {}, description)", layer.origin, key, join(top)));
+                    fmt::format("{}: unknown key '{}' (allowed: {}, description)", layer.origin, key, comma_list(top)));
         }
         for (const std::string& name : top)
             if (layer.doc.contains(name)) section(layer.doc.at(name), *section_at(name));
@@ -161,14 +155,14 @@ private:
             // A section without presets says which keys it holds (fill: ratio, material).
             throw InputError(fmt::format("{}: {} must be {}, got {}", layer_->origin, path,
                                          sec.kind ? "a preset name or an object"
-                                                  : fmt::format("an object with keys {}", join(sec.keys)),
+                                                  : fmt::format("an object with keys {}", comma_list(sec.keys)),
                                          shown(value)));
         }
         json& out = values_.at(path);
         if (value.contains("preset")) {
             if (!sec.kind)
                 throw InputError(fmt::format("{}: unknown key '{}.preset' (allowed: {})", layer_->origin, path,
-                                             join(sec.keys)));
+                                             comma_list(sec.keys)));
             const json& p = value.at("preset");
             if (!p.is_string())
                 throw InputError(fmt::format("{}: {}.preset must be a preset name, got {}", layer_->origin, path,
@@ -191,7 +185,7 @@ private:
                 const bool moved = path == "fill" && k == "grains_per_disc";
                 throw InputError(fmt::format("{}: unknown key '{}.{}' ({}allowed: {}{})", layer_->origin, path, k,
                                              moved ? "it moved to fill.material.grains_per_disc; " : "",
-                                             sec.kind ? "preset, " : "", join(sec.keys)));
+                                             sec.kind ? "preset, " : "", comma_list(sec.keys)));
             }
             if (const Section* sub = section_at(path + "." + k)) {
                 section(v, *sub);
@@ -242,7 +236,7 @@ private:
         if (v.is_string() && f.choice_named)
             if (auto value = f.choice_named(v.get<std::string>())) return *value;
         throw InputError(fmt::format("{} = {}{} is not allowed (allowed: {})", field, shown(v), where(field),
-                                     join(field_choices(f))));
+                                     comma_list(field_choices(f))));
     }
 
     double number(const json& v, const std::string& field) const {
