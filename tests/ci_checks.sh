@@ -1,8 +1,8 @@
 #!/bin/sh
 # Hardening checks, run by CI after the README's test command. One build serves them all: the
 # hardening preset (clang, build-hardening/) compiles everything and the tests with AddressSanitizer +
-# UndefinedBehaviorSanitizer, the libFuzzer coverage and -Werror, and writes the compile_commands.json
-# clang-tidy reads (three builds did this before: g++ ASan, clang fuzz, clang -Werror). In order:
+# UndefinedBehaviorSanitizer, the libFuzzer coverage and -Werror, in unity batches (clang-tidy gets
+# each file's own command from a configure-only twin: tests/lint_checks.sh). In order:
 #   1. the build (its -Werror is the clang warnings check), then the default test suite under the
 #      sanitizers, halting on the first report;
 #   2. LeakSanitizer over a run, a render and a short sweep with those binaries;

@@ -1,7 +1,7 @@
 // The GLFW window with Dear ImGui: see sandbox_window.h.
 #include "app/sandbox_window.h"
 
-#define GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
