@@ -10,7 +10,7 @@
 #include "sim/auto_run.h"
 #include "sim/model_registry.h"
 #include "sim/reduced/reduced_models.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/run_snapshot.h"
 #include "sweep/scene_matrices.h"
 #include "test_helpers.h"

@@ -4,7 +4,7 @@
 // uninterrupted command's own duration, so the test means the same on a fast build and under ASan.
 #include <catch2/catch.hpp>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "test_helpers.h"
 
 #include <algorithm>

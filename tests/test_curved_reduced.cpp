@@ -10,7 +10,7 @@
 #include "sim/model_registry.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/rolling_polygon.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "test_helpers.h"
 
 using namespace polyroll;

@@ -8,7 +8,7 @@
 #include "sim/dem3d/dem3d_run.h"
 #include "sim/dem3d/state_tracker.h"
 #include "sim/reduced/reduced_models.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/geometry/shell_properties.h"
 #include "test_helpers.h"
 

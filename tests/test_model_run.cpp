@@ -9,7 +9,7 @@
 
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/grains/simulation.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"

@@ -9,7 +9,7 @@
 #include "sim/reduced/composite_body.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/rolling_polygon.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/scene/scene_json.h"
 #include "sim/geometry/shell_properties.h"
 #include "sim/model_choice.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "sim/grains/bare_engine.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 

@@ -3,7 +3,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 
 namespace polyroll::app {
 

@@ -14,7 +14,7 @@
 #include "cli/interruptible_sweep.h"
 #include "cli/observation_flags.h"
 #include "sim/message_text.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/scene/json_path.h"
 #include "sim/scene/scene_json.h"

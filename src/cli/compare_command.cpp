@@ -11,8 +11,8 @@
 
 #include "cli/commands.h"
 #include "cli/scene_options.h"
-#include "sim/atomic_file.h"
-#include "sim/results_io.h"
+#include "sim/files/atomic_file.h"
+#include "sim/files/results_io.h"
 #include "sim/model_registry.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/shell_label.h"

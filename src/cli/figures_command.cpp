@@ -9,7 +9,7 @@
 
 #include "cli/commands.h"
 #include "figures/figures_script.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
 #include "sim/scene/scene_json.h"

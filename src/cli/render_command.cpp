@@ -19,9 +19,9 @@
 #include "process/child_process.h"
 #include "render/frame_encoder.h"
 #include "render/render_sequence.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/scene/scene_json.h"
 
 namespace polyroll::cli {

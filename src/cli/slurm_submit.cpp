@@ -9,7 +9,7 @@
 
 #include "cli/commands.h"
 #include "process/child_process.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
 

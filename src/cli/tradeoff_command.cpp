@@ -12,7 +12,7 @@
 #include "cli/interruptible_sweep.h"
 #include "figures/figures_script.h"
 #include "sim/message_text.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/dem3d/yade_process.h"
 #include "sim/errors.h"
 #include "sweep/sweep_runner.h"

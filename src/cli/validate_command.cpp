@@ -15,7 +15,7 @@
 #include "cli/observation_flags.h"
 #include "cli/slurm_submit.h"
 #include "figures/figures_script.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
 #include "sim/scene/scene_fields.h"

@@ -11,8 +11,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "python/py_json.h"
-#include "sim/atomic_file.h"
-#include "sim/results_io.h"
+#include "sim/files/atomic_file.h"
+#include "sim/files/results_io.h"
 
 namespace py = pybind11;
 

@@ -13,7 +13,7 @@
 #include "python/py_result.h"
 #include "python/py_scene.h"
 #include "sim/model_registry.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/run_progress.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/scene_names.h"

@@ -8,7 +8,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 
 namespace polyroll::render {
 

@@ -7,7 +7,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/run_cost.h"
 #include "sim/scene/scene_json.h"

@@ -8,7 +8,7 @@
 #include <fmt/core.h>
 
 #include "sim/errors.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/shell_label.h"
 #include "sweep/grid_values.h"

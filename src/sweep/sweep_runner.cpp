@@ -11,10 +11,10 @@
 
 #include <fmt/core.h>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/model_registry.h"
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 #include "sim/run_cores.h"
 #include "sweep/merge.h"
 #include "sweep/progress.h"

@@ -13,7 +13,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sweep/results_table.h"
 

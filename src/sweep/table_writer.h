@@ -1,6 +1,6 @@
 // Recording a sweep's rows so that nothing is lost and nothing is ever half-written: the table is
 // locked against a second writer, and it is only ever replaced whole (written under a temporary name,
-// synced, renamed into place; see sim/atomic_file.h), never appended to in place. Finished rows are
+// synced, renamed into place; see sim/files/atomic_file.h), never appended to in place. Finished rows are
 // kept in memory; the table is replaced when a row finishes, unless the last replacement was so
 // recent that replacing again would cost more than a tenth of the time (a table of thousands of rows
 // takes milliseconds to write and sync), and at most a second after a row finished. A killed sweep

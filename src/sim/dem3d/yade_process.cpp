@@ -14,7 +14,7 @@
 
 #include "process/child_process.h"
 #include "process/installed_script.h"
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/errors.h"
 #include "sim/run_cores.h"
 #include "sim/run_progress.h"

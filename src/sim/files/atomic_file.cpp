@@ -1,5 +1,5 @@
 // Whole-or-nothing file writes: see atomic_file.h.
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 
 #include <cerrno>
 #include <cstdio>

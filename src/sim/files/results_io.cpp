@@ -1,9 +1,9 @@
 // A run's output files: see results_io.h.
-#include "sim/results_io.h"
+#include "sim/files/results_io.h"
 
 #include <fmt/core.h>
 
-#include "sim/atomic_file.h"
+#include "sim/files/atomic_file.h"
 #include "sim/model_registry.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/shell_label.h"
