@@ -291,6 +291,27 @@ TEST_CASE("without a display the sandbox renders into --out and replaces only it
     fs::remove_all(dir);
 }
 
+// The scene the flags chose is the one rendered (a scene file cut to 1 simulated second, an empty
+// shell, with --sides over it), written beside the frames so the render can be made again.
+TEST_CASE("without a display the sandbox renders the scene its flags chose", "[app][sandbox]") {
+    const fs::path dir = sandbox_scratch("fallback-chosen");
+    std::ofstream(dir / "short.json") << R"({"fill": {"ratio": 0}, "run": {"time_limit_s": 1}})" << "\n";
+    const Run r = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY " + kSandboxExe +
+                      " --scene short.json --sides 5 --out shown");
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("rendering the chosen scene (scene file short.json as the flags changed it) "
+                                      "headless instead (polyroll render --out shown --scene shown/sandbox-scene.json)"));
+    CHECK(fs::exists(dir / "shown" / "frame_000001.png"));
+    const auto summary = nlohmann::json::parse(polyroll::test::read_file(dir / "shown" / "summary.json"));
+    CHECK(summary.at("scene").at("shell").at("sides") == 5);
+    CHECK(summary.at("scene").at("fill").at("ratio") == 0);
+    CHECK(summary.at("scene").at("run").at("time_limit_s") == 1);
+    const auto written = nlohmann::json::parse(polyroll::test::read_file(dir / "shown" / "sandbox-scene.json"));
+    CHECK(written.at("shell").at("sides") == 5);
+    fs::remove_all(dir);
+}
+
 // Bad flags are refused before any window or headless render: run in a sandbox_scratch folder, nothing is
 // written there (no runs/ of the headless fallback).
 TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][sandbox]") {

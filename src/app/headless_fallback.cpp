@@ -4,10 +4,12 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 #include <fmt/core.h>
 
 #include "process/child_process.h"
+#include "sim/files/atomic_file.h"
 
 namespace polyroll::app {
 
@@ -53,16 +55,18 @@ fs::path fresh_render_folder(const fs::path& wanted) {
     }
 }
 
-int run_headless_instead(const std::string& why, const std::string& out) {
+int run_headless_instead(const std::string& why, const std::string& out, const HeadlessScene& scene) {
     const std::string exe = sibling_polyroll();
     const fs::path folder = fresh_render_folder(out);
+    const fs::path scene_file = folder / kHeadlessSceneFile;
     const std::string kept =
         folder == named_folder(out) ? "" : fmt::format("; {} is not this fallback's and is left as it is", out);
+    const std::string scene_flag = scene.scene_json.empty() ? "" : " --scene " + scene_file.string();
     std::error_code ec;
     const bool replacing = fs::is_regular_file(folder / kFallbackMarker, ec);
-    fmt::print("polyroll-sandbox: no display ({}): rendering the default scene headless instead "
-               "(polyroll render --out {}{}{})\n",
-               why, folder.string(), replacing ? ", replacing this fallback's earlier frames there" : "", kept);
+    fmt::print("polyroll-sandbox: no display ({}): rendering {} headless instead (polyroll render --out {}{}{}{})\n",
+               why, scene.what, folder.string(), scene_flag,
+               replacing ? ", replacing this fallback's earlier frames there" : "", kept);
     std::fflush(stdout);
     std::fflush(stderr);
     // The marker first, so the folder is known as this fallback's even if the render is stopped;
@@ -74,8 +78,13 @@ int run_headless_instead(const std::string& why, const std::string& out) {
                    f);
         std::fclose(f);
     }
-    const std::string dir = folder.string();
-    process::replace_process({exe, "render", "--out", dir, "--force"});
+    std::vector<std::string> args{exe, "render", "--out", folder.string(), "--force"};
+    if (!scene.scene_json.empty()) {
+        // Beside the frames, so the render can be made again (or the scene read) from the folder.
+        write_file_atomic(scene_file, scene.scene_json);
+        args.insert(args.end(), {"--scene", scene_file.string()});
+    }
+    process::replace_process(args);
     fmt::print(stderr, "polyroll-sandbox: could not run {}: {}\n", exe, std::strerror(errno));
     return 1;
 }

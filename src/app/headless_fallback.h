@@ -1,6 +1,6 @@
-// Without a display the sandbox still shows the default scene: it says so in one line and hands
-// over to the sibling polyroll executable's headless render, whose own output says where the
-// frames went.
+// Without a display the sandbox still shows its scene (the default one, or the one its flags chose):
+// it says so in one line and hands over to the sibling polyroll executable's headless render, whose
+// own output says where the frames went.
 #pragma once
 
 #include <filesystem>
@@ -23,9 +23,18 @@ inline constexpr const char* kFallbackMarker = ".polyroll-sandbox-fallback";
 // program or the user wrote.
 std::filesystem::path fresh_render_folder(const std::filesystem::path& wanted);
 
+// What the render shows: the default scene, or the one the sandbox's flags chose (--preset, --scene,
+// --sides, ...), which it writes beside the frames as kHeadlessSceneFile and renders from there.
+struct HeadlessScene {
+    std::string what = "the default scene";  // for the line, e.g. "the chosen scene (preset octagon-rice)"
+    std::string scene_json;                  // the resolved scene as a scene file; "" for the default scene
+};
+inline constexpr const char* kHeadlessSceneFile = "sandbox-scene.json";
+
 // Prints the line, marks the folder, then replaces this process with `polyroll render --out DIR
-// --force`, DIR the fresh_render_folder of `out` (the sandbox's --out, or kHeadlessOutDir). Returns
-// only if that could not start (the exit code to use).
-int run_headless_instead(const std::string& why, const std::string& out);
+// --force` (and `--scene DIR/sandbox-scene.json` for a chosen scene), DIR the fresh_render_folder of
+// `out` (the sandbox's --out, or kHeadlessOutDir). Returns only if that could not start (the exit code
+// to use).
+int run_headless_instead(const std::string& why, const std::string& out, const HeadlessScene& scene = {});
 
 }  // namespace polyroll::app

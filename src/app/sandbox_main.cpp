@@ -39,6 +39,7 @@
 #include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
+#include "sim/scene/scene_json.h"
 
 namespace polyroll::app {
 namespace {
@@ -61,6 +62,7 @@ double now_s() {
 
 struct Options {
     std::string preset;
+    bool preset_given = false;   // without a display, the default scene is rendered unless a scene was chosen
     std::string screenshot;
     long frames = 0;             // 0: not given (run until closed)
     bool frames_given = false;   // an explicit --frames 0 is refused, not taken as "forever"
@@ -119,6 +121,7 @@ void check(Options& o) {
         if (!fs::is_directory(parent, ec))
             throw InputError(fmt::format("--screenshot {}: the folder {} does not exist", o.screenshot, parent.string()));
     }
+    o.preset_given = !o.preset.empty();
     if (o.preset.empty()) o.preset = o.bench ? kBenchPreset : kDefaultSandboxPreset;
 }
 
@@ -663,6 +666,23 @@ SandboxState initial_state(Options& o) {
     return state;
 }
 
+// Without a display: the default scene, or the first lane of the one the flags chose (a render draws
+// one scene; the --coarser model is the window's budget, not the render's, which is not real time).
+HeadlessScene headless_scene(const Options& o, const SandboxState& state) {
+    HeadlessScene shown;
+    if (!o.preset_given && o.scene_file.empty() && o.scene_flags.empty()) return shown;
+    const std::vector<Scene> scenes = scenes_for(state);
+    shown.scene_json = scene_to_json(scenes.front()).dump(2) + "\n";
+    const std::string source = !state.preset.empty()       ? "preset " + state.preset
+                               : !state.scene_file.empty() ? "scene file " + state.scene_file
+                                                           : "the default scene";
+    const std::string flags = o.scene_flags.empty() ? "" : " as the flags changed it";
+    const std::string lane =
+        scenes.size() > 1 ? fmt::format(", lane 1 of {}: a render draws one", scenes.size()) : std::string();
+    shown.what = fmt::format("the chosen scene ({}{}{})", source, flags, lane);
+    return shown;
+}
+
 }  // namespace
 
 int sandbox_main(int argc, char** argv) {
@@ -671,8 +691,9 @@ int sandbox_main(int argc, char** argv) {
                  "or roll to the end, with the speed and energy plotted live; race up to four polygons side by side."};
     cli.footer(
         shortcut_help() + "\n" +
-        "Without a display it renders the default scene headless instead (polyroll render) into --out, or\n"
-        "runs/default; a folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
+        "Without a display it renders its scene headless instead (polyroll render: the default scene, or the\n"
+        "first lane of the one --preset, --scene or the scene flags chose) into --out, or runs/default; a\n"
+        "folder that already holds files is left as it is and a new numbered one used (DIR-2).\n"
         "Examples:\n"
         "  polyroll-sandbox\n"
         "  polyroll-sandbox --preset octagon-rice\n"
@@ -699,7 +720,14 @@ int sandbox_main(int argc, char** argv) {
                        why);
             return kExitFailure;
         }
-        return run_headless_instead(why, o.out_given ? o.out : std::string(kHeadlessOutDir));
+        HeadlessScene shown;
+        try {
+            shown = headless_scene(o, state);
+        } catch (const InputError& e) {  // a chosen combination out of range
+            fmt::print(stderr, "polyroll-sandbox: {}\n", printable_line(e.what()));
+            return kExitBadInput;
+        }
+        return run_headless_instead(why, o.out_given ? o.out : std::string(kHeadlessOutDir), shown);
     }
     // On the heap: a page's frame loop keeps using it after this function's stack frame is gone.
     const auto app = std::make_unique<Sandbox>(*win, std::move(state), o);
