@@ -100,6 +100,11 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(refusal("fill=0.5&fill=0.3") == "fill=0.3: fill is given twice in the address (allowed: each setting once)");
     CHECK(refusal("paused&sides=6&paused=0") ==
           "paused=0: paused is given twice in the address (allowed: each setting once)");
+    // Every bad setting is named, in the address's order, the good ones between them not.
+    CHECK(refusal("sides=2&fill=0.5&angle=95&colour=red") ==
+          refusal("sides=2") + "; " + refusal("angle=95") + "; " + refusal("colour=red"));
+    CHECK(refusal("fill=2&fill=3") == refusal("fill=2") + "; fill=3: fill is given twice in the address (allowed: "
+                                                          "each setting once)");
     // Every refusal names its value; a good query is not refused.
     CHECK(refusal("preset=race&sides=8").empty());
 }

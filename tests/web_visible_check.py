@@ -46,6 +46,7 @@ SMALL_WINDOW_ONLY = [
     ("Sides=8", "Sides: unknown setting in the address"),
     ("=5", "=5: no setting name before the '=' (allowed: preset, "),
     ("paused=yes", "paused=yes: unknown (allowed: 1, 0, or no value)"),
+    ("sides=99&fill=abc", "sides=99: out of range (allowed: 3 to 64); fill=abc: not a number (allowed: "),
 ]
 
 # The visible state of the status box and the canvas, as a JSON string.

@@ -78,10 +78,67 @@ double field_number(const std::string& key, const std::string& text, std::string
 
 std::string page_query_keys() { return "preset, sides, fill, material, angle, seed, frames, paused, bench"; }
 
+namespace {
+
+// One setting of the address into p; throws InputError naming it.
+void read_setting(const std::string& key, const std::string& value, PageSettings& p) {
+    if (key == "preset") {
+        const std::vector<std::string> names = sandbox_preset_names();
+        if (std::find(names.begin(), names.end(), value) == names.end())
+            throw InputError(fmt::format("preset={}: unknown (allowed: {})", value, comma_list(names)));
+        p.preset = value;
+    } else if (key == "sides") {
+        p.sides = static_cast<int>(field_number(key, value, "shell.sides"));
+    } else if (key == "fill") {
+        p.fill_ratio = field_number(key, value, "fill.ratio");
+    } else if (key == "angle") {
+        p.angle_deg = field_number(key, value, "ramp.angle_deg");
+    } else if (key == "seed") {
+        // Digits only, as polyroll run --seed takes them: "-1" or "1e3" would not be this seed.
+        std::uint64_t seed = 0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seed);
+        if (value.empty() || error != std::errc() || end != value.data() + value.size())
+            throw InputError(fmt::format("seed={}: not a whole number (allowed: {})", value,
+                                         field_allowed(scene_field("run.seed"))));
+        p.seed = seed;
+    } else if (key == "material") {
+        const std::vector<std::string> names = assets::preset_names(assets::Kind::material);
+        if (std::find(names.begin(), names.end(), value) == names.end())
+            throw InputError(fmt::format("material={}: unknown (allowed: {})", value, comma_list(names)));
+        p.material = value;
+    } else if (key == "frames") {
+        if (value.empty())
+            throw InputError(fmt::format("frames=: no value (allowed: 1 to {})", kMaxPageFrames));
+        const std::optional<double> v = number_from(value);
+        if (!v || *v != std::floor(*v))
+            throw InputError(
+                fmt::format("frames={}: not a whole number (allowed: 1 to {})", value, kMaxPageFrames));
+        if (*v < 1 || *v > static_cast<double>(kMaxPageFrames))
+            throw InputError(fmt::format("frames={}: out of range (allowed: 1 to {})", value, kMaxPageFrames));
+        p.frames = static_cast<long>(*v);
+    } else if (key == "paused") {
+        if (!value.empty() && value != "1" && value != "0")
+            throw InputError(fmt::format("paused={}: unknown (allowed: 1, 0, or no value)", value));
+        p.paused = value != "0";
+    } else if (key == "bench") {
+        if (!value.empty() && value != "1" && value != "0")
+            throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
+        p.bench = value != "0";
+    } else if (key.empty()) {
+        // "?=5" or "?&=&": a value with no name before it (a link cut or mistyped).
+        throw InputError(fmt::format("={}: no setting name before the '=' (allowed: {})", value, page_query_keys()));
+    } else {
+        throw InputError(fmt::format("{}: unknown setting in the address (allowed: {})", key, page_query_keys()));
+    }
+}
+
+}  // namespace
+
 PageSettings parse_page_query(std::string_view query) {
     if (!query.empty() && query.front() == '?') query.remove_prefix(1);
     PageSettings p;
-    std::vector<std::string> seen;  // the keys read so far
+    std::vector<std::string> seen;      // the keys read so far
+    std::vector<std::string> problems;  // every bad setting, so that one look at the page fixes the address
     while (!query.empty()) {
         const size_t amp = query.find('&');
         const std::string_view pair = query.substr(0, amp);
@@ -91,58 +148,22 @@ PageSettings parse_page_query(std::string_view query) {
         const std::string key = url_decode(pair.substr(0, eq));
         const std::string value = eq == std::string_view::npos ? std::string{} : url_decode(pair.substr(eq + 1));
         // ?fill=0.5&fill=0.3 would keep one value silently: which one the page shows is a guess, so say so.
-        if (std::find(seen.begin(), seen.end(), key) != seen.end())
-            throw InputError(fmt::format("{}={}: {} is given twice in the address (allowed: each setting once)", key,
-                                         value, key));
-        seen.push_back(key);
-        if (key == "preset") {
-            const std::vector<std::string> names = sandbox_preset_names();
-            if (std::find(names.begin(), names.end(), value) == names.end())
-                throw InputError(fmt::format("preset={}: unknown (allowed: {})", value, comma_list(names)));
-            p.preset = value;
-        } else if (key == "sides") {
-            p.sides = static_cast<int>(field_number(key, value, "shell.sides"));
-        } else if (key == "fill") {
-            p.fill_ratio = field_number(key, value, "fill.ratio");
-        } else if (key == "angle") {
-            p.angle_deg = field_number(key, value, "ramp.angle_deg");
-        } else if (key == "seed") {
-            // Digits only, as polyroll run --seed takes them: "-1" or "1e3" would not be this seed.
-            std::uint64_t seed = 0;
-            const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seed);
-            if (value.empty() || error != std::errc() || end != value.data() + value.size())
-                throw InputError(fmt::format("seed={}: not a whole number (allowed: {})", value,
-                                             field_allowed(scene_field("run.seed"))));
-            p.seed = seed;
-        } else if (key == "material") {
-            const std::vector<std::string> names = assets::preset_names(assets::Kind::material);
-            if (std::find(names.begin(), names.end(), value) == names.end())
-                throw InputError(fmt::format("material={}: unknown (allowed: {})", value, comma_list(names)));
-            p.material = value;
-        } else if (key == "frames") {
-            if (value.empty())
-                throw InputError(fmt::format("frames=: no value (allowed: 1 to {})", kMaxPageFrames));
-            const std::optional<double> v = number_from(value);
-            if (!v || *v != std::floor(*v))
-                throw InputError(
-                    fmt::format("frames={}: not a whole number (allowed: 1 to {})", value, kMaxPageFrames));
-            if (*v < 1 || *v > static_cast<double>(kMaxPageFrames))
-                throw InputError(fmt::format("frames={}: out of range (allowed: 1 to {})", value, kMaxPageFrames));
-            p.frames = static_cast<long>(*v);
-        } else if (key == "paused") {
-            if (!value.empty() && value != "1" && value != "0")
-                throw InputError(fmt::format("paused={}: unknown (allowed: 1, 0, or no value)", value));
-            p.paused = value != "0";
-        } else if (key == "bench") {
-            if (!value.empty() && value != "1" && value != "0")
-                throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
-            p.bench = value != "0";
-        } else if (key.empty()) {
-            // "?=5" or "?&=&": a value with no name before it (a link cut or mistyped).
-            throw InputError(fmt::format("={}: no setting name before the '=' (allowed: {})", value, page_query_keys()));
-        } else {
-            throw InputError(fmt::format("{}: unknown setting in the address (allowed: {})", key, page_query_keys()));
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            problems.push_back(
+                fmt::format("{}={}: {} is given twice in the address (allowed: each setting once)", key, value, key));
+            continue;
         }
+        seen.push_back(key);
+        try {
+            read_setting(key, value, p);
+        } catch (const InputError& e) {
+            problems.emplace_back(e.what());
+        }
+    }
+    if (!problems.empty()) {
+        std::string all;
+        for (const std::string& one : problems) all += (all.empty() ? "" : "; ") + one;
+        throw InputError(all);
     }
     return p;
 }
