@@ -173,6 +173,15 @@ def test_ctrl_c_stops_a_run(model):
     assert yade_children() == []
 
 
+def test_ctrl_c_stops_the_grains_settling():
+    # A full large hexagon (about 1,500 discs) given a minute to settle, at a rest speed it never
+    # reaches: a stop not heard while it settles would let the call run for minutes.
+    start = time.monotonic()
+    assert interrupted(lambda: polyroll.Simulation(polygon="hexagon-large", fill=1.0, material="bb", model="grains",
+                                                   set={"run.settle_time_s": 60, "run.rest_speed_m_s": 1e-6}), 2.0)
+    assert time.monotonic() - start < 15
+
+
 def test_ctrl_c_stops_a_simulation_step():
     sim = polyroll.Simulation(**LONG)
     assert interrupted(lambda: sim.step(10 ** 9), 1.0)

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/run_progress.h"
+
 namespace polyroll::world_parts {
 
 using geom::Vec2;
@@ -117,6 +119,8 @@ void settle_grains(SimWorld& w) {
     while (steps < max_steps) {
         w.step();
         ++steps;
+        // A big pile settles for as long as it rolls: a caller's stop (a Ctrl-C in Python) is heard here too.
+        if (run_stop_requested()) throw RunStopped("the run was stopped while its grains settled");
         if (steps < min_steps) continue;
         float fastest = 0.0f;
         for (const b2Body* b : w.grains) fastest = std::max(fastest, b->GetLinearVelocity().Length());
