@@ -159,6 +159,12 @@ TEST_CASE("results tables: CSV cells round-trip, and a line cut short is dropped
     TableFile t = read_table(dir / "t.csv");
     CHECK(t.rows.size() == 2);
     CHECK(t.had_partial_line);
+    // Columns by name: a missing one is said with the file's name (figures and scoring read them so).
+    CHECK(column_index(t, "x") == 1);
+    CHECK(cell(t, t.rows.at(1), "x") == "b");
+    CHECK(cell(t, t.rows.at(1), "status").empty());
+    CHECK(test::input_error_of([&] { column_index(t, "status"); }) ==
+          (dir / "t.csv").string() + ": no column status (allowed: a polyroll results table, which has it)");
     std::ofstream(dir / "bad.csv") << "index,x\n0,a,b\n";
     CHECK_THROWS_AS(read_table(dir / "bad.csv"), InputError);
     fs::remove_all(dir);

@@ -100,9 +100,7 @@ nlohmann::json figure_context(const sweep::SweepPlan& plan) {
 // The runs shown against time: the ids given, or one per behaviour, all from the scene group (sides,
 // material, fill, model, fidelity) of the first run that rolled and then stopped, when there is one.
 std::vector<std::size_t> chosen_runs(const sweep::SweepPlan& plan, const sweep::TableFile& t, const std::string& ids) {
-    auto col = [&](const std::string& name) {
-        return static_cast<std::size_t>(std::find(t.header.begin(), t.header.end(), name) - t.header.begin());
-    };
+    auto col = [&](const std::string& name) { return sweep::column_index(t, name); };
     std::vector<std::size_t> out;
     if (!ids.empty()) {
         std::size_t pos = 0;

@@ -47,9 +47,21 @@ std::string scene_value(const Scene& s, const std::string& field) {
 
 std::string number_cell(double v) { return fmt::format("{}", v); }
 
+std::optional<std::size_t> find_column(const std::vector<std::string>& header, const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - header.begin());
+}
+
+std::size_t column_index(const TableFile& t, const std::string& name) {
+    if (const std::optional<std::size_t> c = find_column(t.header, name)) return *c;
+    throw InputError(fmt::format("{}: no column {} (allowed: a polyroll results table, which has it)", t.path.string(),
+                                 name));
+}
+
 std::string cell(const TableFile& t, const std::vector<std::string>& row, const std::string& column) {
-    const auto it = std::find(t.header.begin(), t.header.end(), column);
-    return it == t.header.end() ? std::string() : row.at(static_cast<std::size_t>(it - t.header.begin()));
+    const std::optional<std::size_t> c = find_column(t.header, column);
+    return c ? row.at(*c) : std::string();
 }
 
 double cell_number(const std::string& cell) { return cell.empty() ? NAN : std::stod(cell); }
@@ -174,6 +186,7 @@ std::vector<std::string> parse_csv_line(const std::string& line) {
 
 TableFile read_table(const std::filesystem::path& path) {
     TableFile t;
+    t.path = path;
     std::ifstream in(path, std::ios::binary);
     if (!in) return t;
     std::stringstream buf;

@@ -42,10 +42,16 @@ private:
 
 // A table as read from disk: the header and the complete rows.
 struct TableFile {
+    std::filesystem::path path;     // where it was read from, for messages
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
     bool had_partial_line = false;  // a last line without its newline (dropped)
 };
+
+// Where `name` is in a header, if it is there.
+std::optional<std::size_t> find_column(const std::vector<std::string>& header, const std::string& name);
+// Where `name` is in the table's header; throws InputError naming the file and the column.
+std::size_t column_index(const TableFile& t, const std::string& name);
 
 // Reads a results table; an absent file gives an empty table. Throws InputError if the file is
 // not a table (no header, a row with the wrong number of cells).

@@ -1,7 +1,6 @@
 // Scoring from results tables: see table_scoring.h.
 #include "sweep/table_scoring.h"
 
-#include <algorithm>
 #include <string>
 
 #include "sim/scene/scene_json.h"
@@ -14,11 +13,7 @@ std::map<std::size_t, ScoredRun> finished_outcomes(const SweepPlan& plan, const 
     std::map<std::size_t, ScoredRun> out;
     for (const std::filesystem::path& path : table_paths(dir)) {
         const TableFile t = read_table(path);
-        auto col = [&](const std::string& name) {
-            const auto it = std::find(t.header.begin(), t.header.end(), name);
-            if (it == t.header.end()) throw std::runtime_error(path.string() + ": no column " + name);
-            return static_cast<std::size_t>(it - t.header.begin());
-        };
+        auto col = [&](const std::string& name) { return column_index(t, name); };
         if (t.header.empty()) continue;
         const std::size_t c_index = col("index"), c_id = col("run_id"), c_status = col("status"),
                           c_behaviour = col("behaviour"), c_distance = col("distance_m"),

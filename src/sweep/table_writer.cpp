@@ -48,8 +48,7 @@ TableWriter::TableWriter(std::filesystem::path path, const std::vector<std::stri
         if (!t.header.empty() && t.header != header_)
             throw InputError(fmt::format("{}: its columns differ from this sweep's (a table of another sweep?)",
                                          path_.string()));
-        const std::size_t status = static_cast<std::size_t>(
-            std::find(header_.begin(), header_.end(), "status") - header_.begin());
+        const std::size_t status = find_column(header_, "status").value();  // a results table's own column
         for (auto& row : t.rows)
             if (!(drop_failed && row.at(status) == "failed")) existing_.push_back(std::move(row));
         std::lock_guard<std::mutex> g(mutex_);
