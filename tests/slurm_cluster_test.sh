@@ -4,7 +4,9 @@
 # --slurm-tasks 3` (which submits the job array and its merge job), cancels one task while it is
 # pending, lets the merge job find its runs missing, runs that task again with `sbatch --array=K`,
 # merges with the written merge.sbatch, and checks the merged results.csv equals the table of the same
-# plan run in one process, the wall_time_s column aside. Prints the array's measured wall time.
+# plan run in one process, the wall_time_s column aside. Prints the array's measured wall time. Then
+# `polyroll validate --slurm-tasks 2` (its job array and its score job) on one cheap observation, whose
+# scorecard and results must equal the same validation's in one process.
 # A trap stops every daemon it started, and checks none is left, even when a step fails.
 # Usage: slurm_cluster_test.sh POLYROLL_EXE   (exit 77: skipped, no Slurm or not root)
 # KEEP_SLURM_TEST=1 keeps the temporary folder (logs, tables) for a look afterwards.
@@ -237,4 +239,25 @@ status=$(head -n 1 "$tmp/slurm.csv" | tr ',' '\n' | grep -nx status | cut -d: -f
 model_used=$(head -n 1 "$tmp/slurm.csv" | tr ',' '\n' | grep -nx model_used | cut -d: -f1)
 [ "$(tail -n +2 "$tmp/slurm.csv" | cut -d, -f"$status" | sort -u)" = ok ] || fail "not every run is ok"
 tail -n +2 "$tmp/slurm.csv" | cut -d, -f"$model_used" | grep -qx dem3d || fail "no run used dem3d"
-log "PASS: the merged table of $rows runs equals the one-process table (wall_time_s aside)"
+log "the merged table of $rows runs equals the one-process table (wall_time_s aside)"
+
+# --- validate through Slurm: its job array, then its score job, against the same in one process ---
+validate=(--only text-empty-and-full-two-behaviours --seeds 2)
+val_rc=0
+out=$("$polyroll" validate "${validate[@]}" --out "$tmp/validate" --slurm-tasks 2 2>&1) || val_rc=$?
+echo "$out"
+[ "$val_rc" -eq 0 ] || fail "polyroll validate --slurm-tasks exited $val_rc"
+score=$(sed -n 's/.* score job \([0-9]*\) .*/\1/p' <<<"$out")
+[ -n "$score" ] || fail "no score job id in polyroll validate's output"
+wait_for 150 "validate's job array and its score job $score" queue_empty
+[ "$(job_field "$score" JobState)" = COMPLETED ] || fail "validate's score job is $(job_field "$score" JobState)"
+"$polyroll" validate "${validate[@]}" --out "$tmp/validate-one" --jobs "$cpus" --quiet >"$tmp/validate-one.log" 2>&1 ||
+    { cat "$tmp/validate-one.log"; fail "polyroll validate (one process) failed"; }
+if ! diff "$tmp/validate-one/scorecard.csv" "$tmp/validate/scorecard.csv"; then
+    fail "validate's scorecard through Slurm differs from the one-process scorecard"
+fi
+sed 's/,[^,]*$//' "$tmp/validate/results.csv" >"$tmp/validate-slurm.csv"
+sed 's/,[^,]*$//' "$tmp/validate-one/results.csv" >"$tmp/validate-one.csv"
+if ! diff "$tmp/validate-one.csv" "$tmp/validate-slurm.csv"; then fail "validate's results through Slurm differ"; fi
+log "validate through Slurm: $(head -n 2 "$tmp/validate/scorecard.csv" | tail -n 1 | cut -d, -f1,4,5), as in one process"
+log "PASS: sweep and validate through Slurm equal one process (wall_time_s aside)"
