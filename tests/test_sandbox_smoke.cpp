@@ -309,6 +309,21 @@ TEST_CASE("without a display the sandbox renders the scene its flags chose", "[a
     CHECK(summary.at("scene").at("run").at("time_limit_s") == 1);
     const auto written = nlohmann::json::parse(polyroll::test::read_file(dir / "shown" / "sandbox-scene.json"));
     CHECK(written.at("shell").at("sides") == 5);
+    // The same folder without a chosen scene: the default scene's render, and no scene file left
+    // naming frames it no longer drew (the default scene cut short by a replacement assets folder).
+    const fs::path assets = dir / "short-default";
+    fs::create_directories(assets);
+    nlohmann::ordered_json defaults =
+        nlohmann::ordered_json::parse(polyroll::test::read_file(fs::path(POLYROLL_SOURCE_DIR) / "assets" / "defaults.json"));
+    defaults.at("scene").at("run").at("time_limit_s") = 1;
+    std::ofstream(assets / "defaults.json") << defaults.dump(2) << "\n";
+    const Run again = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY POLYROLL_ASSETS=" +
+                          assets.string() + " " + kSandboxExe + " --out shown");
+    INFO(again.out);
+    REQUIRE(again.exit_code == 0);
+    CHECK_THAT(again.out, Catch::Contains("rendering the default scene headless instead (polyroll render --out shown, "
+                                          "replacing"));
+    CHECK_FALSE(fs::exists(dir / "shown" / "sandbox-scene.json"));
     fs::remove_all(dir);
 }
 

@@ -83,6 +83,8 @@ int run_headless_instead(const std::string& why, const std::string& out, const H
         // Beside the frames, so the render can be made again (or the scene read) from the folder.
         write_file_atomic(scene_file, scene.scene_json);
         args.insert(args.end(), {"--scene", scene_file.string()});
+    } else {
+        fs::remove(scene_file, ec);  // an earlier chosen scene's file would name frames it no longer drew
     }
     process::replace_process(args);
     fmt::print(stderr, "polyroll-sandbox: could not run {}: {}\n", exe, std::strerror(errno));
