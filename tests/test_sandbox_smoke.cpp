@@ -53,6 +53,20 @@ bool near(std::array<int, 3> a, std::array<int, 3> b, int tol) {
 
 const std::string kXvfb = "xvfb-run -a -s \"-screen 0 1280x800x24\" ";
 
+// The sandbox without a display, in `dir`, reading a default scene cut to `time_limit_s` simulated
+// seconds from a replacement assets folder (POLYROLL_ASSETS, as a user's would be): a cheap fallback
+// render. The flags follow.
+std::string short_fallback_sandbox(const fs::path& dir, double time_limit_s) {
+    const fs::path assets = dir / "short-default";
+    fs::create_directories(assets);
+    nlohmann::ordered_json defaults =
+        nlohmann::ordered_json::parse(polyroll::test::read_file(fs::path(POLYROLL_SOURCE_DIR) / "assets" / "defaults.json"));
+    defaults.at("scene").at("run").at("time_limit_s") = time_limit_s;
+    std::ofstream(assets / "defaults.json") << defaults.dump(2) << "\n";
+    return "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY POLYROLL_ASSETS=" + assets.string() + " " +
+           kSandboxExe;
+}
+
 }  // namespace
 
 // Under AddressSanitizer (tests/ci_checks.sh) the sandbox still runs with ASan and UBSan checking every
@@ -248,14 +262,7 @@ TEST_CASE("without a display the sandbox renders the default scene headless and 
 TEST_CASE("without a display the sandbox renders into --out and replaces only its own earlier render",
           "[app][sandbox]") {
     const fs::path dir = sandbox_scratch("fallback-out");
-    const fs::path assets = dir / "short-default";
-    fs::create_directories(assets);
-    nlohmann::ordered_json defaults =
-        nlohmann::ordered_json::parse(polyroll::test::read_file(fs::path(POLYROLL_SOURCE_DIR) / "assets" / "defaults.json"));
-    defaults.at("scene").at("run").at("time_limit_s") = 2;
-    std::ofstream(assets / "defaults.json") << defaults.dump(2) << "\n";
-    const std::string sandbox = "cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY POLYROLL_ASSETS=" +
-                                assets.string() + " " + kSandboxExe;
+    const std::string sandbox = short_fallback_sandbox(dir, 2);
     const std::string cmd = sandbox + " --out mine/";
     const Run first = run(cmd);
     INFO(first.out);
@@ -311,14 +318,7 @@ TEST_CASE("without a display the sandbox renders the scene its flags chose", "[a
     CHECK(written.at("shell").at("sides") == 5);
     // The same folder without a chosen scene: the default scene's render, and no scene file left
     // naming frames it no longer drew (the default scene cut short by a replacement assets folder).
-    const fs::path assets = dir / "short-default";
-    fs::create_directories(assets);
-    nlohmann::ordered_json defaults =
-        nlohmann::ordered_json::parse(polyroll::test::read_file(fs::path(POLYROLL_SOURCE_DIR) / "assets" / "defaults.json"));
-    defaults.at("scene").at("run").at("time_limit_s") = 1;
-    std::ofstream(assets / "defaults.json") << defaults.dump(2) << "\n";
-    const Run again = run("cd " + dir.string() + " && env -u DISPLAY -u WAYLAND_DISPLAY POLYROLL_ASSETS=" +
-                          assets.string() + " " + kSandboxExe + " --out shown");
+    const Run again = run(short_fallback_sandbox(dir, 1) + " --out shown");
     INFO(again.out);
     REQUIRE(again.exit_code == 0);
     CHECK_THAT(again.out, Catch::Contains("rendering the default scene headless instead (polyroll render --out shown, "
