@@ -36,6 +36,7 @@ GROW_SHARE = 0.3     # share of settle_time_s spent growing grains that had to s
 INSIDE_TOL = 0.1     # grains_inside tolerance, in nominal grain radii
 PROGRESS_EVERY_S = 0.25
 LID_LOAD_EVERY_ROWS = 10  # the lid load's means sample one row in ten (the formula's sum runs over every grain)
+INSIDE_EVERY_ROWS = 10  # grains counted inside the shell one row in ten and on the last: a leak is seen 10 ms late at most
 MASK_INSIDE, MASK_RAMP = 1, 2  # grains+facets share bit 1; edge spheres+ramp share bit 2
 COLOR = (0.6, 0.6, 0.6)        # given explicitly: Yade's random colour reseeds Python's global random
 
@@ -500,14 +501,17 @@ def release(c, sc):
 # ---------------------------------------------------------------- the run
 
 class Tracker:
-    """Shell pose (unwrapped angle), energies and grains inside, read from the scene at each row."""
+    """Shell pose (unwrapped angle), energies and grains inside, read from the scene at each row.
+
+    A row runs at step_hz (1 kHz) and was 40% of a run's time when it walked every grain in Python
+    (docs/studies/dem3d-cost.md); it now asks Yade's C++ for the kinetic energy, takes the grains'
+    first moments from their positions (the potential energy on a straight track is linear in them),
+    and counts the grains inside every INSIDE_EVERY_ROWS rows and on the last row."""
 
     def __init__(self, c, sc, angle0):
         from yade import O
         self.c = c
-        g = c['gravity_m_s2']
-        # Potential energy of a body of mass m at (x, y): m g height (the track's profile).
-        self.pe = lambda m, p: m * g * height(c, p[0], p[1])
+        self.g = c['gravity_m_s2']
         self.q0 = O.bodies[sc['clump']].state.ori.conjugate()
         self.angle0, self.turn = angle0, 0.0
         self.planes = edge_planes(c['inner'])
@@ -515,7 +519,13 @@ class Tracker:
         self.pe0 = None
         self.shell = O.bodies[sc['clump']].state
         self.grains = [O.bodies[i].state for i in sc['grains']]  # cached: a lookup per grain per row is slow
+        self.masses = [b.mass for b in self.grains]
+        self.fill_mass = sum(self.masses)
         self.free = bool(sc['channel'])  # all six directions free (a channel), or only the plane's three
+        self.straight = c['curvature_deg_per_m'] == 0
+        th = math.radians(c['angle_deg'])
+        self.sin_th, self.cos_th = math.sin(th), math.cos(th)
+        self.inside, self.rows = len(self.grains), 0
 
     def roll_since_release(self, q):
         """The turn about the roll axis since t = 0 (rad, in (-pi, pi])."""
@@ -527,35 +537,48 @@ class Tracker:
         a = q * yade.Vector3(1, 0, 0)
         return math.atan2(a[1], a[0])
 
+    def count_inside(self, x, y, angle, positions):
+        half = self.c['inner_depth_m'] / 2 + self.tol
+        return sum(1 for p in positions if abs(p[2]) <= half and
+                   depth_inside(self.planes, rot((p[0] - x, p[1] - y), -angle)) >= -self.tol)
+
+    def count_now(self, row):
+        """The grains inside now, counted whatever the row (the run's last row); row: this row's values."""
+        self.inside = self.count_inside(row[0], row[1], row[2], [b.pos for b in self.grains])
+        return self.inside
+
     def row(self):
+        """The row's values: the shell's pose and motion, the energies, the fill's centre, the grains inside."""
+        from yade import utils
         c, st = self.c, self.shell
         q = st.ori * self.q0  # rotation since t = 0
         rel = self.roll_since_release(q)
         self.turn += (rel - self.turn + math.pi) % (2 * math.pi) - math.pi  # unwrap
         angle = self.angle0 + self.turn
         x, y, vx, vy, w = st.pos[0], st.pos[1], st.vel[0], st.vel[1], st.angVel[2]
-        ke = 0.5 * c['mass_kg'] * (vx * vx + vy * vy) + 0.5 * c['inertia_roll_kg_m2'] * w * w
-        if self.free:  # the motion out of the plane: across the track, yaw and tilt
-            wx, wy = st.angVel[0], st.angVel[1]
-            ke += 0.5 * c['mass_kg'] * st.vel[2] ** 2 + 0.5 * c['inertia_cross_kg_m2'] * (wx * wx + wy * wy)
-        pe = self.pe(c['mass_kg'], (x, y))
-        inside, half = 0, c['inner_depth_m'] / 2 + self.tol
-        fill_m = fill_x = fill_y = 0.0  # the fill's mass and its first moments, for its centre of mass
-        for b in self.grains:
-            p, v = b.pos, b.vel
-            ke += 0.5 * b.mass * v.squaredNorm() + 0.5 * b.inertia[0] * b.angVel.squaredNorm()
-            pe += self.pe(b.mass, p)
-            fill_m, fill_x, fill_y = fill_m + b.mass, fill_x + b.mass * p[0], fill_y + b.mass * p[1]
-            if abs(p[2]) <= half and depth_inside(self.planes, rot((p[0] - x, p[1] - y), -angle)) >= -self.tol:
-                inside += 1
+        # Every dynamic body's 1/2 (m v^2 + w.I w): the shell's clump (its blocked directions do not
+        # move) and the grains; the clump's members and the fixed walls are not dynamic bodies.
+        ke = utils.kineticEnergy()
+        positions = [b.pos for b in self.grains]
+        xs, ys = [p[0] for p in positions], [p[1] for p in positions]
+        mx, my = math.fsum(map(float.__mul__, self.masses, xs)), math.fsum(map(float.__mul__, self.masses, ys))
+        g, m_shell = self.g, c['mass_kg']
+        if self.straight:  # height = -x sin(theta) + y cos(theta): linear, so summed over the moments
+            pe = g * ((m_shell * -x + -mx) * self.sin_th + (m_shell * y + my) * self.cos_th)
+        else:
+            pe = g * (m_shell * height(c, x, y) + math.fsum(m * height(c, px, py)
+                                                            for m, px, py in zip(self.masses, xs, ys)))
+        if self.rows % INSIDE_EVERY_ROWS == 0:
+            self.inside = self.count_inside(x, y, angle, positions)
+        self.rows += 1
         if self.pe0 is None:
             self.pe0 = pe
         vals = (x, y, angle, vx, vy, w, ke, pe - self.pe0)
         if not all(math.isfinite(v) for v in vals):
             raise RuntimeError('the simulation blew up (non-finite shell state)')
         # The fill's centre of mass from the shell's centre, down the ramp and away from it (0, 0 empty).
-        fill = (fill_x / fill_m - x, fill_y / fill_m - y) if fill_m > 0 else (0.0, 0.0)
-        return vals + fill + (inside,)
+        fill = (mx / self.fill_mass - x, my / self.fill_mass - y) if self.fill_mass > 0 else (0.0, 0.0)
+        return vals + fill + (self.inside,)
 
 
 class ChannelLog:
@@ -605,6 +628,20 @@ def simulate(c, sc, angle0, states, frames, lids, channel=None):
     while True:
         t = k / c['step_hz']
         row = tr.row()
+        speed = math.hypot(row[3], row[4])
+        if speed < c['rest_speed_m_s'] and abs(row[5]) * r_out < c['rest_speed_m_s']:
+            rest_since = t if rest_since is None else rest_since
+        else:
+            rest_since = None
+        end = None
+        if row[0] > c['end_centre_x_m']:
+            end = 'rolled_to_end'
+        elif rest_since is not None and t - rest_since >= c['rest_time_s'] - 1e-9:
+            end = 'rest'
+        elif t >= c['time_limit_s'] - 1e-9:
+            end = 'time_limit'
+        if end:
+            row = row[:-1] + (tr.count_now(row),)  # the last row's count is always fresh
         if k % LID_LOAD_EVERY_ROWS == 0:
             lids.add_row(newton.gravity)
         if channel:
@@ -619,17 +656,8 @@ def simulate(c, sc, angle0, states, frames, lids, channel=None):
         if t >= next_progress - 1e-9:
             print('progress %r %r' % (t, row[0] - x0), flush=True)
             next_progress += PROGRESS_EVERY_S
-        speed = math.hypot(row[3], row[4])
-        if speed < c['rest_speed_m_s'] and abs(row[5]) * r_out < c['rest_speed_m_s']:
-            rest_since = t if rest_since is None else rest_since
-        else:
-            rest_since = None
-        if row[0] > c['end_centre_x_m']:
-            return 'rolled_to_end'
-        if rest_since is not None and t - rest_since >= c['rest_time_s'] - 1e-9:
-            return 'rest'
-        if t >= c['time_limit_s'] - 1e-9:
-            return 'time_limit'
+        if end:
+            return end
         if curved:
             # A curved track: gravity turned to the slope under the shell, once a row (1/step_hz), a
             # few hundredths of a degree between turns.
