@@ -10,7 +10,7 @@ using namespace polyroll;
 
 TEST_CASE("every preset value has a source", "[assets]") {
     using assets::Kind;
-    for (Kind k : {Kind::polygon, Kind::material, Kind::ramp, Kind::fidelity}) {
+    for (Kind k : assets::all_kinds()) {
         for (const std::string& name : assets::preset_names(k)) {
             const auto& entry = assets::preset_entry(k, name);
             REQUIRE(entry.contains("description"));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "sim/grains/contact_values.h"
 #include "sim/grains/disc_size.h"
 #include "sim/scene/scene_json.h"
 #include "sim/grains/world_builder.h"
@@ -204,4 +205,33 @@ TEST_CASE("the one-layer study's scenes hold the 2D pile in a 3D box one grain d
         CHECK(s.shell.vertex_radius_m == Approx(1e-4));
     }
     CHECK(files == 6);
+}
+
+TEST_CASE("the closure scales the discs' friction and restitution in the 2D engine only", "[fill][closure]") {
+    const Scene none = test::scene_with(json::object());
+    CHECK(none.closure.preset == "none");  // the bundled default
+    CHECK(none.closure.disc_friction_factor == 1.0);
+    const Scene s = test::scene_with({{"closure", {{"disc_friction_factor", 0.5}, {"wall_friction_factor", 0.25},
+                                                   {"restitution_factor", 4.0}}}});
+    auto w = build_world(s);
+    REQUIRE_FALSE(w->grains.empty());
+    const b2Fixture* f = w->grains.front()->GetFixtureList();
+    CHECK(f->GetFriction() == Approx(0.5 * s.fill.material.friction));
+    CHECK(f->GetRestitution() == Approx(1.0));  // 4 x the material's, held at an elastic impact
+    // The disc-on-wall contacts take the wall friction times its factor when they begin.
+    for (int i = 0; i < 50; ++i) w->step();
+    int walls = 0;
+    for (b2Contact* c = w->world->GetContactList(); c != nullptr; c = c->GetNext()) {
+        const b2Body* a = c->GetFixtureA()->GetBody();
+        const b2Body* b = c->GetFixtureB()->GetBody();
+        if (!c->IsTouching() || (a != w->shell && b != w->shell)) continue;
+        if (a->GetType() != b2_dynamicBody || b->GetType() != b2_dynamicBody) continue;  // the ramp
+        ++walls;
+        CHECK(c->GetFriction() == Approx(0.25 * s.fill.material.wall_friction));
+    }
+    CHECK(walls > 0);
+    // The 3D reference and the reduced models do not read it: only the Box2D world is built from it.
+    CHECK(disc_friction(none) == none.fill.material.friction);
+    CHECK(disc_wall_friction(none) == none.fill.material.wall_friction);
+    CHECK(disc_restitution(none) == none.fill.material.restitution);
 }

@@ -123,3 +123,30 @@ TEST_CASE("observations: a command-line field an observation sweeps is refused",
     const ObservationFile f = parse_observations(good_doc(), "obs.json");
     CHECK_THROWS_AS(make_validation_plan(f, 1, {{"shell.preset", "decagon-small"}}), polyroll::InputError);
 }
+
+TEST_CASE("observations: named halves select their observations, and bad halves are refused", "[observations]") {
+    json doc = good_doc();
+    doc["halves"] = json{{"fit", json{"rolls", "grid"}}, {"held_back", json{"band"}}};
+    const ObservationFile f = parse_observations(doc, "obs.json");
+    REQUIRE(f.halves.size() == 2);
+    const ObservationFile fit = half_of(f, "fit");
+    REQUIRE(fit.observations.size() == 2);
+    CHECK(fit.observations[0].id == "rolls");
+    CHECK(fit.observations[1].id == "grid");
+    CHECK_FALSE(fit.doc.contains("halves"));  // the folder's copy holds what was scored
+    CHECK(half_of(f, "held_back").observations.front().id == "band");
+    const std::string unknown = polyroll::test::input_error_of([&] { half_of(f, "test"); });
+    CHECK_THAT(unknown, Catch::Contains("--half test") && Catch::Contains("fit, held_back"));
+    const std::string none = polyroll::test::input_error_of([&] { half_of(parse_observations(good_doc(), "obs.json"), "fit"); });
+    CHECK_THAT(none, Catch::Contains("names no halves"));
+
+    json twice = doc;
+    twice["halves"]["held_back"].push_back("rolls");
+    CHECK_THAT(error_of(twice), Catch::Contains("halves.held_back") && Catch::Contains("one half at most"));
+    json stranger = doc;
+    stranger["halves"]["fit"].push_back("nobody");
+    CHECK_THAT(error_of(stranger), Catch::Contains("\"nobody\"") && Catch::Contains("an id of this file"));
+    json empty = doc;
+    empty["halves"]["fit"] = json::array();
+    CHECK_THAT(error_of(empty), Catch::Contains("halves.fit") && Catch::Contains("non-empty"));
+}

@@ -41,7 +41,7 @@ std::string read_text(const fs::path& path) {
 }
 
 struct CalibrateArgs {
-    std::string params, observations, out = "runs/calibrate", algorithm = "sbplx", shard;
+    std::string params, observations, half, out = "runs/calibrate", algorithm = "sbplx", shard;
     std::vector<std::string> starts;  // FIELD=VALUE
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
     bool force = false, quiet = false, plan_only = false;
@@ -52,6 +52,7 @@ struct CalibrateArgs {
 std::string command_text(const CalibrateArgs& a) {
     std::string c = "polyroll calibrate --params " + a.params;
     if (!a.observations.empty()) c += " --observations " + a.observations;
+    if (!a.half.empty()) c += " --half " + a.half;
     c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
     for (const std::string& s : a.starts) c += " --start " + s;
     if (!a.shard.empty()) c += " --shard " + a.shard;
@@ -150,6 +151,7 @@ void check_search_flags(const CalibrateArgs& a) {
 sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
     sweep::CalibrationSetup setup;
     setup.file = sweep::read_observations(a.observations);
+    if (!a.half.empty()) setup.file = sweep::half_of(setup.file, a.half);
     setup.seeds = a.seeds;
     setup.overrides = observation_overrides(a.scene);
     setup.algorithm = a.algorithm;
@@ -354,6 +356,8 @@ Action add_calibrate_command(Command& app) {
         "130 interrupted (resume with the same command), 1 other failure.");
     sub.add_option("--params", a->params, "fields to fit: FIELD[=FROM:TO],... (scene-file paths, numbers)").required();
     sub.add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
+    sub.add_option("--half", a->half, "fit to the observations of this half of the file only (its \"halves\", "
+                                      "e.g. fit in assets/reference-3d.json)");
     sub.add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
         .check(Range(1, 1000));
     sub.add_option("--max-evals", a->max_evals,

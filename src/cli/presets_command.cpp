@@ -27,7 +27,7 @@ std::string value_text(std::string_view key, const nlohmann::ordered_json& v) {
 
 int list(bool as_json) {
     using assets::Kind;
-    const Kind kinds[] = {Kind::polygon, Kind::material, Kind::ramp, Kind::fidelity};
+    const std::vector<Kind>& kinds = assets::all_kinds();
     if (as_json) {
         nlohmann::ordered_json out;
         for (Kind k : kinds) out[std::string(assets::kind_label(k))] = assets::file(assets::kind_file(k)).at("presets");

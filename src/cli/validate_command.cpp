@@ -40,6 +40,7 @@ using json = nlohmann::ordered_json;
 struct ValidateArgs {
     std::string observations, out = "runs/validate", shard;
     std::vector<std::string> only;  // observation ids; empty: every observation of the file
+    std::string half;               // one of the file's named halves (its "halves"); empty: all
     int seeds = 5, jobs = 0;
     bool force = false, quiet = false;
     ObservationSceneFlags scene;  // on top of every observation
@@ -118,6 +119,7 @@ int submit_slurm(const ValidateArgs& a, const SlurmFlags& slurm, const fs::path&
         for (const std::string& id : a.only) only += (only.empty() ? "" : ",") + id;
         argv.insert(argv.end(), {"--only", only});
     }
+    if (!a.half.empty()) argv.insert(argv.end(), {"--half", a.half});
     argv.insert(argv.end(), {"--seeds", std::to_string(a.seeds)});
     for (const std::string& w : observation_flags_args(a.scene)) argv.push_back(w);
     argv.insert(argv.end(), {"--out", abs.string()});
@@ -138,6 +140,7 @@ int run(const ValidateArgs& a, const SlurmFlags& slurm) {
                                      slurm.tasks, a.shard));
     check_slurm_flags(slurm);
     sweep::ObservationFile file = sweep::read_observations(a.observations);
+    if (!a.half.empty()) file = sweep::half_of(file, a.half);
     if (!a.only.empty()) file = sweep::only_observations(file, a.only, "--only");
     const sweep::ValidationPlan vp = sweep::make_validation_plan(file, a.seeds, observation_overrides(a.scene));
     check_slurm_tasks_for_plan(slurm, vp.plan.runs.size());
@@ -245,6 +248,8 @@ Action add_validate_command(Command& app) {
     sub.add_option("--only", a->only, "run only the observation with this id (repeat the flag or give a list a,b; "
                                       "default: every observation of the file)")
         .delimiter(',');
+    sub.add_option("--half", a->half, "run only the observations of this half of the file (its \"halves\", e.g. "
+                                      "fit or held_back in assets/reference-3d.json)");
     sub.add_option("--seeds", a->seeds, "seeds per scene: 1, 2, ..., N (default 5)").check(Range(1, 1000));
     sub.add_option("--out", a->out, "folder: plan.json, results.csv, runs/<id>/, scorecard.csv, scorecard.json, "
                                     "figures/ (default runs/validate); the same command there resumes, more seeds extend it");

@@ -110,6 +110,7 @@ std::string_view kind_file(Kind kind) {
         case Kind::material: return "materials.json";
         case Kind::ramp: return "ramps.json";
         case Kind::fidelity: return "fidelity.json";
+        case Kind::closure: return "closures.json";
     }
     return "";
 }
@@ -120,8 +121,14 @@ std::string_view kind_label(Kind kind) {
         case Kind::material: return "material";
         case Kind::ramp: return "ramp";
         case Kind::fidelity: return "fidelity";
+        case Kind::closure: return "closure";
     }
     return "";
+}
+
+const std::vector<Kind>& all_kinds() {
+    static const std::vector<Kind> kinds = {Kind::polygon, Kind::material, Kind::ramp, Kind::fidelity, Kind::closure};
+    return kinds;
 }
 
 std::vector<std::string> preset_names(Kind kind) {

@@ -35,7 +35,9 @@ void use_directory(const std::filesystem::path& dir);
 const nlohmann::ordered_json& file(std::string_view name);
 
 // Preset kinds and the file holding each.
-enum class Kind { polygon, material, ramp, fidelity };
+enum class Kind { polygon, material, ramp, fidelity, closure };
+// Every kind, in the order files and listings show them.
+const std::vector<Kind>& all_kinds();
 std::string_view kind_file(Kind kind);
 std::string_view kind_label(Kind kind);  // "polygon", "material", ...
 

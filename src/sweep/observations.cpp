@@ -274,7 +274,7 @@ Observation read_observation(const std::string& origin, const json& e, std::size
 ObservationFile parse_observations(const json& doc, const std::string& origin) {
     const Where w{origin, ""};
     if (!doc.is_object()) w.fail("the document", doc, "an object with \"observations\"");
-    check_keys(w, "", doc, {"about", "format", "observations"});
+    check_keys(w, "", doc, {"about", "format", "observations", "halves"});
     if (!doc.contains("observations")) w.missing("observations", "a list of observations");
     const json& list = doc["observations"];
     if (!list.is_array() || list.empty()) w.fail("observations", list, "a non-empty list of observations");
@@ -286,6 +286,24 @@ ObservationFile parse_observations(const json& doc, const std::string& origin) {
         Observation ob = read_observation(origin, list[i], i);
         if (!ids.insert(ob.id).second) w.fail(fmt::format("observations[{}].id", i), json(ob.id), "each id once");
         file.observations.push_back(std::move(ob));
+    }
+    if (doc.contains("halves")) {
+        const json& halves = doc["halves"];
+        const std::string allowed = "an object of named lists of observation ids, e.g. {\"fit\": [...], \"held_back\": [...]}";
+        if (!halves.is_object() || halves.empty()) w.fail("halves", halves, allowed);
+        std::set<std::string> placed;
+        for (const auto& [name, list] : halves.items()) {
+            const std::string key = "halves." + name;
+            if (!list.is_array() || list.empty()) w.fail(key, list, "a non-empty list of observation ids");
+            std::vector<std::string> half;
+            for (const json& id : list) {
+                if (!id.is_string() || !ids.count(id.get<std::string>()))
+                    w.fail(key, id, "an id of this file's observations");
+                if (!placed.insert(id.get<std::string>()).second) w.fail(key, id, "each id in one half at most");
+                half.push_back(id.get<std::string>());
+            }
+            file.halves.emplace_back(name, std::move(half));
+        }
     }
     return file;
 }
@@ -340,6 +358,22 @@ ObservationFile only_observations(const ObservationFile& file, const std::vector
         out.doc["observations"].push_back(file.doc["observations"][i]);
     }
     return out;
+}
+
+ObservationFile half_of(const ObservationFile& file, const std::string& name) {
+    std::vector<std::string> names;
+    for (const auto& [n, ids] : file.halves) {
+        if (n == name) {
+            ObservationFile out = only_observations(file, ids, "--half " + name);
+            out.halves.clear();
+            out.doc.erase("halves");
+            return out;
+        }
+        names.push_back(n);
+    }
+    throw InputError(fmt::format("--half {}: {} {} (allowed: {})", printable_line(name.empty() ? "''" : name),
+                                 file.origin, names.empty() ? "names no halves" : "has no half of this name",
+                                 names.empty() ? "no --half with this file" : joined(names)));
 }
 
 namespace {

@@ -50,6 +50,9 @@ struct ObservationFile {
     std::string origin;  // the file name, or "experiment.json (bundled)"
     nlohmann::ordered_json doc;  // the file as read, for the validation folder's copy
     std::vector<Observation> observations;
+    // Named sets of observation ids ("halves": {"fit": [...], "held_back": [...]}): a model fitted on one
+    // set is judged on another (assets/reference-3d.json). Each id is the file's, and in one set at most.
+    std::vector<std::pair<std::string, std::vector<std::string>>> halves;
 };
 
 // Checks and reads an observations document; InputError (one line naming `origin`, the observation
@@ -63,6 +66,8 @@ ObservationFile read_observations(const std::string& path);
 // InputError naming it, `flag` and the ids allowed.
 ObservationFile only_observations(const ObservationFile& file, const std::vector<std::string>& ids,
                                   const std::string& flag);
+// The file with only the observations of its half `name` (--half); InputError naming the halves allowed.
+ObservationFile half_of(const ObservationFile& file, const std::string& name);
 
 // One planned run's place: which observation, at which angle (angle-range ones) and grid point.
 struct RunPlace {

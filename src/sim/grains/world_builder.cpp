@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "sim/grains/contact_values.h"
 #include "sim/grains/lid_friction.h"
 #include "sim/geometry/ramp_profile.h"
 #include "sim/grains/world_parts.h"
@@ -20,10 +21,10 @@ void ContactMaterials::BeginContact(b2Contact* contact) {
         contact->SetFriction(static_cast<float>(scene_.ramp.friction));
         contact->SetRestitution(static_cast<float>(scene_.ramp.restitution));
     } else if (is(BodyKind::grain, BodyKind::shell)) {
-        contact->SetFriction(static_cast<float>(scene_.fill.material.wall_friction));
-        contact->SetRestitution(static_cast<float>(scene_.fill.material.restitution));
+        contact->SetFriction(static_cast<float>(disc_wall_friction(scene_)));
+        contact->SetRestitution(static_cast<float>(disc_restitution(scene_)));
     }
-    // Grain on grain: both fixtures carry the material's values, which Box2D's mixing keeps.
+    // Grain on grain: both fixtures carry the same values (contact_values.h), which Box2D's mixing keeps.
 }
 
 void SimWorld::step() {

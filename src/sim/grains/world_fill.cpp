@@ -1,4 +1,5 @@
 // The grains poured into the held shell and settled: see world_parts.h.
+#include "sim/grains/contact_values.h"
 #include "sim/grains/world_parts.h"
 
 #include <algorithm>
@@ -96,8 +97,8 @@ void pour_grains(SimWorld& w, const ShellPose& pose) {
         // Box2D density is mass per engine area: this gives each grain its planned mass.
         const double area_units = geom::kPi * circle.m_radius * circle.m_radius;
         fd.density = static_cast<float>(pg.mass_kg / area_units);
-        fd.friction = static_cast<float>(scene.fill.material.friction);
-        fd.restitution = static_cast<float>(scene.fill.material.restitution);
+        fd.friction = static_cast<float>(disc_friction(scene));
+        fd.restitution = static_cast<float>(disc_restitution(scene));
         body->CreateFixture(&fd);
         w.grains.push_back(body);
     }

@@ -99,6 +99,17 @@ struct Dem3dParams {
     std::optional<double> channel_width_m;
 };
 
+// What the one-grain-deep 2D pile lacks against the 3D box (grains slipping along the axis and
+// turning out of the plane, the box's depth), stood in for by factors on the 2D contacts' values, fitted
+// to the 3D reference's runs (assets/closures.json, assets/reference-3d.json). Only the 2D grain model
+// reads them: the 3D reference has those freedoms, and the reduced models have no grain contacts.
+struct ClosureParams {
+    std::string preset;
+    double disc_friction_factor = 1.0;  // disc on disc: the material's friction times this
+    double wall_friction_factor = 1.0;  // disc on the shell's walls: the material's wall friction times this
+    double restitution_factor = 1.0;    // disc on disc and on walls: the material's restitution times this, at most 1
+};
+
 struct RunParams {
     Model model = Model::grains;
     std::uint64_t seed = 0;
@@ -118,6 +129,7 @@ struct Scene {
     FidelityParams fidelity;
     RunParams run;
     Dem3dParams dem3d;
+    ClosureParams closure;
 };
 
 }  // namespace polyroll

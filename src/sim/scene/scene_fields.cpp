@@ -260,6 +260,23 @@ std::vector<SceneField> make_table() {
             .flag("--channel-width")
             .help("3D reference: width of the track's channel; the box, free in all six directions, rolls "
                   "between its sides. null: the box held in its plane, as the 2D cross-section is"),
+
+        // --- closure: only the 2D grain model reads these (assets/closures.json)
+        Row("closure.preset", T::preset, member<&Scene::closure, &ClosureParams::preset>())
+            .presets(Kind::closure).flag("--closure", 13).label("closure")
+            .help("2D grain model: what stands in for the third dimension the one-grain-deep pile lacks, fitted "
+                  "to the 3D reference (none: the contacts as the material gives them)"),
+        Row("closure.disc_friction_factor", T::number, member<&Scene::closure, &ClosureParams::disc_friction_factor>())
+            .range(0.0, 2.0)
+            .help("2D grain model: disc-on-disc friction as a share of fill.material.friction (below 1: grains "
+                  "slipping out of the plane), no unit"),
+        Row("closure.wall_friction_factor", T::number, member<&Scene::closure, &ClosureParams::wall_friction_factor>())
+            .range(0.0, 2.0)
+            .help("2D grain model: disc-on-wall friction as a share of fill.material.wall_friction, no unit"),
+        Row("closure.restitution_factor", T::number, member<&Scene::closure, &ClosureParams::restitution_factor>())
+            .range(0.0, 5.0)
+            .help("2D grain model: the discs' restitution as a share of fill.material.restitution (at most 1 "
+                  "in all), no unit"),
     };
 }
 
