@@ -92,6 +92,7 @@ TEST_CASE("observations: bad files are refused with one line naming id, key, val
         {"/observations/1/angles_deg", json{{"from", 12}, {"to", 14}, {"step", 1}}, {"'band'", "angles_deg", "11"}},
         {"/observations/1/scene/ramp", json{{"angle_deg", 12}}, {"'band'", "scene.ramp.angle_deg"}},
         {"/observations/1/angle_range_deg", json{15, 11}, {"'band'", "angle_range_deg", "from < to"}},
+        {"/observations/1/tolerance", json{{"angle_range_deg", 1}}, {"'band'", "tolerance.slope_relative", "linear_fit"}},
         {"/observations/2/grid/ramp.angle_deg", json::array(), {"'grid'", "grid.ramp.angle_deg", "non-empty"}},
         {"/observations/2/grid/run.seed", json{1, 2}, {"'grid'", "grid.run.seed", "--seeds"}},
         {"/observations/2/id", "rolls", {"id", "each id once"}},
@@ -116,6 +117,11 @@ TEST_CASE("observations: bad files are refused with one line naming id, key, val
         for (const std::string& w : c.words) CHECK_THAT(msg, Catch::Contains(w));
     }
     CHECK_THAT(error_of(json::parse(R"({"observations": []})")), Catch::Contains("non-empty"));
+    // A band without a line needs no slope tolerance.
+    json no_line = good_doc();
+    no_line["observations"][1]["observed"].erase("linear_fit");
+    no_line["observations"][1]["tolerance"].erase("slope_relative");
+    CHECK(error_of(no_line).empty());
     CHECK_THAT(error_of(json::parse(R"([1])")), Catch::Contains("an object"));
 }
 

@@ -165,11 +165,14 @@ void read_tolerance(const Where& w, const json& t, Observation& ob) {
                        ob.terminal_velocity_tolerance_m_s);
     if (ob.angle_range_deg) {
         if (!t.contains("angle_range_deg")) w.missing("tolerance.angle_range_deg", "degrees above 0");
-        if (!t.contains("slope_relative")) w.missing("tolerance.slope_relative", "a share above 0");
+        // The slope's tolerance scores observed.linear_fit: a band without a line needs none.
+        if (!t.contains("slope_relative") && ob.linear_fit)
+            w.missing("tolerance.slope_relative", "a share above 0, with observed.linear_fit");
         ob.angle_tolerance_deg = number_in(w, "tolerance.angle_range_deg", t["angle_range_deg"], 0, 90, true,
                                            "degrees above 0, at most 90");
-        ob.slope_relative = number_in(w, "tolerance.slope_relative", t["slope_relative"], 0, 100, true,
-                                      "a share above 0");
+        if (t.contains("slope_relative"))
+            ob.slope_relative = number_in(w, "tolerance.slope_relative", t["slope_relative"], 0, 100, true,
+                                          "a share above 0");
     } else {
         for (const char* k : {"angle_range_deg", "slope_relative"})
             if (t.contains(k)) w.fail(std::string("tolerance.") + k, t[k], "only with an angle_range_deg observation");

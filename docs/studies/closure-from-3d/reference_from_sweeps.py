@@ -4,10 +4,11 @@
 study's six scenes, the 3D rows of docs/tradeoff/cross-section.csv (the same script and physics; the rows
 were made by `polyroll tradeoff --dem3d` on 2026-11-29).
 
-    python3 docs/studies/closure-from-3d/reference_from_sweeps.py SWEEPS_DIR [--check]
+    python3 docs/studies/closure-from-3d/reference_from_sweeps.py SWEEPS_DIR [--check] [--partial OUT]
 
 SWEEPS_DIR holds one folder a scene, named as SCENES below. --check prints each scene's runs and
-brackets and writes nothing. The split into halves is the one written in docs/studies/closure-from-3d.md
+brackets and writes nothing; --partial OUT writes the scenes bracketed so far to OUT (for trying
+closures while the other scenes' 3D runs go on), not the bundled file. The split into halves is the one written in docs/studies/closure-from-3d.md
 before any fit; this script only copies it.
 
 Thresholds are read as `polyroll validate` reads a band (src/sweep/scorecard.cpp): an angle shows a
@@ -182,6 +183,7 @@ def main(argv):
         sys.stderr.write(__doc__)
         return 2
     sweeps, check = argv[1], '--check' in argv[2:]
+    partial = argv[argv.index('--partial') + 1] if '--partial' in argv else None
     made = os.environ.get('REFERENCE_DATE', '2026-12-01')
     all_obs, halves = [], {'fit': [], 'held_back': []}
     for half, scenes in (('fit', FIT), ('held_back', HELD_BACK)):
@@ -191,11 +193,16 @@ def main(argv):
                 show(sid, runs)
                 print('   thresholds', thresholds(runs))
                 continue
+            if partial:
+                (t1, b1), (t2, b2) = thresholds(runs)
+                if not (b1 and b2):
+                    continue
             obs = observations_of(sid, scene, runs, sources, made)
             all_obs += obs
             halves[half] += [o['id'] for o in obs]
     if check:
         return 0
+    halves = {k: v for k, v in halves.items() if v}
     doc = {
         'about': 'The 3D reference (--model dem3d: the box and every grain in Yade) measured as the experiment '
                  'was, in the observations format of assets/experiment.json (see its "format"): for twelve scenes, '
@@ -209,11 +216,12 @@ def main(argv):
         'observations': all_obs,
     }
     text = json.dumps(doc, indent=1) + '\n'
-    tmp = OUT + '.tmp'
+    out = partial or OUT
+    tmp = out + '.tmp'
     with open(tmp, 'w') as f:
         f.write(text)
-    os.replace(tmp, OUT)
-    print('wrote %s: %d observations' % (OUT, len(all_obs)))
+    os.replace(tmp, out)
+    print('wrote %s: %d observations' % (out, len(all_obs)))
     return 0
 
 
