@@ -2,6 +2,7 @@
 #include "python/py_json.h"
 
 #include <string>
+#include <string_view>
 
 #include <fmt/core.h>
 
@@ -12,6 +13,12 @@ namespace py = pybind11;
 namespace polyroll::python {
 
 using json = nlohmann::ordered_json;
+
+std::string a_type_name(py::handle value) {
+    const std::string name = py::type::of(value).attr("__name__").cast<std::string>();
+    const bool vowel = !name.empty() && std::string_view("aeiouAEIOU").find(name.front()) != std::string_view::npos;
+    return (vowel ? "an " : "a ") + name;
+}
 
 json to_json(py::handle value, const std::string& what) {
     if (value.is_none()) return nullptr;
@@ -31,7 +38,7 @@ json to_json(py::handle value, const std::string& what) {
         json out = json::object();
         for (const auto& [key, item] : value.cast<py::dict>()) {
             if (!py::isinstance<py::str>(key))
-                throw InputError(fmt::format("{}: the key {} is not a string", what, py::repr(key).cast<std::string>()));
+                throw py::type_error(fmt::format("{}: the key {} is not a string", what, py::repr(key).cast<std::string>()));
             const std::string k = key.cast<std::string>();
             out[k] = to_json(item, what + "." + k);
         }
@@ -45,8 +52,9 @@ json to_json(py::handle value, const std::string& what) {
     // numpy's integer and float scalars (np.int64(8), np.float64(0.375)).
     if (py::hasattr(value, "__index__")) return to_json(py::int_(py::reinterpret_borrow<py::object>(value)), what);
     if (py::hasattr(value, "__float__")) return to_json(py::float_(py::reinterpret_borrow<py::object>(value)), what);
-    throw InputError(fmt::format("{}: a {} is not a scene value (allowed: a number, a string, None, a list or a dict)",
-                                 what, py::type::of(value).attr("__name__").cast<std::string>()));
+    // A value of the wrong type is Python's TypeError (json.dumps says the same of such an object).
+    throw py::type_error(fmt::format("{}: {} is not a scene value (allowed: a number, a string, None, a list or a dict)",
+                                     what, a_type_name(value)));
 }
 
 py::object from_json(const json& value) {

@@ -127,12 +127,14 @@ py::dict energies(const Simulation& s) {
 void bind_run(py::module_& m) {
     m.def(
         "resolve",
-        [](py::handle source, const py::dict& fields, const py::dict& sets) {
-            return from_json(scene_to_json(resolve(source, fields, sets)));
+        [](py::handle source, const py::dict& keywords, const py::dict& sets, const std::string& sets_name) {
+            return from_json(scene_to_json(resolve(source, keywords, sets, sets_name)));
         },
-        py::arg("source"), py::arg("fields"), py::arg("sets"),
-        "the resolved scene document (a dict) of a scene file or dict, keyword fields and FIELD: VALUE sets");
-    m.def("scene_keywords", &keyword_table, "every scene keyword: its field, flag and help");
+        py::arg("source"), py::arg("keywords"), py::arg("sets"), py::arg("sets_name") = "fields",
+        "the resolved scene document (a dict) of a scene file or dict, scene keywords and FIELD: VALUE sets "
+        "(named sets_name in messages)");
+    m.def("scene_keywords", &keyword_table, "every scene keyword: its field, flag, type and help");
+    m.def("field_types", &field_types, "every scene field's type, by its path");
     m.def(
         "run",
         [](const py::dict& scene_doc) {

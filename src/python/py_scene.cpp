@@ -19,23 +19,29 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-std::string keyword_of(std::string_view flag) {
-    std::string k(flag.substr(2));  // "--vertex-radius" -> "vertex_radius"
-    std::replace(k.begin(), k.end(), '-', '_');
-    return k;
-}
-
 std::string keyword_list() {
     std::string list;
     for (const SceneField& f : scene_fields())
-        if (!f.flag.empty()) list += (list.empty() ? "" : ", ") + keyword_of(f.flag);
+        if (!f.flag.empty()) list += (list.empty() ? "" : ", ") + keyword_of_flag(f.flag);
     return list;
 }
 
 const SceneField* field_of_keyword(const std::string& keyword) {
     for (const SceneField& f : scene_fields())
-        if (!f.flag.empty() && keyword_of(f.flag) == keyword) return &f;
+        if (!f.flag.empty() && keyword_of_flag(f.flag) == keyword) return &f;
     return nullptr;
+}
+
+const char* type_name(FieldType t) {
+    switch (t) {
+        case FieldType::integer: return "integer";
+        case FieldType::number: return "number";
+        case FieldType::optional_number: return "optional_number";
+        case FieldType::seed: return "seed";
+        case FieldType::preset: return "preset";
+        case FieldType::choice: return "choice";
+    }
+    return "";
 }
 
 bool is_path(py::handle h) {
@@ -44,12 +50,19 @@ bool is_path(py::handle h) {
 
 }  // namespace
 
+std::string keyword_of_flag(std::string_view flag) {
+    std::string k(flag.substr(2));  // "--vertex-radius" -> "vertex_radius"
+    std::replace(k.begin(), k.end(), '-', '_');
+    return k;
+}
+
 std::string flag_of_keyword(const std::string& keyword) {
     const SceneField* f = field_of_keyword(keyword);
     return f ? std::string(f->flag) : std::string();
 }
 
-std::vector<SceneLayer> scene_layers(py::handle source, const py::dict& fields, const py::dict& sets) {
+std::vector<SceneLayer> scene_layers(py::handle source, const py::dict& keywords, const py::dict& sets,
+                                     const std::string& sets_name) {
     std::vector<SceneLayer> layers;
     if (is_path(source)) {
         layers.push_back(read_scene_file(py::str(py::module_::import("os").attr("fspath")(source)).cast<std::string>()));
@@ -57,41 +70,41 @@ std::vector<SceneLayer> scene_layers(py::handle source, const py::dict& fields, 
         json doc = to_json(source, "scene");
         layers.push_back(SceneLayer{std::move(doc), "the scene dict", {}});
     } else if (!source.is_none()) {
-        throw InputError(fmt::format("scene: a {} is not a scene (allowed: None, a scene file's path or a scene dict)",
-                                     py::type::of(source).attr("__name__").cast<std::string>()));
+        throw py::type_error(fmt::format("scene: {} is not a scene (allowed: None, a scene file's path or a scene dict)",
+                                         a_type_name(source)));
     }
-    // The keyword arguments and the sets are the command line's flags and --set, in the same words.
+    // The keywords and the sets are the command line's flags and --set, in the same words; messages
+    // name them as the caller wrote them: "(from sides=2)", "(from fields["ramp.length_m"])".
     SceneLayer args;
-    args.origin = "command line";
+    args.origin = "the keywords";
     args.doc = json::object();
-    for (const auto& [key, value] : fields) {
+    for (const auto& [key, value] : keywords) {
         const std::string keyword = key.cast<std::string>();
         const SceneField* f = field_of_keyword(keyword);
         if (f == nullptr)
-            throw InputError(fmt::format("{}=: not a scene keyword (allowed: {}; any field with set={{\"FIELD\": "
-                                         "VALUE}})",
-                                         keyword, keyword_list()));
-        if (value.is_none()) continue;  // run(sides=None) leaves the field as it is
-        node_at(args.doc, std::string(f->path)) = to_json(value, std::string(f->flag));
-        args.field_labels.emplace_back(std::string(f->path), std::string(f->flag));
+            throw py::type_error(fmt::format("unexpected keyword argument '{}' (allowed: {}; any field with "
+                                             "fields={{\"FIELD\": VALUE}})",
+                                             keyword, keyword_list()));
+        const std::string label = keyword + "=" + py::repr(value).cast<std::string>();  // "sides=2"
+        node_at(args.doc, std::string(f->path)) = to_json(value, label);
+        args.field_labels.emplace_back(std::string(f->path), label);
     }
     for (const auto& [key, value] : sets) {
-        const std::string field = key.cast<std::string>(), flag = "--set " + field;
-        sweep::check_scene_field(field, flag);
-        const auto by_flag = std::find_if(args.field_labels.begin(), args.field_labels.end(),
-                                          [&field](const auto& label) { return label.first == field; });
-        if (by_flag != args.field_labels.end())
-            throw InputError(fmt::format("--set {} and {} both set {} (allowed: one of them)", field, by_flag->second,
-                                         field));
-        node_at(args.doc, field) = to_json(value, flag);
-        args.field_labels.emplace_back(field, flag);
+        const std::string field = key.cast<std::string>(), label = fmt::format("{}[\"{}\"]", sets_name, field);
+        sweep::check_scene_field(field, label);
+        const auto by_keyword = std::find_if(args.field_labels.begin(), args.field_labels.end(),
+                                             [&field](const auto& l) { return l.first == field; });
+        if (by_keyword != args.field_labels.end())
+            throw InputError(fmt::format("{} and {} both set {} (allowed: one of them)", label, by_keyword->second, field));
+        node_at(args.doc, field) = to_json(value, label);
+        args.field_labels.emplace_back(field, label);
     }
     layers.push_back(std::move(args));
     return layers;
 }
 
-Scene resolve(py::handle source, const py::dict& fields, const py::dict& sets) {
-    return resolve_scene(scene_layers(source, fields, sets));
+Scene resolve(py::handle source, const py::dict& keywords, const py::dict& sets, const std::string& sets_name) {
+    return resolve_scene(scene_layers(source, keywords, sets, sets_name));
 }
 
 py::list keyword_table() {
@@ -99,12 +112,20 @@ py::list keyword_table() {
     for (const SceneField& f : scene_fields()) {
         if (f.flag.empty()) continue;
         py::dict row;
-        row["keyword"] = keyword_of(f.flag);
+        row["keyword"] = keyword_of_flag(f.flag);
         row["field"] = std::string(f.path);
         row["flag"] = std::string(f.flag);
+        row["type"] = type_name(f.type);
+        row["swept"] = f.sweep_axis > 0;  // sweep() takes a grid for it
         row["help"] = field_help(f);
         out.append(row);
     }
+    return out;
+}
+
+py::dict field_types() {
+    py::dict out;
+    for (const SceneField& f : scene_fields()) out[py::str(std::string(f.path))] = type_name(f.type);
     return out;
 }
 

@@ -1,10 +1,14 @@
 // Scenes from Python arguments, through the command line's field table, validation and messages: a
 // scene file or a scene document (dict) first, then keyword arguments named as the scene flags
-// (sides=8 for --sides, vertex_radius= for --vertex-radius), then FIELD=VALUE pairs as --set takes
-// them ({"fill.material.wall_friction": 0.05}). A bad value raises ValueError with the CLI's line.
+// (sides=8 for --sides, vertex_radius= for --vertex-radius), then FIELD: VALUE pairs as --set takes
+// them (fields={"fill.material.wall_friction": 0.05}). A bad value raises ValueError with the CLI's
+// line, naming the keyword as the caller wrote it ("(from sides=2)" where the CLI says "(from --sides)");
+// an argument of the wrong kind raises TypeError. None is JSON's null: the value "none" of an optional
+// field, refused by the others (the package checks types before they get here).
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -14,16 +18,26 @@
 
 namespace polyroll::python {
 
-// The layers over the defaults: `source` (None, a path, or a dict), `fields` (keyword -> value) and
-// `sets` (field path -> value).
-std::vector<SceneLayer> scene_layers(pybind11::handle source, const pybind11::dict& fields, const pybind11::dict& sets);
+// The layers over the defaults: `source` (None, a path, or a dict), `keywords` (keyword -> value) and
+// `sets` (field path -> value), which messages call `sets_name` (the argument the caller used:
+// "fields", or the deprecated "set").
+std::vector<SceneLayer> scene_layers(pybind11::handle source, const pybind11::dict& keywords, const pybind11::dict& sets,
+                                     const std::string& sets_name = "fields");
 
-Scene resolve(pybind11::handle source, const pybind11::dict& fields, const pybind11::dict& sets);
+Scene resolve(pybind11::handle source, const pybind11::dict& keywords, const pybind11::dict& sets,
+              const std::string& sets_name = "fields");
 
 // The scene flag a keyword names ("vertex_radius" -> "--vertex-radius"), or "" for none.
 std::string flag_of_keyword(const std::string& keyword);
 
-// Every scene keyword with its field and help: the module's scene_keywords().
+// The keyword of a scene flag ("--vertex-radius" -> "vertex_radius").
+std::string keyword_of_flag(std::string_view flag);
+
+// Every scene keyword with its field, flag, type, whether sweep() sweeps it, and help: the module's scene_keywords().
 pybind11::list keyword_table();
+
+// Every scene field's type ("integer", "number", "optional_number", "seed", "preset", "choice") by
+// its path: what the package checks a value's Python type against.
+pybind11::dict field_types();
 
 }  // namespace polyroll::python

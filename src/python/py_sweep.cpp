@@ -3,6 +3,7 @@
 // the same request resumes or extends the folder, and a Ctrl-C stops it after the runs in flight.
 #include "python/py_sweep.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -39,9 +40,16 @@ sweep::GridRequest request_of(py::handle base, const py::dict& axes, const py::d
         r.base = read_scene_file(path).doc;
         r.base_origin = path;
     }
+    // The swept keywords: the scene flags polyroll sweep takes a grid for.
+    const std::vector<const SceneField*> swept_fields = sweep::axis_fields();
+    std::string swept;
+    for (const SceneField* f : swept_fields) swept += (swept.empty() ? "" : ", ") + keyword_of_flag(f->flag);
     for (const auto& [key, text] : axes) {
         const std::string keyword = key.cast<std::string>(), flag = flag_of_keyword(keyword);
-        if (flag.empty()) throw InputError(fmt::format("{}=: not a scene keyword (see polyroll.scene_keywords())", keyword));
+        if (std::none_of(swept_fields.begin(), swept_fields.end(), [&flag](const SceneField* f) { return f->flag == flag; }))
+            throw py::type_error(fmt::format("unexpected keyword argument '{}' (allowed: the swept keywords {}; any "
+                                             "field with fields={{\"FIELD\": VALUES}})",
+                                             keyword, swept));
         r.axis_text[flag] = text.cast<std::string>();
     }
     for (const auto& [field, text] : sets) r.sets.push_back(field.cast<std::string>() + "=" + text.cast<std::string>());

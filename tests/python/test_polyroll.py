@@ -1,11 +1,15 @@
 """import polyroll: the same scene gives the same numbers as the command line; bad input raises
-ValueError with the command line's line; Ctrl-C stops a run, a 3D run and a sweep; Simulation is
-deterministic as run(); sweep() resumes and gives the command's table."""
+Python's errors (TypeError for an unknown keyword or a wrong type, ValueError with the command line's
+line for a value out of range) naming the keyword as written; Ctrl-C stops a run, a 3D run and a
+sweep; Simulation is deterministic as run(); sweep() resumes and gives the command's table."""
 import csv
+import inspect
 import os
+import pydoc
 import signal
 import threading
 import time
+import warnings
 
 import numpy as np
 import pytest
@@ -58,9 +62,9 @@ def test_same_numbers_as_the_command(model, cli, tmp_path):
 def test_scene_sources_layer_as_the_command(cli, tmp_path):
     scene_file = tmp_path / "scene.json"
     scene_file.write_text('{"shell": "octagon-small", "fill": {"ratio": 0.375}}\n')
-    from_file = polyroll.scene(scene_file, angle=12, set={"ramp.length_m": 1.5})
+    from_file = polyroll.scene(scene_file, angle=12, fields={"ramp.length_m": 1.5})
     from_dict = polyroll.scene({"shell": "octagon-small", "fill": {"ratio": 0.375}}, angle=12,
-                               set={"ramp.length_m": 1.5})
+                               fields={"ramp.length_m": 1.5})
     assert from_file == from_dict
     assert from_file["shell"]["sides"] == 8 and from_file["ramp"]["angle_deg"] == 12
     assert from_file["ramp"]["length_m"] == 1.5
@@ -69,34 +73,125 @@ def test_scene_sources_layer_as_the_command(cli, tmp_path):
     assert polyroll.scene({"shell": {"sides": np.int64(8)}}, angle=np.float64(12.5))["ramp"]["angle_deg"] == 12.5
 
 
-@pytest.mark.parametrize("fields, flags", [
-    (dict(sides=99), ["--sides", "99"]),
-    (dict(angle=95.0), ["--angle", "95"]),
-    (dict(material="gravel"), ["--material", "gravel"]),
-    (dict(set={"fill.material.wall_friction": -1}), ["--set", "fill.material.wall_friction=-1"]),
-    (dict(set={"shell.nonsense": 1}), ["--set", "shell.nonsense=1"]),
+@pytest.mark.parametrize("keywords, flags, flag_words, keyword_words", [
+    (dict(sides=99), ["--sides", "99"], "--sides", "sides=99"),
+    (dict(angle=95.0), ["--angle", "95"], "--angle", "angle=95.0"),
+    (dict(material="gravel"), ["--material", "gravel"], "--material", "material='gravel'"),
+    (dict(fields={"fill.material.wall_friction": -1}), ["--set", "fill.material.wall_friction=-1"],
+     "--set fill.material.wall_friction", 'fields["fill.material.wall_friction"]'),
+    (dict(fields={"shell.nonsense": 1}), ["--set", "shell.nonsense=1"], "--set shell.nonsense",
+     'fields["shell.nonsense"]'),
 ])
-def test_bad_input_raises_the_commands_message(fields, flags, cli):
+def test_bad_values_raise_the_commands_message_in_python_words(keywords, flags, flag_words, keyword_words, cli):
     p = cli("run", *flags, check=False)
     assert p.returncode == 2
     line = p.stderr.strip().splitlines()[0]
-    assert line.startswith("polyroll: ")
+    assert line.startswith("polyroll: ") and flag_words in line
     with pytest.raises(ValueError) as e:
-        polyroll.run(**fields)
-    assert str(e.value) == line[len("polyroll: "):]
+        polyroll.run(**keywords)
+    # The command's line, naming the argument as the caller wrote it instead of the flag.
+    assert str(e.value) == line[len("polyroll: "):].replace(flag_words, keyword_words)
+
+
+@pytest.mark.parametrize("call", [polyroll.scene, polyroll.run, polyroll.Simulation,
+                                  lambda **kw: polyroll.sweep("unused", **kw)])
+def test_an_unknown_keyword_is_a_type_error_naming_it(call):
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'sidez'; did you mean 'sides'\?") as e:
+        call(sidez=6)
+    assert "--" not in str(e.value).split("(")[0]
+
+
+def test_sweep_refuses_a_keyword_it_cannot_sweep():
+    with pytest.raises(TypeError, match=r"sweep\(\) got an unexpected keyword argument 'step_hz'.*swept keywords: .*angle"):
+        polyroll.sweep("unused", step_hz=[500, 1000])
+
+
+@pytest.mark.parametrize("keywords, written", [
+    (dict(angle="x"), "angle='x': a str where a number is expected"),
+    (dict(angle=True), "angle=True: a bool where a number is expected"),
+    (dict(sides="6"), "sides='6': a str where a whole number is expected"),
+    (dict(polygon=3), "polygon=3: an int where a preset name (str) is expected"),
+    (dict(fields={"ramp.length_m": "x"}), 'fields["ramp.length_m"] = \'x\': a str where a number is expected'),
+    (dict(fields=[("ramp.length_m", 1.5)]), "fields= takes a dict"),
+])
+def test_a_wrong_type_is_a_type_error_naming_the_keyword(keywords, written):
+    for call in (polyroll.scene, polyroll.run):
+        with pytest.raises(TypeError) as e:
+            call(**keywords)
+        assert written in str(e.value) and "--" not in str(e.value)
+
+
+def test_a_value_out_of_range_is_a_value_error_naming_the_keyword():
+    with pytest.raises(ValueError) as e:
+        polyroll.run(sides=2)
+    assert str(e.value) == "shell.sides = 2 (from sides=2) is out of range (allowed: 3 to 64)"
+    with pytest.raises(ValueError, match=r"\(from sides=6\.5\) must be a whole number"):
+        polyroll.run(sides=6.5)
+
+
+def test_none_is_the_scenes_null_refused_where_a_field_has_none():
+    # None is refused where a field takes no null: it never silently keeps the default.
+    with pytest.raises(TypeError, match=r"fill=None: None where a number is expected .*leave the argument out"):
+        polyroll.run(fill=None)
+    with pytest.raises(TypeError, match=r'fields\["shell.sides"\] = None'):
+        polyroll.scene(fields={"shell.sides": None})
+    # An optional field's None is its documented null (the 3D box held in its plane).
+    wide = polyroll.scene(channel_width=0.2)
+    assert wide["dem3d"]["channel_width_m"] == 0.2
+    assert polyroll.scene(wide, channel_width=None)["dem3d"]["channel_width_m"] is None
+    assert polyroll.scene(wide, fields={"dem3d.channel_width_m": None})["dem3d"]["channel_width_m"] is None
+
+
+def test_set_is_the_deprecated_name_of_fields():
+    new = polyroll.scene(fields={"ramp.length_m": 1.5})
+    with pytest.warns(DeprecationWarning, match=r"scene\(set=...\) is deprecated.*use fields=") as w:
+        old = polyroll.scene(set={"ramp.length_m": 1.5})
+    assert old == new and w[0].filename == __file__  # the warning points at the caller's line
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match=r'from set\["ramp.length_m"\]'):
+        polyroll.run(set={"ramp.length_m": -1})
+    with pytest.warns(DeprecationWarning), pytest.raises(TypeError, match="both fields= and set="):
+        polyroll.Simulation(fields={"ramp.length_m": 1.5}, set={"ramp.length_m": 1.5})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # fields= itself warns of nothing
+        polyroll.scene(fields={"ramp.length_m": 1.5})
+    for call in (polyroll.scene, polyroll.run, polyroll.Simulation, polyroll.sweep):
+        assert "set" not in inspect.signature(call).parameters  # no builtin shadowed
+
+
+def public_members():
+    """Every public name of the package and of its public classes, as (qualified name, object)."""
+    for name in polyroll.__all__:
+        obj = getattr(polyroll, name)
+        yield name, obj
+        if inspect.isclass(obj):
+            for member, value in vars(obj).items():
+                if not member.startswith("_") or member == "__init__":
+                    yield f"{name}.{member}", value
+
+
+def test_every_public_name_has_a_docstring_that_help_shows():
+    assert polyroll.__doc__ and "TypeError" in polyroll.__doc__ and "fields=" in polyroll.__doc__
+    shown = pydoc.render_doc(polyroll, renderer=pydoc.plaintext)
+    for name, obj in public_members():
+        if isinstance(obj, str):  # version: a value, described in the module's docstring
+            assert name in polyroll.__doc__, name
+            continue
+        doc = inspect.getdoc(obj)
+        assert doc and doc.strip(), f"{name} has no docstring"
+        assert doc.splitlines()[0] in shown, f"help(polyroll) does not show {name}'s docstring"
 
 
 def test_bad_python_arguments_raise():
-    with pytest.raises(ValueError, match="sidez=: not a scene keyword"):
-        polyroll.scene(sidez=8)
-    with pytest.raises(ValueError, match="not a scene"):
+    with pytest.raises(TypeError, match="an int is not a scene"):
         polyroll.scene(42)
-    with pytest.raises(ValueError, match="a object is not a scene value"):
-        polyroll.scene(angle=object())
+    with pytest.raises(TypeError, match="an object is not a scene value"):
+        polyroll.scene({"ramp": {"angle_deg": object()}})
     with pytest.raises(ValueError, match=r"step\(n=0\)"):
         polyroll.Simulation(fill=0.0, time_limit=0.1).step(0)
     with pytest.raises(ValueError, match="jobs=0"):
         polyroll.sweep("unused", jobs=0)
+    with pytest.raises(TypeError, match="angle=<object.*an object where a grid value is expected"):
+        polyroll.sweep("unused", angle=object())
 
 
 def test_save_refuses_a_folder_with_files(tmp_path):
@@ -144,7 +239,7 @@ def interrupted(call, after_s):
 
 
 # Minutes of work if nothing stopped it: the octagon rolling down a 100 m track.
-LONG = dict(OCTAGON, angle=20, time_limit=60, set={"ramp.length_m": 100})
+LONG = dict(OCTAGON, angle=20, time_limit=60, fields={"ramp.length_m": 100})
 
 
 def yade_children():
@@ -178,7 +273,7 @@ def test_ctrl_c_stops_the_grains_settling():
     # reaches: a stop not heard while it settles would let the call run for minutes.
     start = time.monotonic()
     assert interrupted(lambda: polyroll.Simulation(polygon="hexagon-large", fill=1.0, material="bb", model="grains",
-                                                   set={"run.settle_time_s": 60, "run.rest_speed_m_s": 1e-6}), 2.0)
+                                                   fields={"run.settle_time_s": 60, "run.rest_speed_m_s": 1e-6}), 2.0)
     assert time.monotonic() - start < 15
 
 
