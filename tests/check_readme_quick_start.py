@@ -48,7 +48,7 @@ def quick_start_commands(readme):
         if line.startswith("```"):
             in_block = not in_block
             continue
-        if in_block and (line.startswith("build/") or line.startswith("PYTHONPATH=")):
+        if in_block and line.startswith(("build/", "PYTHONPATH=", INSTALL, "python3 ", "jupyter-execute ")):
             commands.append(re.split(r"\s+#", line, 1)[0].strip())
         elif not in_block:
             commands += [c.strip() for c in re.findall(r"`(build/[^`]+)`", line)]
@@ -56,19 +56,44 @@ def quick_start_commands(readme):
 
 
 # The Python lines: run with this test's Python (Debian's, which has numpy: the README says so), the
-# module from the build folder. The notebook's line is executed by its own test
-# (tests/python/execute_notebook.py), with the notebook's short version.
+# module the README's `cmake --install build` installed, into a DESTDIR of this test's own (never the
+# machine's /usr/local), or the build folder's for a line that sets PYTHONPATH itself. The notebook's
+# line is executed by its own test (tests/python/execute_notebook.py), with the notebook's short version.
 PYTHON_PREFIX = "PYTHONPATH="
+INSTALL = "cmake --install build"
 
 
-def python_argv(command, work):
+def install(work):
+    """Runs the README's install into work/installed (DESTDIR); the folder it put the package in."""
+    destdir = os.path.join(work, "installed")
+    cmake = shutil.which("cmake") or "cmake"
+    r = subprocess.run([cmake, "--install", os.path.join(work, "build")], cwd=work,
+                       env=dict(os.environ, DESTDIR=destdir), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       text=True, timeout=600)
+    print(f"$ DESTDIR={destdir} {INSTALL}\n  exit {r.returncode}")
+    if r.returncode != 0:
+        raise SystemExit(f"{INSTALL}: exit {r.returncode}\n{r.stdout[-2000:]}")
+    for folder, _, files in os.walk(destdir):
+        if os.path.basename(folder) == "polyroll" and "__init__.py" in files:
+            return os.path.dirname(folder)
+    raise SystemExit(f"{INSTALL} installed no polyroll package under {destdir}")
+
+
+def python_argv(command, work, installed):
     """argv and environment of a README Python line, or None for the notebook's."""
-    argv = shlex.split(command)[1:]  # after PYTHONPATH=...: the module is this build's
+    argv = shlex.split(command)
+    if command.startswith(PYTHON_PREFIX):
+        argv, path = argv[1:], os.path.join(work, "build", "python")  # the module is this build's
+    elif installed is None:
+        raise SystemExit(f"{command}: a Python line without PYTHONPATH before the README's `{INSTALL}`")
+    else:
+        path = installed
     if argv[0] == "jupyter-execute":
         return None
     if argv[0] != "python3":
         raise SystemExit(f"a Python line this test does not know how to run: {command}")
-    env = dict(os.environ, PYTHONPATH=os.path.join(work, "build", "python"))
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["PYTHONPATH"] = path
     return [sys.executable] + argv[1:], env
 
 
@@ -92,12 +117,19 @@ def main():
     failures = []
     try:
         os.symlink(os.path.abspath(build_dir), os.path.join(work, "build"))
+        installed = None
         for command in commands:
-            if command.startswith(PYTHON_PREFIX):
-                python = python_argv(command, work)
+            if command == INSTALL:
                 if not with_python:
                     print(f"$ {command}\n  not run: this build has no Python module")
                     continue
+                installed = install(work)
+                continue
+            if command.startswith((PYTHON_PREFIX, "python3 ", "jupyter-execute ")):
+                if not with_python:
+                    print(f"$ {command}\n  not run: this build has no Python module")
+                    continue
+                python = python_argv(command, work, installed)
                 if python is None:
                     print(f"$ {command}\n  executed by the notebook's own test")
                     continue
