@@ -48,7 +48,7 @@ def quick_start_commands(readme):
         if line.startswith("```"):
             in_block = not in_block
             continue
-        if in_block and line.startswith(("build/", "PYTHONPATH=", INSTALL, "python3 ", "jupyter-execute ")):
+        if in_block and line.startswith(("build/", INSTALL) + PYTHON_LINES):
             commands.append(re.split(r"\s+#", line, 1)[0].strip())
         elif not in_block:
             commands += [c.strip() for c in re.findall(r"`(build/[^`]+)`", line)]
@@ -61,6 +61,8 @@ def quick_start_commands(readme):
 # line is executed by its own test (tests/python/execute_notebook.py), with the notebook's short version.
 PYTHON_PREFIX = "PYTHONPATH="
 INSTALL = "cmake --install build"
+# How the README's Python lines start; the notebook's sets the variable that quiets the kernel's debugger.
+PYTHON_LINES = (PYTHON_PREFIX, "python3 ", "jupyter-execute ", "PYDEVD_DISABLE_FILE_VALIDATION=1 jupyter-execute ")
 
 
 def install(work):
@@ -82,14 +84,14 @@ def install(work):
 def python_argv(command, work, installed):
     """argv and environment of a README Python line, or None for the notebook's."""
     argv = shlex.split(command)
+    if "jupyter-execute" in argv[:2]:
+        return None
     if command.startswith(PYTHON_PREFIX):
         argv, path = argv[1:], os.path.join(work, "build", "python")  # the module is this build's
     elif installed is None:
         raise SystemExit(f"{command}: a Python line without PYTHONPATH before the README's `{INSTALL}`")
     else:
         path = installed
-    if argv[0] == "jupyter-execute":
-        return None
     if argv[0] != "python3":
         raise SystemExit(f"a Python line this test does not know how to run: {command}")
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
@@ -125,7 +127,7 @@ def main():
                     continue
                 installed = install(work)
                 continue
-            if command.startswith((PYTHON_PREFIX, "python3 ", "jupyter-execute ")):
+            if command.startswith(PYTHON_LINES):
                 if not with_python:
                     print(f"$ {command}\n  not run: this build has no Python module")
                     continue

@@ -102,6 +102,29 @@ TEST_CASE("slurm: sweep --plan-only --slurm-tasks submits the array, then the me
     fs::remove_all(bin);
 }
 
+TEST_CASE("slurm: sbatch's failure is printed as its own lines, then how to submit by hand", "[slurm][sweep][cli]") {
+    const fs::path out = slurm_scratch("refused"), bin = slurm_scratch("refused-bin");
+    fs::create_directories(bin);
+    // sbatch as a cluster refuses a job: two lines on stderr, exit 1.
+    std::ofstream(bin / "sbatch") << "#!/bin/sh\n"
+                                     "echo 'sbatch: error: Batch job submission failed: Invalid account' >&2\n"
+                                     "echo 'sbatch: error: see sacctmgr' >&2\n"
+                                     "exit 1\n";
+    fs::permissions(bin / "sbatch", fs::perms::owner_all);
+    const auto r = run_command("PATH=" + bin.string() + ":$PATH " + kPolyrollExe + " sweep " + kSlurmGrid + " --out " +
+                               out.string() + " --plan-only --slurm-tasks 2");
+    INFO(r.out);
+    CHECK(r.exit_code != 0);
+    CHECK_THAT(r.out, Catch::Contains("the job array was not submitted: sbatch (exit 1) said:\n"
+                                      "    sbatch: error: Batch job submission failed: Invalid account\n"
+                                      "    sbatch: error: see sacctmgr\n"
+                                      "  the scripts are written; submit them with:\n"
+                                      "    jobid=$(sbatch --parsable "));
+    CHECK_THAT(r.out, !Catch::Contains("\\x0A"));
+    fs::remove_all(out);
+    fs::remove_all(bin);
+}
+
 TEST_CASE("slurm: without sbatch, or with --slurm-no-submit, the two sbatch commands are printed", "[slurm][sweep][cli]") {
     const fs::path out = slurm_scratch("nosbatch"), bin = slurm_scratch("nosbatch-bin");
     const auto r = run_command("PATH=/nonexistent " + kPolyrollExe + " sweep " + kSlurmGrid + " --out " + out.string() +

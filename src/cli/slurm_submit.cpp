@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <string_view>
 
 #include <fmt/core.h>
 
@@ -63,7 +64,20 @@ std::string this_program() {
 
 namespace {
 
-// `sbatch --parsable ARGS...`: the job id it printed ("123" or "123;cluster"), or "" with `why` set.
+// What sbatch said, as it said it: one indented line per line (each made printable on its own), so
+// a multi-line error reads as lines and never runs into the message's next sentence.
+std::string indented_lines(std::string_view said) {
+    std::string out;
+    for (std::size_t start = 0; start <= said.size();) {
+        const std::size_t end = std::min(said.find('\n', start), said.size());
+        out += "\n    " + printable_line(said.substr(start, end - start));
+        start = end + 1;
+    }
+    return out;
+}
+
+// `sbatch --parsable ARGS...`: the job id it printed ("123" or "123;cluster"), or "" with `why` set
+// (how sbatch ended, then what it said on lines of their own).
 std::string submit(const std::string& sbatch, const std::vector<std::string>& args, std::string& why) {
     std::vector<std::string> argv = {sbatch, "--parsable"};
     argv.insert(argv.end(), args.begin(), args.end());
@@ -83,7 +97,7 @@ std::string submit(const std::string& sbatch, const std::vector<std::string>& ar
         return id;
     }
     why = fmt::format("sbatch ({}){}", e.how_it_ended(),
-                      said.empty() ? (numeric ? "" : ", no job id printed") : ": " + printable_line(said));
+                      said.empty() ? (numeric ? "" : ", no job id printed") : " said:" + indented_lines(said));
     return {};
 }
 
@@ -114,13 +128,13 @@ int write_and_submit_slurm(const sweep::SlurmJob& job, const SlurmFlags& flags, 
     std::string why;
     const std::string array_id = submit(sbatch, {array.string()}, why);
     if (array_id.empty()) {
-        fmt::print(stderr, "{}: the job array was not submitted: {}; the scripts are written, submit them with:\n{}",
+        fmt::print(stderr, "{}: the job array was not submitted: {}\n  the scripts are written; submit them with:\n{}",
                    who, why, by_hand);
         return kExitFailure;
     }
     const std::string finish_id = submit(sbatch, {"--dependency=afterany:" + array_id, finish.string()}, why);
     if (finish_id.empty()) {
-        fmt::print(stderr, "{}: job array {} submitted, but not the {} job: {}; submit it with:\n"
+        fmt::print(stderr, "{}: job array {} submitted, but not the {} job: {}\n  submit it with:\n"
                    "    sbatch --dependency=afterany:{} {}\n",
                    who, array_id, job.finish_what, why, array_id, finish_q);
         return kExitFailure;
