@@ -43,6 +43,7 @@ std::string read_text(const fs::path& path) {
 struct CalibrateArgs {
     std::string params, observations, half, out = "runs/calibrate", algorithm = "sbplx", shard;
     std::vector<std::string> starts;  // FIELD=VALUE
+    std::vector<std::string> only;    // observation ids (after --half); empty: every observation
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
     bool force = false, quiet = false, plan_only = false;
     ObservationSceneFlags scene;
@@ -53,6 +54,10 @@ std::string command_text(const CalibrateArgs& a) {
     std::string c = "polyroll calibrate --params " + a.params;
     if (!a.observations.empty()) c += " --observations " + a.observations;
     if (!a.half.empty()) c += " --half " + a.half;
+    if (!a.only.empty()) {
+        c += " --only ";
+        for (std::size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
+    }
     c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
     for (const std::string& s : a.starts) c += " --start " + s;
     if (!a.shard.empty()) c += " --shard " + a.shard;
@@ -152,6 +157,7 @@ sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
     sweep::CalibrationSetup setup;
     setup.file = sweep::read_observations(a.observations);
     if (!a.half.empty()) setup.file = sweep::half_of(setup.file, a.half);
+    if (!a.only.empty()) setup.file = sweep::only_observations(setup.file, a.only, "--only");
     setup.seeds = a.seeds;
     setup.overrides = observation_overrides(a.scene);
     setup.algorithm = a.algorithm;
@@ -358,6 +364,9 @@ Action add_calibrate_command(Command& app) {
     sub.add_option("--observations", a->observations, "observations file (JSON; default: the bundled experiment.json)");
     sub.add_option("--half", a->half, "fit to the observations of this half of the file only (its \"halves\", "
                                       "e.g. fit in assets/reference-3d.json)");
+    sub.add_option("--only", a->only, "fit to the observations with these ids only (repeat the flag or give a list "
+                                      "a,b; with --half, ids of that half)")
+        .delimiter(',');
     sub.add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
         .check(Range(1, 1000));
     sub.add_option("--max-evals", a->max_evals,
