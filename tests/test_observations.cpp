@@ -156,3 +156,17 @@ TEST_CASE("observations: named halves select their observations, and bad halves 
     empty["halves"]["fit"] = json::array();
     CHECK_THAT(error_of(empty), Catch::Contains("halves.fit") && Catch::Contains("non-empty"));
 }
+
+TEST_CASE("observations: the bundled 3D reference reads, its halves cover it and plan", "[observations]") {
+    const ObservationFile f = read_observations(POLYROLL_SOURCE_DIR "/assets/reference-3d.json");
+    REQUIRE(f.halves.size() == 2);
+    std::size_t in_halves = 0;
+    for (const auto& [name, ids] : f.halves) in_halves += ids.size();
+    CHECK(in_halves == f.observations.size());
+    for (const Observation& ob : f.observations) {
+        INFO(ob.id);
+        CHECK(ob.source.find("dem3d") != std::string::npos);  // each entry names the runs that made it
+        if (ob.angle_range_deg) CHECK(ob.angle_tolerance_deg == 0.5);
+    }
+    CHECK_FALSE(make_validation_plan(half_of(f, "fit"), 2, {}).plan.runs.empty());
+}

@@ -3,6 +3,10 @@
 `polyroll validate --observations assets/reference-3d.json [--half H] --out DIR`:
 
     python3 docs/studies/closure-from-3d/score_against_3d.py DIR [DIR ...]
+    python3 docs/studies/closure-from-3d/score_against_3d.py --calibration CAL_DIR REFERENCE.json
+
+The second form reads a `polyroll calibrate` folder's results.csv and gives the same table for each
+candidate value it ran (the thresholds read from its runs by the same rule), against REFERENCE.json.
 
 For each scene: the 3D first-impact threshold (the last angle where both seeds stop at the first
 impact) and the model's, the 3D sustained-rolling threshold (the first angle where both roll to the
@@ -45,7 +49,71 @@ def summarise(folder):
     return scenes
 
 
+def scene_key(shell, fill, material, ramp):
+    return (shell, float(fill), material, ramp)
+
+
+def reference_scenes(path):
+    """{scene key: (id, 3D first-impact threshold, 3D rolling threshold)} of a reference file."""
+    with open(path) as f:
+        doc = json.load(f)
+    out = {}
+    for ob in doc['observations']:
+        if 'angle_range_deg' not in ob:
+            continue
+        sc = ob['scene']
+        key = scene_key(sc['shell']['preset'], sc['fill']['ratio'], sc['fill'].get('material', 'bb'),
+                        sc.get('ramp', {}).get('preset', 'air-track'))
+        sid, t = ob['id'].rsplit('-first-impact', 1)[0].rsplit('-rolls', 1)[0], ob['angle_range_deg']
+        e = out.setdefault(key, [sid, None, None])
+        if ob['id'].endswith('-first-impact'):
+            e[1] = t[1]
+        else:
+            e[2] = t[0]
+    return out
+
+
+def calibration_tables(folder, reference):
+    import csv
+    import collections
+    ref = reference_scenes(reference)
+    with open(os.path.join(folder, 'results.csv')) as f:
+        rows = list(csv.DictReader(f))
+    params = [c for c in rows[0] if c.startswith(('closure.', 'fill.material.'))]
+    runs = collections.defaultdict(lambda: collections.defaultdict(list))
+    for r in rows:
+        if r['status'] != 'ok':
+            continue
+        value = tuple(r[p] for p in params)
+        key = scene_key(r['polygon'], r['fill_ratio'], r['material'], r['ramp'])
+        runs[(value, key)][float(r['angle_deg'])].append(r['behaviour'])
+    for value in sorted({v for v, _ in runs}):
+        print('## %s = %s\n' % (', '.join(params), ', '.join(value)))
+        print('| scene | first impact 3D | model | diff | rolling 3D | model | diff |')
+        print('| --- | --- | --- | --- | --- | --- | --- |')
+        d1, d2 = [], []
+        for key, (sid, t1_3d, t2_3d) in ref.items():
+            at = runs.get((value, key))
+            if not at:
+                continue
+            most = lambda a, b: 2 * sum(1 for x in at[a] if x == b) > len(at[a])
+            angles = sorted(at)
+            fi = [a for a in angles if most(a, 'stopped_at_first_impact')]
+            roll = [a for a in angles if most(a, 'rolled_to_end')]
+            t1 = max(fi) if fi else angles[0] - 0.5
+            t2 = min(roll) if roll else angles[-1] + 0.5
+            d1.append(abs(t1 - t1_3d))
+            d2.append(abs(t2 - t2_3d))
+            print('| %s | %g | %g | %+g | %g | %g | %+g |' % (sid, t1_3d, t1, t1 - t1_3d, t2_3d, t2, t2 - t2_3d))
+        if d1:
+            print('\nfirst impact: mean |diff| %.2f deg, worst %.2f; sustained rolling: mean %.2f, worst %.2f '
+                  '(%d scenes)\n' % (sum(d1) / len(d1), max(d1), sum(d2) / len(d2), max(d2), len(d1)))
+
+
 def main(argv):
+    if len(argv) >= 2 and argv[1] == '--calibration':
+        calibration_tables(argv[2], argv[3])
+        return 0
     if len(argv) < 2:
         sys.stderr.write(__doc__)
         return 2
