@@ -503,7 +503,7 @@ def release(c, sc):
 class Tracker:
     """Shell pose (unwrapped angle), energies and grains inside, read from the scene at each row.
 
-    A row runs at step_hz (1 kHz) and was 40% of a run's time when it walked every grain in Python
+    A row runs at step_hz (1 kHz) and was a third of a run's time when it walked every grain in Python
     (docs/studies/dem3d-cost.md); it now asks Yade's C++ for the kinetic energy, takes the grains'
     first moments from their positions (the potential energy on a straight track is linear in them),
     and counts the grains inside every INSIDE_EVERY_ROWS rows and on the last row."""
