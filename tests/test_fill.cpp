@@ -230,7 +230,7 @@ TEST_CASE("the closure scales the discs' friction and restitution in the 2D engi
         CHECK(c->GetFriction() == Approx(0.25 * s.fill.material.wall_friction));
     }
     CHECK(walls > 0);
-    // The 3D reference and the reduced models do not read it: only the Box2D world is built from it.
+    // Without a closure the contacts take the material's values unchanged (a factor of 1, no rounding).
     CHECK(disc_friction(none) == none.fill.material.friction);
     CHECK(disc_wall_friction(none) == none.fill.material.wall_friction);
     CHECK(disc_restitution(none) == none.fill.material.restitution);

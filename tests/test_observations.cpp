@@ -139,7 +139,12 @@ TEST_CASE("observations: named halves select their observations, and bad halves 
     REQUIRE(fit.observations.size() == 2);
     CHECK(fit.observations[0].id == "rolls");
     CHECK(fit.observations[1].id == "grid");
-    CHECK_FALSE(fit.doc.contains("halves"));  // the folder's copy holds what was scored
+    // The folder's copy holds what was scored, and reads back: its halves name only the ids kept.
+    CHECK(fit.doc["halves"] == json{{"fit", json{"rolls", "grid"}}});
+    CHECK(parse_observations(fit.doc, "copy.json").observations.size() == 2);
+    const ObservationFile one = only_observations(f, {"band"}, "--only");
+    CHECK(one.doc["halves"] == json{{"held_back", json{"band"}}});
+    CHECK(parse_observations(one.doc, "copy.json").halves.size() == 1);
     CHECK(half_of(f, "held_back").observations.front().id == "band");
     const std::string unknown = polyroll::test::input_error_of([&] { half_of(f, "test"); });
     CHECK_THAT(unknown, Catch::Contains("--half test") && Catch::Contains("fit, held_back"));

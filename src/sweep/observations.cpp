@@ -360,6 +360,16 @@ ObservationFile only_observations(const ObservationFile& file, const std::vector
         out.observations.push_back(file.observations[i]);
         out.doc["observations"].push_back(file.doc["observations"][i]);
     }
+    // The halves keep the ids kept, so that the cut document (the folder's copy) reads back as it is.
+    out.doc.erase("halves");
+    for (const auto& [name, half] : file.halves) {
+        std::vector<std::string> kept;
+        for (const std::string& id : half)
+            if (std::find(ids.begin(), ids.end(), id) != ids.end()) kept.push_back(id);
+        if (kept.empty()) continue;
+        out.doc["halves"][name] = kept;
+        out.halves.emplace_back(name, std::move(kept));
+    }
     return out;
 }
 
@@ -367,10 +377,7 @@ ObservationFile half_of(const ObservationFile& file, const std::string& name) {
     std::vector<std::string> names;
     for (const auto& [n, ids] : file.halves) {
         if (n == name) {
-            ObservationFile out = only_observations(file, ids, "--half " + name);
-            out.halves.clear();
-            out.doc.erase("halves");
-            return out;
+            return only_observations(file, ids, "--half " + name);
         }
         names.push_back(n);
     }
