@@ -12,6 +12,7 @@
 #include "sim/assets.h"
 #include "sim/grains/bare_engine.h"
 #include "sim/scene/scene_json.h"
+#include "sim/scene/scene_names.h"
 #include "sim/scene/shell_label.h"
 #include "sim/run_cost.h"
 
@@ -32,12 +33,12 @@ constexpr ScalingScene kScenes[] = {
     {"hexagon-large", 0.25}, {"hexagon-large", 0.5}, {"hexagon-large", 0.75},
 };
 
-Scene scaling_scene(const ScalingScene& row, const std::string& fidelity) {
+Scene scaling_scene(const ScalingScene& row, const std::string& fidelity, EngineFrame frame) {
     nlohmann::ordered_json doc = {
         {"shell", {{"preset", row.shell}}},
         {"fill", {{"ratio", row.fill_ratio}, {"material", "bb"}}},
         {"ramp", {{"preset", "air-track"}, {"angle_deg", 20.0}}},
-        {"fidelity", {{"preset", fidelity}}},
+        {"fidelity", {{"preset", fidelity}, {"frame", to_string(frame)}}},
     };
     return resolve_scene({SceneLayer{doc, "polyroll bench --scaling", {}}});
 }
@@ -69,42 +70,53 @@ PowerLaw fit_power_law(const std::vector<Row>& rows) {
 
 void bench_scaling(const std::string& fidelity, double sim_s, int repeats) {
     fmt::print("\ngrain engine against grains: BBs on the air track at 20 deg, {} fidelity, {:g} s after the release "
-               "stepped bare, best of {}; one core\n",
+               "stepped bare, best of {}; one core; each scene stepped in the ramp's frame and in the pile's "
+               "(fidelity.frame)\n",
                fidelity, sim_s, repeats);
-    fmt::print("{:<34} {:>7} {:>10} {:>12} {:>10} {:>12} {:>14} {:>10}\n", "scene", "grains", "ms_step",
-               "us_grain_step", "x_first", "x_real_time", "contacts/grain", "touching");
-    std::vector<Row> rows;
+    fmt::print("{:<34} {:>7} {:>6} {:>10} {:>12} {:>10} {:>12} {:>14} {:>10} {:>9}\n", "scene", "grains", "frame",
+               "ms_step", "us_grain_step", "x_first", "x_real_time", "contacts/grain", "touching", "x_faster");
+    const Scene defaults = resolve_scene({});
+    std::vector<Row> rows;  // in the frame the defaults step in, for the power law
+    std::vector<Row> first_of_frame;
     for (const ScalingScene& spec : kScenes) {
-        Row row;
-        row.scene = scaling_scene(spec, fidelity);
-        const long steps = std::lround(sim_s * row.scene.fidelity.step_hz);
-        for (int rep = 0; rep < repeats; ++rep) {
-            const EngineLoad load = measure_engine_load(row.scene, steps);
-            if (rep == 0 || load.wall_s < row.load.wall_s) row.load = load;
+        double ramp_s_per_step = 0.0;
+        for (EngineFrame frame : {EngineFrame::ramp, EngineFrame::pile}) {
+            Row row;
+            row.scene = scaling_scene(spec, fidelity, frame);
+            const long steps = std::lround(sim_s * row.scene.fidelity.step_hz);
+            for (int rep = 0; rep < repeats; ++rep) {
+                const EngineLoad load = measure_engine_load(row.scene, steps);
+                if (rep == 0 || load.wall_s < row.load.wall_s) row.load = load;
+            }
+            // Per engine step, as the budget counts them.
+            row.s_per_step = row.load.wall_s / static_cast<double>(steps * row.scene.fidelity.substeps);
+            const double us_per_grain_step = 1e6 * row.s_per_step / std::max(1, row.load.grains);
+            const std::size_t f = static_cast<std::size_t>(frame);
+            if (first_of_frame.size() <= f) first_of_frame.push_back(row);
+            const Row& first = first_of_frame[f];
+            const double first_us = 1e6 * first.s_per_step / std::max(1, first.load.grains);
+            if (frame == EngineFrame::ramp) ramp_s_per_step = row.s_per_step;
+            const std::string faster =
+                frame == EngineFrame::ramp ? "" : fmt::format("{:.2f}", ramp_s_per_step / row.s_per_step);
+            fmt::print("{:<34} {:>7} {:>6} {:>10.3f} {:>12.2f} {:>10.2f} {:>12.3f} {:>14.1f} {:>10.1f} {:>9}\n",
+                       fmt::format("{}, r = {:g}", shell_label(row.scene), spec.fill_ratio), row.load.grains,
+                       to_string(frame), 1e3 * row.s_per_step, us_per_grain_step, us_per_grain_step / first_us,
+                       static_cast<double>(steps) / row.scene.fidelity.step_hz / row.load.wall_s,
+                       row.load.contacts_per_grain, row.load.touching_per_grain, faster);
+            std::fflush(stdout);
+            if (frame == defaults.fidelity.frame) rows.push_back(row);
         }
-        // Per engine step, as the budget counts them.
-        row.s_per_step = row.load.wall_s / static_cast<double>(steps * row.scene.fidelity.substeps);
-        const double us_per_grain_step = 1e6 * row.s_per_step / std::max(1, row.load.grains);
-        const double first = rows.empty() ? us_per_grain_step
-                                          : 1e6 * rows.front().s_per_step / std::max(1, rows.front().load.grains);
-        fmt::print("{:<34} {:>7} {:>10.3f} {:>12.2f} {:>10.2f} {:>12.3f} {:>14.1f} {:>10.1f}\n",
-                   fmt::format("{}, r = {:g}", shell_label(row.scene), spec.fill_ratio), row.load.grains,
-                   1e3 * row.s_per_step, us_per_grain_step, us_per_grain_step / first,
-                   static_cast<double>(steps) / row.scene.fidelity.step_hz / row.load.wall_s,
-                   row.load.contacts_per_grain, row.load.touching_per_grain);
-        std::fflush(stdout);
-        rows.push_back(row);
     }
     const PowerLaw fit = fit_power_law(rows);
     const RunCostFigures& model = run_cost_figures();
-    fmt::print("fitted: cost per step = {:.3g} s x (grains + 1)^{:.2f}; the cost model every estimate uses "
+    fmt::print("fitted, in the defaults' frame ({}): cost per step = {:.3g} s x (grains + 1)^{:.2f}; the cost model every estimate uses "
                "(assets/run-cost.json: engine_step_s, engine_exponent, at {:g} iterations) says {:.3g} s x "
                "(grains + 1)^{:.2f}\n",
-               fit.s_per_grain_step, fit.exponent, model.engine_reference_iterations, model.engine_step_s,
+               to_string(defaults.fidelity.frame), fit.s_per_grain_step, fit.exponent, model.engine_reference_iterations, model.engine_step_s,
                model.engine_exponent);
     fmt::print("us_grain_step: engine time per disc and step; x_first: that against the first row; contacts/grain: "
                "Box2D's contacts (pairs of fixtures whose boxes, enlarged by 0.1 engine units and four steps' travel, "
-               "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch.\n");
+               "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch; x_faster: the ramp's frame's time a step over the pile's.\n");
 }
 
 }  // namespace polyroll::cli

@@ -5,6 +5,7 @@
 
 #include "sim/grains/contact_values.h"
 #include "sim/grains/lid_friction.h"
+#include "sim/grains/moving_frame.h"
 #include "sim/geometry/ramp_profile.h"
 #include "sim/grains/world_parts.h"
 
@@ -32,7 +33,7 @@ void SimWorld::step() {
     const float dt = static_cast<float>(engine_step_s);
     for (int i = 0; i < scene.fidelity.substeps; ++i) {
         for (const ForceHook& hook : force_hooks) hook(*this, engine_step_s);
-        world->Step(dt, scene.fidelity.velocity_iterations, scene.fidelity.position_iterations);
+        step_in_frame(*this, dt, frame_velocity_units(*this));
     }
 }
 

@@ -50,12 +50,13 @@ struct SimWorld {
 
     std::unique_ptr<ContactMaterials> materials;  // declared before the world: outlives it
     std::unique_ptr<b2World> world;
-    b2Body* ramp = nullptr;
+    b2Body* ramp = nullptr;  // static; kinematic where the engine steps in the pile's frame (moving_frame.h)
     b2Body* shell = nullptr;
     std::vector<b2Body*> grains;
     std::vector<ForceHook> force_hooks;
 
-    // One tracker step: fidelity.substeps engine steps, each after the force hooks.
+    // One tracker step: fidelity.substeps engine steps, each after the force hooks, in the frame
+    // fidelity.frame names (moving_frame.h).
     void step();
 };
 

@@ -13,7 +13,10 @@ void add_ramp(SimWorld& w) {
     const Scene& scene = w.scene;
     const EngineUnits& u = w.units;
     b2BodyDef def;
-    def.type = b2_staticBody;
+    // In the pile's frame the ramp moves under the shell (moving_frame.h): a kinematic body, at the
+    // origin so that the frame's shift puts it back exactly. Static otherwise, as without grains.
+    const bool moves = scene.fidelity.frame == EngineFrame::pile && scene.fill.ratio > 0.0;
+    def.type = moves ? b2_kinematicBody : b2_staticBody;
     def.userData.pointer = static_cast<uintptr_t>(BodyKind::ramp);
     w.ramp = w.world->CreateBody(&def);
     const double margin_m = 4.0 * w.shell_props.outer_circumradius_m;

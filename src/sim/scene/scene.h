@@ -74,6 +74,10 @@ struct ReleaseParams {
     double tilt_deg = 0.0;
 };
 
+// The frame the grain engine steps in (moving_frame.h): the ramp's, or one moving down the track with
+// the pile, which gives the same motion in exact arithmetic and keeps Box2D's contact lists short.
+enum class EngineFrame { ramp, pile };
+
 // Time step, sub-steps and solver iterations: what the user pays for accuracy.
 struct FidelityParams {
     std::string preset;
@@ -81,6 +85,7 @@ struct FidelityParams {
     int substeps = 0;              // engine Step calls per tracker step
     int velocity_iterations = 0;
     int position_iterations = 0;
+    EngineFrame frame = EngineFrame::ramp;  // the grain engine's frame; what runs report is always the ramp's
 };
 
 // Which physics computes the run: the grain simulation, or one of the experimenters' reduced models

@@ -225,6 +225,11 @@ std::vector<SceneField> make_table() {
             .range(1, 1000).flag("--velocity-iterations").help("solver velocity iterations"),
         Row("fidelity.position_iterations", T::integer, member<&Scene::fidelity, &FidelityParams::position_iterations>())
             .range(1, 1000).flag("--position-iterations").help("solver position iterations"),
+        Row("fidelity.frame", T::choice, member<&Scene::fidelity, &FidelityParams::frame>())
+            .choices<engine_frame_names, engine_frame_named>().flag("--frame")
+            .help("the frame the grain engine steps in: the ramp's (ramp), or one moving down the track with the "
+                  "pile (pile), the same motion in exact arithmetic with shorter contact lists; every output is "
+                  "in the ramp's frame either way"),
 
         // --- run
         Row("run.model", T::choice, member<&Scene::run, &RunParams::model>())

@@ -21,6 +21,11 @@ constexpr std::array<std::pair<Model, std::string_view>, 5> kModels = {{
     {Model::automatic, "auto"},
 }};
 
+constexpr std::array<std::pair<EngineFrame, std::string_view>, 2> kFrames = {{
+    {EngineFrame::ramp, "ramp"},
+    {EngineFrame::pile, "pile"},
+}};
+
 template <class E, std::size_t N>
 std::string name_of(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
     for (const auto& [v, name] : table)
@@ -47,6 +52,7 @@ std::optional<E> value_named(const std::array<std::pair<E, std::string_view>, N>
 
 std::string to_string(ReleasePose pose) { return name_of(kPoses, pose); }
 std::string to_string(Model model) { return name_of(kModels, model); }
+std::string to_string(EngineFrame frame) { return name_of(kFrames, frame); }
 
 const std::vector<std::string>& release_pose_names() {
     static const std::vector<std::string> names = names_of(kPoses);
@@ -59,5 +65,10 @@ const std::vector<std::string>& model_names() {
 
 std::optional<ReleasePose> release_pose_named(std::string_view name) { return value_named(kPoses, name); }
 std::optional<Model> model_named(std::string_view name) { return value_named(kModels, name); }
+const std::vector<std::string>& engine_frame_names() {
+    static const std::vector<std::string> names = names_of(kFrames);
+    return names;
+}
+std::optional<EngineFrame> engine_frame_named(std::string_view name) { return value_named(kFrames, name); }
 
 }  // namespace polyroll

@@ -13,6 +13,7 @@ namespace polyroll {
 
 std::string to_string(ReleasePose pose);
 std::string to_string(Model model);
+std::string to_string(EngineFrame frame);
 
 // Every value's name, in the enum's order: "vertex", "face", "tipped" / "grains", "segments", "rigid", "dem3d", "auto".
 const std::vector<std::string>& release_pose_names();
@@ -21,5 +22,8 @@ const std::vector<std::string>& model_names();
 // The value named `name`, or nothing for a name not in the list.
 std::optional<ReleasePose> release_pose_named(std::string_view name);
 std::optional<Model> model_named(std::string_view name);
+// "ramp", "pile"
+const std::vector<std::string>& engine_frame_names();
+std::optional<EngineFrame> engine_frame_named(std::string_view name);
 
 }  // namespace polyroll
