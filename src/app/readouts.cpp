@@ -30,18 +30,18 @@ namespace {
 struct ModelLabel {
     std::string prefix;
     Model running;
-    std::string name;   // the model's name, or "free body" for the rigid body free to hop
+    std::string name;   // the model's name, or "rigid, rolling and hopping" for the rigid body free to lift off
     std::string since;  // " from 0.41 s", or "" for the model the run started with
 };
 
 ModelLabel model_label_parts(const Scene& scene, const ModelChoice* choice) {
     if (!choice) return {"", scene.run.model, to_string(scene.run.model), ""};
     // Say which model runs now, and since when: the rigid body on the ramp, then free to fly from
-    // lift-off, then Box2D where the free body meets a contact it does not model.
+    // lift-off, then Box2D where the rigid body meets a contact it does not model.
     if (choice->then && choice->hand_over_time_s)
         return {"auto: ", *choice->then, to_string(*choice->then), fmt::format(" from {:.2f} s", *choice->hand_over_time_s)};
     if (choice->then && choice->lift_off_time_s)
-        return {"auto: ", choice->model, "free body", fmt::format(" from {:.2f} s", *choice->lift_off_time_s)};
+        return {"auto: ", choice->model, "rigid, rolling and hopping", fmt::format(" from {:.2f} s", *choice->lift_off_time_s)};
     return {"auto: ", choice->model, to_string(choice->model), ""};
 }
 

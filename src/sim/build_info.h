@@ -1,5 +1,5 @@
 // What `--version` prints for both programs: the project's version (CMake's project() version), the
-// Box2D the binary links (its b2_version, not the header it was compiled against) and the build type.
+// version of Box2D's package (which the library's own b2_version lags) and the build type.
 #pragma once
 
 #include <string>
