@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/interrupt_cleanup.h"
+#include "cli/run_progress_line.h"
 #include "cli/scene_options.h"
 #include "sim/files/atomic_file.h"
 #include "sim/message_text.h"
@@ -139,17 +140,17 @@ int run(const RunOptions& o) {
     const CleanUpOnInterrupt on_interrupt("polyroll run", created);
     RunResult r;
     try {
-        // A model whose runs take minutes (the 3D reference) says how far it has got, on a terminal only.
+        // A model whose runs take minutes (the 3D reference) says how far it has got and the time left.
+        std::optional<RunProgressLine> line;
         std::optional<ScopedRunProgress> progress;
-        if (may_report_progress(scene) && ::isatty(2))
-            progress.emplace([&scene](double t, double x) {
-                fmt::print(stderr, "\r  {}: {:.2f} s simulated, {:.3f} m rolled   ", to_string(scene.run.model), t, x);
-                std::fflush(stderr);
-            });
+        if (may_report_progress(scene)) {
+            line.emplace(scene, ::isatty(2) != 0);
+            progress.emplace([&line](double t, double x) { line->report(t, x); });
+        }
         r = run_scene(scene);
         if (progress) {
             progress.reset();
-            fmt::print(stderr, "\r{:60}\r", "");
+            line->finish();
         }
         if (!o.out.empty()) write_run_files(o.out, r);
     } catch (...) {
