@@ -80,15 +80,15 @@ private:
 };
 
 py::dict shell_state(const Simulation& s) {
-    const RunSnapshot snap = s.run().snapshot();
+    const ShellNow shell = s.run().shell_now();  // no grains copied
     py::dict d;
-    d["x_m"] = snap.shell_centre_m.x;  // the shell's centre in the ramp frame: x down the slope,
-    d["y_m"] = snap.shell_centre_m.y;  // y along its normal, the surface at y = 0
-    d["angle_rad"] = snap.shell_angle_rad;
-    d["position_m"] = snap.now.position_m;  // the tracker's: lid centre from its release
-    d["speed_m_s"] = snap.now.speed_m_s;
-    d["rotation_deg"] = snap.now.angle_deg;
-    d["impacts"] = snap.impacts;
+    d["x_m"] = shell.centre_m.x;  // the shell's centre in the ramp frame: x down the slope,
+    d["y_m"] = shell.centre_m.y;  // y along its normal, the surface at y = 0
+    d["angle_rad"] = shell.angle_rad;
+    d["position_m"] = shell.now.position_m;  // the tracker's: lid centre from its release
+    d["speed_m_s"] = shell.now.speed_m_s;
+    d["rotation_deg"] = shell.now.angle_deg;
+    d["impacts"] = shell.impacts;
     return d;
 }
 
@@ -114,7 +114,7 @@ py::dict grain_state(const Simulation& s) {
 }
 
 py::dict energies(const Simulation& s) {
-    const TrajectorySample now = s.run().snapshot().now;
+    const TrajectorySample now = s.run().shell_now().now;  // no grains copied
     py::dict d;
     d["kinetic_J"] = now.kinetic_J;
     d["potential_J"] = now.potential_J;

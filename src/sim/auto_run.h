@@ -24,6 +24,7 @@ public:
     long steps() const override { return run_->steps(); }
     const Scene& scene() const override { return scene_; }
     RunSnapshot snapshot() const override { return run_->snapshot(); }
+    ShellNow shell_now() const override { return run_->shell_now(); }
     const Measurements& measured() const override { return run_->measured(); }
     // The running model's result, with the scene as given (model auto) and the choice.
     RunResult result() const override;

@@ -38,6 +38,16 @@ inline HandOver counted_hand_over(long steps, const ShellState& shell, const She
     return h;
 }
 
+// The shell's state and the tracker's latest sample, without the grains or the speed history: what a
+// caller polling every few steps needs (Python's Simulation.shell() and energies()).
+struct ShellNow {
+    double time_s = 0.0;  // since release
+    geom::Vec2 centre_m;  // in the ramp frame
+    double angle_rad = 0.0;
+    TrajectorySample now;
+    int impacts = 0;
+};
+
 class ModelRun {
 public:
     virtual ~ModelRun() = default;
@@ -48,6 +58,11 @@ public:
     double step_s() const { return 1.0 / scene().fidelity.step_hz; }
     virtual const Scene& scene() const = 0;
     virtual RunSnapshot snapshot() const = 0;
+    // A snapshot's shell part alone; a model whose snapshot carries grains says it without them.
+    virtual ShellNow shell_now() const {
+        const RunSnapshot s = snapshot();
+        return {s.time_s, s.shell_centre_m, s.shell_angle_rad, s.now, s.impacts};
+    }
     // What has been measured up to now (the behaviour stays "running" until the run has ended).
     virtual const Measurements& measured() const = 0;
     // The files `polyroll run` would write for this run, as far as it has gone (wall_time_s left 0).

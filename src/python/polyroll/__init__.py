@@ -152,8 +152,10 @@ class Result:
     def __init__(self, native):
         self._native = native
         self.summary = native.summary()
-        self.trajectory = _records(native.trajectory_columns())
-        self.impacts = _records(native.impact_columns())
+        # Built once in C++ as record arrays from the columns' one declaration; the view adds
+        # attribute access (r.speed_m_s) without a copy.
+        self.trajectory = native.trajectory_records().view(np.recarray)
+        self.impacts = native.impact_records().view(np.recarray)
 
     @property
     def behaviour(self):

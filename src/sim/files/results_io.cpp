@@ -1,6 +1,8 @@
 // A run's output files: see results_io.h.
 #include "sim/files/results_io.h"
 
+#include "sim/files/result_columns.h"
+
 #include <fmt/core.h>
 
 #include "sim/files/atomic_file.h"
@@ -98,33 +100,38 @@ json summary_json(const RunResult& r) {
 namespace {
 // fmt prints -0.0 as "-0"; a table reads better without it.
 double tidy(double x) { return x == 0.0 ? 0.0 : x; }
-}  // namespace
 
-std::string trajectory_csv(const RunResult& r) {
-    // The fill's offset is blank where the model does not move grains (or there are none).
-    auto offset = [](const std::optional<double>& v) { return v ? fmt::format("{:.6f}", tidy(*v)) : std::string(); };
-    std::string s = "time_s,position_m,speed_m_s,angle_deg,kinetic_J,potential_J,dissipated_J,fill_ahead_m,fill_up_m\n";
-    for (const TrajectorySample& t : r.measured.trajectory)
-        s += fmt::format("{:.6f},{:.6f},{:.6f},{:.4f},{:.9g},{:.9g},{:.9g},{},{}\n", t.time_s, tidy(t.position_m),
-                         tidy(t.speed_m_s), tidy(t.angle_deg), tidy(t.kinetic_J), tidy(t.potential_J),
-                         tidy(t.dissipated_J), offset(t.fill_ahead_m), offset(t.fill_up_m));
-    return s;
+std::string cell(ColumnFormat format, const std::optional<double>& v) {
+    if (!v) return {};
+    switch (format) {
+        case ColumnFormat::fixed6: return fmt::format("{:.6f}", tidy(*v));
+        case ColumnFormat::fixed4: return fmt::format("{:.4f}", tidy(*v));
+        case ColumnFormat::general9: return fmt::format("{:.9g}", tidy(*v));
+        case ColumnFormat::integer: return fmt::format("{}", static_cast<long long>(*v));
+    }
+    return {};
 }
 
-std::string impacts_csv(const RunResult& r) {
-    // The last two columns: the energy read kKineticDelay_s after the landing (empty where the model
-    // has no such instant), and its ratio to the energy before.
-    std::string s = "impact,time_s,position_m,kinetic_before_J,kinetic_after_J,ratio,kinetic_3ms_after_J,ratio_3ms\n";
-    for (const FaceImpact& f : r.measured.impacts) {
-        s += fmt::format("{},{:.6f},{:.6f},{:.9g},{:.9g},{:.6f}", f.index, f.time_s, f.position_m,
-                         f.kinetic_before_J, f.kinetic_after_J, f.ratio());
-        if (f.kinetic_delayed_J && f.kinetic_before_J > 0.0)
-            s += fmt::format(",{:.9g},{:.6f}\n", *f.kinetic_delayed_J, *f.kinetic_delayed_J / f.kinetic_before_J);
-        else
-            s += ",,\n";
+// A CSV table of `rows` with the declared columns (result_columns.h).
+template <class Row>
+std::string table_csv(std::span<const ResultColumn<Row>> columns, const std::vector<Row>& rows) {
+    std::string s;
+    for (std::size_t c = 0; c < columns.size(); ++c) s += (c ? "," : "") + std::string(columns[c].name);
+    s += "\n";
+    for (const Row& row : rows) {
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            if (c) s += ",";
+            s += cell(columns[c].format, columns[c].value(row));
+        }
+        s += "\n";
     }
     return s;
 }
+}  // namespace
+
+std::string trajectory_csv(const RunResult& r) { return table_csv(trajectory_columns(), r.measured.trajectory); }
+
+std::string impacts_csv(const RunResult& r) { return table_csv(impact_columns(), r.measured.impacts); }
 
 void write_run_files(const std::filesystem::path& dir, const RunResult& r) {
     write_file_atomic(dir / "trajectory.csv", trajectory_csv(r));

@@ -70,6 +70,13 @@ RunSnapshot Simulation::snapshot() const {
     return s;
 }
 
+ShellNow Simulation::shell_now() const {
+    const EngineUnits& u = world_->units;
+    const b2Vec2 c = world_->shell->GetPosition();
+    return {time_s(), {u.to_m(c.x), u.to_m(c.y)}, world_->shell->GetAngle(), tracker_->current(),
+            static_cast<int>(tracker_->measurements().impacts.size())};
+}
+
 HandOver Simulation::hand_over() const {
     const SimWorld& w = *world_;
     const EngineUnits& u = w.units;

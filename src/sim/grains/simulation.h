@@ -29,6 +29,7 @@ public:
     long steps() const override { return steps_; }
     const Scene& scene() const override;
     RunSnapshot snapshot() const override;
+    ShellNow shell_now() const override;
     const Measurements& measured() const override;
     RunResult result() const override;
     int grains() const override;
