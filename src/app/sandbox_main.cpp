@@ -423,6 +423,7 @@ private:
         vo.colour_speed_max_m_s = kDefaultColourSpeedMax_m_s;
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
+        vo.surround = panel_background();
         const std::vector<render::Snapshot> none;
         const double t0 = now_s();
         const render::DrawList list = build_scene_view(show_scene ? shown_ : none, vo, *atlas_, boxes);
