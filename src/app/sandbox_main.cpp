@@ -20,6 +20,7 @@
 #include "app/divergence.h"
 #include "flags/parse_errors.h"
 #include "app/export_files.h"
+#include "app/frame_split.h"
 #include "app/headless_fallback.h"
 #include "app/lane_set.h"
 #include "app/page_settings.h"
@@ -128,6 +129,7 @@ void check(Options& o) {
 // Frame-time statistics for --bench.
 struct BenchStats {
     std::vector<double> frame_s, physics_s, drawing_s;
+    FrameSplit split_sum;  // the parts of the frames, summed
     double sim_start_s = 0.0, wall_start_s = 0.0;
     double running_wall_s = 0.0;  // wall time of the frames that began with a lane still running
     long steps = 0;
@@ -156,6 +158,7 @@ struct BenchStats {
         fmt::print("  physics      {:.2f} ms per frame (budget {:.0f} ms, beside the drawing), {} tracker steps\n",
                    1e3 * phys / n, 1e3 * kPhysicsBudgetPerFrameS, steps);
         fmt::print("  drawing      {:.2f} ms per frame (scene draw list, GL, ImGui, swap)\n", 1e3 * draw / n);
+        print_split(split_sum, n);
         fmt::print("  simulated    {:.3f} s in {:.2f} s of wall time while running: {:.2f}x real time (physics alone "
                    "{:.2f}x){}\n",
                    sim, rt_wall, sim / rt_wall, phys > 0 ? sim / phys : 0.0,
@@ -230,6 +233,7 @@ public:
                 if (was_running) bench.running_wall_s += now_s() - t0;
                 bench.physics_s.push_back(times.physics_s);
                 bench.drawing_s.push_back(times.drawing_s);
+                bench.split_sum += times.split;
             }
             if (final_frame) return false;
             if (!o_.capture() && !o_.bench) {
@@ -273,6 +277,7 @@ private:
     struct FrameTimes {
         double physics_s = 0.0;  // on the physics worker
         double drawing_s = 0.0;  // on this thread, meanwhile
+        FrameSplit split;        // the parts (--bench)
     };
 
     // Read only while the worker is idle (between a job's finish and the next start).
@@ -295,9 +300,13 @@ private:
         ctx_.ui_scale_shown = scale;
         win_.set_ui_scale(scale);
         win_.set_high_contrast(s_.high_contrast);
-        win_.begin_frame();
         FrameTimes times;
+        FrameSplit& split = times.split;
+        const double p0 = now_s();
+        win_.begin_frame();
+        split.panels_s = now_s() - p0;
         if (o_.capture()) times.physics_s = take(worker_.run(frame_requests(wall_dt)));
+        const double p1 = now_s();
 
         const ImGuiIO& io = ImGui::GetIO();
         const UiLayout L = ui_layout(io.DisplaySize.x, io.DisplaySize.y, scale);
@@ -313,6 +322,7 @@ private:
         draw_control_panel(s_, ctx_, L, req, rep);
         draw_readouts_and_plots(s_, ctx_, L, rep);
         const float top = draw_status(s_, ctx_, L, rep);
+        split.panels_s += now_s() - p1;
 
         int fb_w = 0, fb_h = 0;
         win_.framebuffer_size(fb_w, fb_h);
@@ -321,21 +331,32 @@ private:
         const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
                                   std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
         handle_mouse(area, ratio);
+        const double s0 = now_s();
         take_snapshots();
+        split.snapshots_s = now_s() - s0;
         const bool show_scene = !last_.running_to_end;
         const bool any_active = ImGui::IsAnyItemActive();
 
         if (!o_.capture()) worker_.start(frame_requests(wall_dt));
         const double d0 = now_s();
         SceneViewBoxes boxes;
-        draw_scene(fb_w, fb_h, area, ratio, scale, show_scene, rep ? &boxes : nullptr);
+        draw_scene(fb_w, fb_h, area, ratio, scale, show_scene, rep ? &boxes : nullptr, split);
         if (rep) write_layout_report(L, *rep, area, ratio, boxes);
+        const double u0 = now_s();
         win_.render_ui();
+        // The benchmark waits for GL after each part so that each is charged its own rasterising
+        // (a software GL rasterises when flushed, so otherwise the swap would pay for everything).
+        if (o_.bench) win_.finish_gl();
+        split.panels_gl_s = now_s() - u0;
         if (screenshot_after) write_screenshot(win_, o_.screenshot);
         if (req.screenshot) save_screenshot();
+        const double w0 = now_s();
         win_.swap();
+        split.swap_s = now_s() - w0;
         times.drawing_s = now_s() - d0;
         if (!o_.capture()) times.physics_s = take(worker_.finish());  // rethrows what the physics threw
+        split.physics_wait_s = now_s() - d0 - times.drawing_s;
+        split.physics_s = times.physics_s;
         carry_out(req, any_active);
         return times;
     }
@@ -386,7 +407,7 @@ private:
 
     // Reads only the snapshots and the view: it runs while the physics worker steps the lanes.
     void draw_scene(int fb_w, int fb_h, const render::PxRect& area, float ratio, float scale, bool show_scene,
-                    SceneViewBoxes* boxes) {
+                    SceneViewBoxes* boxes, FrameSplit& split) {
         const float unit = scale * ratio;
         if (!atlas_ || atlas_unit_ != unit) {
             atlas_ = std::make_unique<render::FontAtlas>(render::find_font_dir(), scene_view_fonts(unit));
@@ -402,8 +423,15 @@ private:
         vo.colour_speed_max_m_s = kDefaultColourSpeedMax_m_s;
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
+        vo.surround = panel_background();
         const std::vector<render::Snapshot> none;
-        gl_.draw(build_scene_view(show_scene ? shown_ : none, vo, *atlas_, boxes));
+        const double t0 = now_s();
+        const render::DrawList list = build_scene_view(show_scene ? shown_ : none, vo, *atlas_, boxes);
+        const double t1 = now_s();
+        gl_.draw(list);
+        if (o_.bench) win_.finish_gl();
+        split.scene_list_s = t1 - t0;
+        split.scene_gl_s = now_s() - t1;
     }
 
     // The frame's layout as JSON, in window coordinates (the scene's boxes divided by the pixel

@@ -13,6 +13,7 @@
 #include "app/model_budget.h"
 #include "app/sandbox_state.h"
 #include "app/sim_clock.h"
+#include "render/colour.h"
 
 struct ImFont;
 
@@ -73,6 +74,10 @@ void draw_readouts_and_plots(const SandboxState& s, const UiContext& ctx, const 
 // just did, the grain-speed legend), as tall as its wrapped text: the scene starts under it, so it
 // never covers the ramps' start, the lanes' badges or their legend. Returns its bottom edge.
 float draw_status(const SandboxState& s, const UiContext& ctx, const UiLayout& L, UiLayoutReport* report = nullptr);
+
+// The colour the three panels stand on, which the frame is cleared to (they draw no background of
+// their own): the theme's window background, over the scene's background where it is translucent.
+render::Rgba panel_background();
 
 // Keyboard shortcuts (when no text field has the keyboard).
 void read_shortcuts(SandboxState& s, UiRequests& req);

@@ -166,6 +166,8 @@ void Window::render_ui() {
 
 void Window::swap() { glfwSwapBuffers(window_); }
 
+void Window::finish_gl() const { glFinish(); }
+
 void Window::wait_events(double timeout_s) const { glfwWaitEventsTimeout(timeout_s); }
 
 void Window::framebuffer_size(int& w, int& h) const { glfwGetFramebufferSize(window_, &w, &h); }

@@ -27,6 +27,8 @@ public:
     // Renders ImGui's draw data over whatever was drawn (the scene).
     void render_ui();
     void swap();
+    // Waits until GL has drawn everything asked of it so far (the benchmark's split of a frame).
+    void finish_gl() const;
     // Sleeps until an input event arrives or `timeout_s` passes: the loop calls it when nothing
     // moves (run ended, paused), so an idle window costs no CPU.
     void wait_events(double timeout_s) const;

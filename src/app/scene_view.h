@@ -4,6 +4,7 @@
 // window draws it with render::GlRenderer, the same renderer as polyroll render's frames.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "app/view_control.h"
@@ -25,6 +26,9 @@ struct SceneViewOptions {
     // Whole-ramp view: a close-up of this lane's polygon in the free corner under the ramp
     // (-1 for none). The polygon is small on a 2.5 m ramp; the close-up shows its grains.
     int close_up_lane = 0;
+    // The colour of the framebuffer outside the area (the panels' background, which the panels
+    // leave to the clear), or none to clear it all to the scene's background.
+    std::optional<render::Rgba> surround;
 };
 
 // The font sizes the view uses at a UI scale (the atlas must hold them).

@@ -99,6 +99,43 @@ void main() {
 }
 )";
 
+// A disc as one point sprite, as wide as the quad a shape would get: one primitive where the quad
+// is two. A software GL (llvmpipe: the window under Xvfb and every headless frame) pays per primitive
+// more than per pixel for small discs: 3,000 grains of a couple of pixels drew about twice as fast
+// as points. The distance is measured from the pixel's own centre (gl_FragCoord), as the shapes'
+// quads interpolate it, with the same edge and outline as a capsule of zero length.
+constexpr const char* kDiscVertex = R"(
+layout(location = 0) in vec4 disc;  // centre x, y, radius, outline width
+layout(location = 1) in vec4 fill;
+layout(location = 2) in vec4 outline;
+uniform vec2 viewport;
+flat out vec4 v_disc;
+flat out vec4 v_fill;
+flat out vec4 v_outline;
+void main() {
+    v_disc = disc;
+    v_fill = fill;
+    v_outline = outline;
+    gl_PointSize = 2.0 * disc.z + 2.0;
+    gl_Position = to_clip(disc.xy, viewport);
+}
+)";
+constexpr const char* kDiscFragment = R"(
+flat in vec4 v_disc;
+flat in vec4 v_fill;
+flat in vec4 v_outline;
+uniform vec2 viewport;
+out vec4 frag;
+void main() {
+    vec2 p = vec2(gl_FragCoord.x, viewport.y - gl_FragCoord.y);
+    float d = length(p - v_disc.xy) - v_disc.z;
+    float cover = clamp(0.5 - d, 0.0, 1.0);
+    vec4 c = v_fill;
+    if (v_disc.w > 0.0) c = mix(v_outline, v_fill, clamp(-(d + v_disc.w) + 0.5, 0.0, 1.0));
+    frag = vec4(c.rgb, c.a * cover);
+}
+)";
+
 constexpr const char* kGlyphVertex = R"(
 layout(location = 0) in vec2 corner;
 layout(location = 1) in vec4 rect;
@@ -164,6 +201,11 @@ struct ShapeInstance {
     float fill[4];
     float outline[4];
 };
+struct DiscVertex {
+    float disc[4];
+    float fill[4];
+    float outline[4];
+};
 struct GlyphInstance {
     float rect[4];
     float uv[4];
@@ -197,6 +239,11 @@ GlRenderer::GlRenderer() {
     shape_viewport_ = glGetUniformLocation(shape_program_, "viewport");
     glyph_viewport_ = glGetUniformLocation(glyph_program_, "viewport");
     glyph_sampler_ = glGetUniformLocation(glyph_program_, "atlas");
+    disc_program_ = link(kDiscVertex, kDiscFragment);
+    disc_viewport_ = glGetUniformLocation(disc_program_, "viewport");
+    float point_sizes[2] = {1.0f, 1.0f};
+    glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, point_sizes);
+    max_point_px_ = point_sizes[1];
 
     static const float corners[8] = {0, 0, 1, 0, 0, 1, 1, 1};  // a triangle strip
     glGenBuffers(1, &quad_vbo_);
@@ -231,6 +278,14 @@ GlRenderer::GlRenderer() {
     float_attrib(2, 4, sizeof(GlyphInstance), offsetof(GlyphInstance, uv), true);
     float_attrib(3, 4, sizeof(GlyphInstance), offsetof(GlyphInstance, colour), true);
 
+    glGenVertexArrays(1, &disc_vao_);
+    glGenBuffers(1, &disc_vbo_);
+    glBindVertexArray(disc_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, disc_vbo_);
+    float_attrib(0, 4, sizeof(DiscVertex), offsetof(DiscVertex, disc), false);
+    float_attrib(1, 4, sizeof(DiscVertex), offsetof(DiscVertex, fill), false);
+    float_attrib(2, 4, sizeof(DiscVertex), offsetof(DiscVertex, outline), false);
+
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glGenTextures(1, &atlas_texture_);
@@ -238,10 +293,11 @@ GlRenderer::GlRenderer() {
 
 GlRenderer::~GlRenderer() {
     glDeleteTextures(1, &atlas_texture_);
-    const GLuint buffers[4] = {tri_vbo_, quad_vbo_, shape_vbo_, glyph_vbo_};
-    glDeleteBuffers(4, buffers);
-    const GLuint arrays[3] = {tri_vao_, shape_vao_, glyph_vao_};
-    glDeleteVertexArrays(3, arrays);
+    const GLuint buffers[5] = {tri_vbo_, quad_vbo_, shape_vbo_, glyph_vbo_, disc_vbo_};
+    glDeleteBuffers(5, buffers);
+    const GLuint arrays[4] = {tri_vao_, shape_vao_, glyph_vao_, disc_vao_};
+    glDeleteVertexArrays(4, arrays);
+    glDeleteProgram(disc_program_);
     glDeleteProgram(tri_program_);
     glDeleteProgram(shape_program_);
     glDeleteProgram(glyph_program_);
@@ -260,6 +316,56 @@ void GlRenderer::upload_atlas(const FontAtlas& atlas) {
     uploaded_atlas_ = atlas.id();
 }
 
+bool GlRenderer::as_point(const Shape& s, float width_px, float height_px) const {
+    // A point whose centre lies outside the viewport is clipped whole, so a disc cut by the frame's
+    // edge stays a quad.
+    return s.kind == ShapeKind::capsule && s.a.x == s.b.x && s.a.y == s.b.y && 2.0f * s.radius + 2.0f <= max_point_px_ &&
+           s.a.x >= 0.0f && s.a.x <= width_px && s.a.y >= 0.0f && s.a.y <= height_px;
+}
+
+void GlRenderer::draw_discs(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px,
+                            float height_px) {
+    std::vector<DiscVertex> discs;
+    discs.reserve(end - begin);
+    for (size_t i = begin; i < end; ++i) {
+        const Shape& s = shapes[i];
+        DiscVertex v{{s.a.x, s.a.y, s.radius, s.outline_px}, {}, {}};
+        put(v.fill, s.fill);
+        put(v.outline, s.outline);
+        discs.push_back(v);
+    }
+    glUseProgram(disc_program_);
+    glUniform2f(disc_viewport_, width_px, height_px);
+    glBindVertexArray(disc_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, disc_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(discs.size() * sizeof(DiscVertex)), discs.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(discs.size()));
+}
+
+void GlRenderer::draw_shapes(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px,
+                             float height_px) {
+    std::vector<ShapeInstance> instances;
+    instances.reserve(end - begin);
+    for (size_t i = begin; i < end; ++i) {
+        const Shape& s = shapes[i];
+        ShapeInstance in{{s.a.x, s.a.y, s.b.x, s.b.y},
+                         {s.kind == ShapeKind::box ? 1.0f : 0.0f, s.radius, s.outline_px, 0.0f},
+                         {},
+                         {}};
+        put(in.fill, s.fill);
+        put(in.outline, s.outline);
+        instances.push_back(in);
+    }
+    glUseProgram(shape_program_);
+    glUniform2f(shape_viewport_, width_px, height_px);
+    glBindVertexArray(shape_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, shape_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(ShapeInstance)), instances.data(),
+                 GL_STREAM_DRAW);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
+}
+
 void GlRenderer::draw(const DrawList& list) {
     const int w = list.width_px, h = list.height_px;
     glViewport(0, 0, w, h);
@@ -270,10 +376,12 @@ void GlRenderer::draw(const DrawList& list) {
     glEnable(GL_BLEND);
     // Alpha kept at 1 over the opaque background, so the read-back RGB is the picture.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+#ifndef POLYROLL_GLSL_ES
+    glEnable(GL_PROGRAM_POINT_SIZE);  // the point sprites' size from the shader (always so in GLES and WebGL)
+#endif
     if (list.atlas && list.atlas->id() != uploaded_atlas_) upload_atlas(*list.atlas);
 
     std::vector<TriVertex> tris;
-    std::vector<ShapeInstance> shapes;
     std::vector<GlyphInstance> glyphs;
     const float fw = static_cast<float>(w), fh = static_cast<float>(h);
     for (const Layer& layer : list.layers) {
@@ -286,12 +394,18 @@ void GlRenderer::draw(const DrawList& list) {
         }
         if (!layer.triangles.empty()) {
             tris.clear();
-            for (const Triangle& t : layer.triangles)
+            bool opaque = true;
+            for (const Triangle& t : layer.triangles) {
+                opaque = opaque && t.colour.a >= 1.0f;
                 for (const Px& p : {t.a, t.b, t.c}) {
                     TriVertex v{p.x, p.y, {}};
                     put(v.colour, t.colour);
                     tris.push_back(v);
                 }
+            }
+            // Opaque triangles replace what is under them, blended or not; unblended, a software GL
+            // fills them about three times faster.
+            if (opaque) glDisable(GL_BLEND);
             glUseProgram(tri_program_);
             glUniform2f(tri_viewport_, fw, fh);
             glBindVertexArray(tri_vao_);
@@ -299,25 +413,16 @@ void GlRenderer::draw(const DrawList& list) {
             glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tris.size() * sizeof(TriVertex)), tris.data(),
                          GL_STREAM_DRAW);
             glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size()));
+            glEnable(GL_BLEND);
         }
-        if (!layer.shapes.empty()) {
-            shapes.clear();
-            for (const Shape& s : layer.shapes) {
-                ShapeInstance in{{s.a.x, s.a.y, s.b.x, s.b.y},
-                                 {s.kind == ShapeKind::box ? 1.0f : 0.0f, s.radius, s.outline_px, 0.0f},
-                                 {},
-                                 {}};
-                put(in.fill, s.fill);
-                put(in.outline, s.outline);
-                shapes.push_back(in);
-            }
-            glUseProgram(shape_program_);
-            glUniform2f(shape_viewport_, fw, fh);
-            glBindVertexArray(shape_vao_);
-            glBindBuffer(GL_ARRAY_BUFFER, shape_vbo_);
-            glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(shapes.size() * sizeof(ShapeInstance)),
-                         shapes.data(), GL_STREAM_DRAW);
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(shapes.size()));
+        // The shapes in order, each run of discs that fit a point sprite as points, the rest as quads.
+        for (size_t i = 0; i < layer.shapes.size();) {
+            const bool points = as_point(layer.shapes[i], fw, fh);
+            size_t end = i + 1;
+            while (end < layer.shapes.size() && as_point(layer.shapes[end], fw, fh) == points) ++end;
+            if (points) draw_discs(layer.shapes, i, end, fw, fh);
+            else draw_shapes(layer.shapes, i, end, fw, fh);
+            i = end;
         }
         if (!layer.glyphs.empty() && list.atlas) {
             glyphs.clear();

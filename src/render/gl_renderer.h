@@ -1,11 +1,13 @@
 // Draws a draw list with plain OpenGL 3.3 core calls into the current context's framebuffer: the
-// same code for the window and the offscreen (OSMesa) context. Triangles as they are; discs,
-// capsules and rounded boxes as instanced quads whose fragment shader antialiases the edge by
-// distance (far cheaper than multisampling under llvmpipe); glyphs as instanced textured quads.
+// same code for the window and the offscreen (OSMesa) context. Triangles as they are; discs as
+// point sprites, capsules and rounded boxes as instanced quads, whose fragment shaders antialias the
+// edge by distance (far cheaper than multisampling under llvmpipe); glyphs as instanced textured quads.
 // Links no GL itself: the executable brings exactly one GL provider (docs/design.md, "Rendering").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "render/draw_list.h"
 
@@ -23,13 +25,18 @@ public:
 
 private:
     void upload_atlas(const FontAtlas& atlas);
+    // Whether a shape is drawn as a point sprite: a disc no wider than GL's largest point, centred in the frame.
+    bool as_point(const Shape& s, float width_px, float height_px) const;
+    void draw_discs(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px, float height_px);
+    void draw_shapes(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px, float height_px);
 
-    unsigned tri_program_ = 0, shape_program_ = 0, glyph_program_ = 0;
-    unsigned tri_vao_ = 0, shape_vao_ = 0, glyph_vao_ = 0;
-    unsigned tri_vbo_ = 0, quad_vbo_ = 0, shape_vbo_ = 0, glyph_vbo_ = 0;
+    unsigned tri_program_ = 0, shape_program_ = 0, glyph_program_ = 0, disc_program_ = 0;
+    unsigned tri_vao_ = 0, shape_vao_ = 0, glyph_vao_ = 0, disc_vao_ = 0;
+    unsigned tri_vbo_ = 0, quad_vbo_ = 0, shape_vbo_ = 0, glyph_vbo_ = 0, disc_vbo_ = 0;
     unsigned atlas_texture_ = 0;
     std::uint64_t uploaded_atlas_ = 0;  // FontAtlas::id() of the texture
-    int tri_viewport_ = -1, shape_viewport_ = -1, glyph_viewport_ = -1, glyph_sampler_ = -1;
+    int tri_viewport_ = -1, shape_viewport_ = -1, glyph_viewport_ = -1, glyph_sampler_ = -1, disc_viewport_ = -1;
+    float max_point_px_ = 1.0f;  // GL's largest point sprite
 };
 
 }  // namespace polyroll::render
