@@ -321,7 +321,8 @@ TEST_CASE("without a display the sandbox renders the scene its flags chose", "[a
     const Run again = run(short_fallback_sandbox(dir, 1) + " --out shown");
     INFO(again.out);
     REQUIRE(again.exit_code == 0);
-    CHECK_THAT(again.out, Catch::Contains("rendering the default scene headless instead (polyroll render --out shown, "
+    CHECK_THAT(again.out, Catch::Contains("rendering the default scene (assets/defaults.json: the paper's Fig. 7 hexagon "
+                                          "a quarter full of BBs at 20 deg) headless instead (polyroll render --out shown, "
                                           "replacing"));
     CHECK_FALSE(fs::exists(dir / "shown" / "sandbox-scene.json"));
     fs::remove_all(dir);

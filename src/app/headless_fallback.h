@@ -26,7 +26,7 @@ std::filesystem::path fresh_render_folder(const std::filesystem::path& wanted);
 // What the render shows: the default scene, or the one the sandbox's flags chose (--preset, --scene,
 // --sides, ...), which it writes beside the frames as kHeadlessSceneFile and renders from there.
 struct HeadlessScene {
-    std::string what = "the default scene";  // for the line, e.g. "the chosen scene (preset octagon-rice)"
+    std::string what = "the default scene (assets/defaults.json: the paper's Fig. 7 hexagon a quarter full of BBs at 20 deg)";  // for the line, e.g. "the chosen scene (preset octagon-rice)"
     std::string scene_json;                  // the resolved scene as a scene file; "" for the default scene
 };
 inline constexpr const char* kHeadlessSceneFile = "sandbox-scene.json";

@@ -54,13 +54,17 @@ std::string model_label(const Scene& scene, const ModelChoice* choice) {
 
 LaneReadout lane_readout(const Scene& scene, const Measurements& m, double time_s, const ModelChoice* choice) {
     LaneReadout r;
-    const std::string fill = scene.fill.ratio > 0.0
-                                 ? fmt::format("r = {:g} {}", scene.fill.ratio, render::material_label(scene.fill.material.preset))
-                                 : std::string("empty");
+    // A full shell reads "full of BBs", not "r = 1 BBs": its fill is one rigid body with it.
+    const std::string material = render::material_label(scene.fill.material.preset);
+    const bool full = scene.fill.ratio >= 1.0;
+    const std::string fill = full                    ? "full of " + material
+                             : scene.fill.ratio > 0.0 ? fmt::format("r = {:g} {}", scene.fill.ratio, material)
+                                                      : std::string("empty");
     r.title = fmt::format("n = {}, {}", scene.shell.sides, fill);
     r.polygon = fmt::format("n = {}", scene.shell.sides);
-    r.fill = scene.fill.ratio > 0.0 ? fmt::format("{:g} {}", scene.fill.ratio, render::material_label(scene.fill.material.preset))
-                                    : std::string("empty");
+    r.fill = full                    ? "full of " + material
+             : scene.fill.ratio > 0.0 ? fmt::format("{:g} {}", scene.fill.ratio, material)
+                                      : std::string("empty");
     const TrajectorySample now = m.trajectory.empty() ? TrajectorySample{} : m.trajectory.back();
     r.time = fmt::format("{:.2f} s", time_s);
     r.position = fmt::format("{:.3f} m", now.position_m);

@@ -54,7 +54,7 @@ std::string speed_statement(int slow_divisor, bool stepping, bool keeping_up, do
 
 // A capture's statement instead (--frames, the page's test): each frame advances a fixed 1/60 s, so
 // how fast this computer steps does not show, and no rate is claimed.
-inline constexpr const char* kCaptureSpeedStatement = "captured frame by frame, 1/60 s each";
+inline constexpr const char* kCaptureSpeedStatement = "captured, 1/60 s a frame";
 
 // The status line: the time, the state ("\u25B6 playing", "paused", "run ended: ...") and the speed
 // statement, said once: "t = 1.20 s   \u25B6 playing at 0.24\u00D7 real time: ...", never "playing

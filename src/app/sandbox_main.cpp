@@ -261,8 +261,10 @@ public:
                                                                    budget_figures()));
             }
             if (o_.capture()) {
-                fmt::print("polyroll-sandbox: {} frames of {} ({:.2f} s simulated{}){}\n", frames,
+                // "--fill 0" on the default preset is not the default preset any more: say so.
+                fmt::print("polyroll-sandbox: {} frames of {}{} ({:.2f} s simulated{}){}\n", frames,
                            s_.scene_file.empty() ? "preset " + s_.preset : "scene file " + s_.scene_file,
+                           o_.scene_flags.empty() ? "" : " as the flags changed it",
                            last_.time_s, last_.trouble ? ", stopped by numerical trouble" : "",
                            o_.screenshot.empty() ? "" : fmt::format(", screenshot {}", o_.screenshot));
                 if (lanes().trouble()) fmt::print("  {}\n", *lanes().trouble());

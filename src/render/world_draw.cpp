@@ -71,8 +71,8 @@ void draw_ramp(const Snapshot& s, const Camera& cam, const WorldStyle& st, const
         out.shapes.push_back(segment(P(x, -band_m * 0.05), end, is_major ? 1.5f * tick_w : tick_w,
                                      palette::ramp_tick, Tag::ramp_tick));
         if (!is_major) continue;
-        const std::string label = major >= 0.1 ? fmt::format("{:g} m", std::round(x * 100.0) / 100.0)
-                                                : fmt::format("{:g} cm", std::round(x * 1000.0) / 10.0);
+        // Metres at every zoom, so the close-up and the view never label the same ramp in two units.
+        const std::string label = fmt::format("{:g} m", std::round(x * 1000.0) / 1000.0);
         const float tw = font.text_width(label, st.scale_font);
         const Px under = P(x, -band_m - 6.0 * st.unit / cam.px_per_m);
         // A label that would be cut at the picture's edge (the close-up's bottom, the view's side)
@@ -103,6 +103,11 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
         fill.push_back(cam.to_px(ramp_to_world(s.shell_centre_m + geom::rotate(v, s.shell_angle_rad), s.ramp_angle_deg)));
     for (size_t i = 1; i + 1 < fill.size(); ++i)
         out.triangles.push_back({fill[0], fill[i], fill[i + 1], material_colour(s.material), Tag::fill_region});
+    // Outlined in the grains' colour darkened, so a pale fill (rice) held as one body still shows its
+    // edge where it is not the shell's wall (the rigid model's frozen fill, the segments' levelled one).
+    for (size_t i = 0; fill.size() >= 3 && i < fill.size(); ++i)
+        out.shapes.push_back(segment(fill[i], fill[(i + 1) % fill.size()], 0.8f * st.stroke,
+                                     shade(material_colour(s.material), 0.55f), Tag::fill_region));
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;
         out.triangles.push_back({inner[i], outer[i], outer[j], st.shell_wall, Tag::shell_wall});
@@ -139,9 +144,30 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
 
 }  // namespace
 
+namespace {
+// A fill the model holds as one body says so where it is drawn large enough to read (the close-up):
+// a full shell of rice is otherwise a pale block that reads as an empty shell.
+void label_fill_region(const Snapshot& s, const Camera& cam, const WorldStyle& st, const FontAtlas& font, Layer& out) {
+    if (s.fill_region_local_m.size() < 3) return;
+    float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
+    for (const Vec2& v : s.fill_region_local_m) {
+        const Px p = cam.to_px(ramp_to_world(s.shell_centre_m + geom::rotate(v, s.shell_angle_rad), s.ramp_angle_deg));
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    const std::string text = "rigid body";
+    const float width = font.text_width(text, st.scale_font), height = font.line_height(st.scale_font);
+    // Inside the region's box with room to spare, below the lid's dot at its centre.
+    if (width > 0.85f * (x1 - x0) || 3.0f * height > (y1 - y0)) return;
+    const float cx = 0.5f * (x0 + x1), cy = 0.5f * (y0 + y1) + 1.2f * height;
+    font.layout(text, st.scale_font, {cx - width / 2.0f, cy - height / 2.0f + font.ascent(st.scale_font)},
+                shade(material_colour(s.material), 0.35f), out.glyphs);
+}
+}  // namespace
+
 void draw_world(const Snapshot& s, const Camera& cam, const WorldStyle& style, const FontAtlas& font, Layer& out) {
     draw_ramp(s, cam, style, font, out);
     draw_shell_and_grains(s, cam, style, out);
+    label_fill_region(s, cam, style, font, out);
 }
 
 }  // namespace polyroll::render
