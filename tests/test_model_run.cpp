@@ -67,7 +67,7 @@ TEST_CASE("every registered model steps to the end run_scene gives, with a snaps
         CHECK(trajectory_csv(run->result()) == trajectory_csv(whole));
         CHECK(impacts_csv(run->result()) == impacts_csv(whole));
         CHECK(summary_json(whole).contains("engine") == traits.engine);
-        CHECK(traits.fill_description.empty() == traits.has_grains);
+        CHECK(traits.fill_description.get().empty() == traits.has_grains.get());
     }
 }
 

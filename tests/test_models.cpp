@@ -451,8 +451,8 @@ TEST_CASE("the registry describes every model and auto picks only the models it 
     const std::string help = field_help(scene_field("run.model"));
     for (Model m : all_models()) {
         INFO(to_string(m));
-        CHECK_FALSE(model_traits(m).description.empty());
-        CHECK_THAT(help, Catch::Contains(to_string(m) + " (" + model_traits(m).description));
+        CHECK_FALSE(model_traits(m).description.get().empty());
+        CHECK_THAT(help, Catch::Contains(to_string(m) + " (" + model_traits(m).description.get()));
     }
     CHECK_THAT(help, Catch::Contains(auto_rule_description()));
     // The window's tooltip lists only what the window offers.

@@ -7,7 +7,11 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "sim/model_run.h"
 #include "sim/run_result.h"
@@ -27,33 +31,63 @@ enum class RunCost {
     yade_grains,     // the 3D reference: its grains x DEM steps x Yade's cost per grain-step, plus Yade's start
 };
 
+// A trait every registry row states: it has no default, so a row that leaves one out does not compile
+// (a designated initializer's missing member is built from {}, which Required refuses).
+template <class T>
+class Required {
+public:
+    // enable_if rather than requires: clang-tidy 14 sees only enable_if keeping a forwarding
+    // constructor from standing in for the copy constructor.
+    template <class U, std::enable_if_t<std::is_convertible_v<U, T> && !std::is_same_v<std::remove_cvref_t<U>, Required>,
+                                        int> = 0>
+    Required(U&& value) : value_(std::forward<U>(value)) {}  // implicit, so a row reads `.engine = true`
+    operator const T&() const { return value_; }
+    const T& get() const { return value_; }
+
+private:
+    T value_;
+};
+
+}  // namespace polyroll
+
+// A required trait formats as its value.
+template <class T, class Char>
+struct fmt::formatter<polyroll::Required<T>, Char> : fmt::formatter<T, Char> {
+    template <class FormatContext>
+    auto format(const polyroll::Required<T>& r, FormatContext& ctx) const {
+        return fmt::formatter<T, Char>::format(r.get(), ctx);
+    }
+};
+
+namespace polyroll {
+
 struct ModelTraits {
-    Model model = Model::grains;
+    Required<Model> model;
     // What it computes, in a few words: --model's help and the window's model tooltip list it
     // (model_help).
-    std::string description;
+    Required<std::string> description;
     // Box2D computes it: the fidelity (step, iterations) means something, and summary.json has an
     // "engine" block with the engine's units and step.
-    bool engine = false;
-    bool has_grains = false;  // steps the fill grain by grain; otherwise as a continuum without grains
+    Required<bool> engine;
+    Required<bool> has_grains;  // steps the fill grain by grain; otherwise as a continuum without grains
     // What the run printout says the fill is, for a model without grains ("" for grains).
-    std::string fill_description;
+    Required<std::string> fill_description;
     // Can carry on a run another model began (continue_run).
-    bool continues_hand_over = false;
+    Required<bool> continues_hand_over;
     // Cheap enough to run beside the others whenever a command runs them all (compare and the figures
     // of its folder, bench's model rows) and to offer in the window; false for the 3D reference, a
     // minute of CPU a run.
-    bool everyday = true;
+    Required<bool> everyday;
     // Runs a curved track (ramp.curvature_deg_per_m, ramp_profile.h): the engines turn gravity with
     // the shell, the reduced models take the local slope under the contact; a model that assumes one
     // slope refuses such a scene.
-    bool follows_curved_track = false;
-    RunCost cost = RunCost::computed_whole;
+    Required<bool> follows_curved_track;
+    Required<RunCost> cost;
     // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it: the
     // rule refuses to pick a model without it.
-    bool auto_may_pick = false;
+    Required<bool> auto_may_pick;
     // Its runs take minutes, so a run on a terminal says how far it has got (sim/run_progress.h).
-    bool reports_progress = false;
+    Required<bool> reports_progress;
 };
 
 // Every model, in the order `compare` and `bench` list them: the grain simulation first, the

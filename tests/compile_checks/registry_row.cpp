@@ -1,0 +1,21 @@
+// A registry row as model_registry.cpp writes one. Compiled twice by ctest: as it is (it must
+// compile), and with OMIT_TRAIT defined, a row that leaves a trait out (it must not: every trait is
+// Required, model_registry.h).
+#include "sim/model_registry.h"
+
+polyroll::ModelTraits row() {
+    return {.model = polyroll::Model::grains,
+            .description = "a model",
+            .engine = true,
+            .has_grains = true,
+            .fill_description = "",
+            .continues_hand_over = false,
+            .everyday = true,
+            .follows_curved_track = true,
+            .cost = polyroll::RunCost::engine_bodies,
+            .auto_may_pick = false,
+#ifndef OMIT_TRAIT
+            .reports_progress = false
+#endif
+    };
+}
