@@ -42,7 +42,7 @@ ModelChoice apply_rule(const Scene& scene) {
         // docs/tradeoff/tradeoff.md, over its 21 scenes against the reference.
         c.model = Model::grains;
         c.reason =
-            "partly filled shell: the reduced models miss its terminal velocity by 27% (rigid) and 34% (segments), the "
+            "partly filled: the reduced models miss its terminal velocity by 27% (rigid) and 34% (segments), the "
             "grains by 5.6% (trade study: docs/tradeoff/tradeoff.md)";
     }
     return c;
