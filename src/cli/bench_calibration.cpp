@@ -72,7 +72,7 @@ struct CostCheck {
 
 void bench_calibration(const char* fidelity) {
     const sweep::ObservationFile file = sweep::read_observations("");
-    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, 1, {{"fidelity.preset", fidelity}});
+    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, 1, {{"fidelity.preset", fidelity}}, true);
     std::size_t failed = 0;
     CostCheck cost;
     const auto start = std::chrono::steady_clock::now();
