@@ -41,7 +41,7 @@ const std::vector<std::string> kSceneFileFields = {
     "fidelity.position_iterations",
     "fidelity.frame",
     "run.model", "run.seed", "run.time_limit_s", "run.sample_hz", "run.gravity_m_s2", "run.settle_time_s",
-    "run.rest_speed_m_s", "run.rest_time_s",
+    "run.rest_speed_m_s", "run.rest_time_s", "run.end_at_impact",
     "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.channel_width_m",
     "closure.preset", "closure.disc_friction_factor", "closure.wall_friction_factor", "closure.restitution_factor",
 };

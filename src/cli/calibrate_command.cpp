@@ -45,6 +45,7 @@ struct CalibrateArgs {
     std::vector<std::string> starts;  // FIELD=VALUE
     std::vector<std::string> only;    // observation ids (after --half); empty: every observation
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
+    int first_pass_seeds = 0;                 // 0: no first pass
     bool force = false, quiet = false, plan_only = false;
     ObservationSceneFlags scene;
 };
@@ -59,6 +60,7 @@ std::string command_text(const CalibrateArgs& a) {
         for (std::size_t i = 0; i < a.only.size(); ++i) c += (i ? "," : "") + a.only[i];
     }
     c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
+    if (a.first_pass_seeds > 0) c += fmt::format(" --first-pass-seeds {}", a.first_pass_seeds);
     for (const std::string& s : a.starts) c += " --start " + s;
     if (!a.shard.empty()) c += " --shard " + a.shard;
     c += observation_flags_text(a.scene);
@@ -88,8 +90,11 @@ json setup_json(const sweep::CalibrationSetup& s) {
                               {"start", p.start}, {"start_from", p.start_from}});
     json overrides = json::object();
     for (const auto& [f, v] : s.overrides) overrides[f] = v;
-    return json{{"observations_file", s.file.origin}, {"observations", s.file.doc}, {"seeds", s.seeds},
-                {"overrides", overrides}, {"params", params}, {"algorithm", s.algorithm}};
+    json doc{{"observations_file", s.file.origin}, {"observations", s.file.doc}, {"seeds", s.seeds},
+             {"overrides", overrides}, {"params", params}, {"algorithm", s.algorithm}};
+    // Only when asked for, so that a folder of a calibration without one resumes as before.
+    if (s.first_pass_seeds > 0) doc["first_pass_seeds"] = s.first_pass_seeds;
+    return doc;
 }
 
 const std::vector<const char*> kCalibrationFiles = {"plan.json", "results.csv", "shards", "runs", "evaluations.csv",
@@ -105,14 +110,15 @@ std::string values_text(const sweep::CalibrationSetup& s, const std::vector<doub
 std::string evaluations_csv(const sweep::CalibrationSetup& s, const std::vector<sweep::Evaluation>& evals) {
     std::vector<std::string> header = {"evaluation"};
     for (const auto& p : s.params) header.push_back(p.path);
-    for (const char* c : {"objective", "checks_agreeing", "checks", "runs", "failed", "ran", "wall_time_s"})
+    for (const char* c : {"objective", "checks_agreeing", "checks", "seeds", "runs", "failed", "ran", "wall_time_s"})
         header.emplace_back(c);
     std::string out = sweep::csv_line(header);
     for (const sweep::Evaluation& e : evals) {
         std::vector<std::string> row = {std::to_string(e.number)};
         for (double v : e.values) row.push_back(sweep::number_cell(v));
         row.push_back(sweep::number_cell(e.objective));
-        for (std::size_t n : {e.agreeing, e.checks, e.runs, e.failed, e.ran}) row.push_back(std::to_string(n));
+        for (std::size_t n : {e.agreeing, e.checks, static_cast<std::size_t>(e.seeds), e.runs, e.failed, e.ran})
+            row.push_back(std::to_string(n));
         row.push_back(fmt::format("{:.3f}", e.wall_time_s));
         out += sweep::csv_line(row);
     }
@@ -139,7 +145,8 @@ json evaluation_json(const sweep::CalibrationSetup& s, const sweep::Evaluation& 
     json values = json::object();
     for (std::size_t i = 0; i < e.values.size(); ++i) values[s.params[i].path] = e.values[i];
     return json{{"evaluation", e.number}, {"values", values}, {"objective", e.objective},
-                {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"runs", e.runs}, {"failed", e.failed}};
+                {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"seeds", e.seeds}, {"runs", e.runs},
+                {"failed", e.failed}};
 }
 
 // --max-evals and --algorithm, checked before anything is read.
@@ -159,6 +166,11 @@ sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
     if (!a.half.empty()) setup.file = sweep::half_of(setup.file, a.half);
     if (!a.only.empty()) setup.file = sweep::only_observations(setup.file, a.only, "--only");
     setup.seeds = a.seeds;
+    if (a.first_pass_seeds < 0 || a.first_pass_seeds >= a.seeds)
+        if (a.first_pass_seeds != 0)
+            throw InputError(fmt::format("--first-pass-seeds {}: allowed 1 to --seeds - 1 ({}), or 0 for no first pass",
+                                         a.first_pass_seeds, a.seeds - 1));
+    setup.first_pass_seeds = a.first_pass_seeds;
     setup.overrides = observation_overrides(a.scene);
     setup.algorithm = a.algorithm;
     setup.max_evaluations = a.max_evals;
@@ -271,7 +283,7 @@ void print_outcome(const fs::path& dir, const sweep::CalibrationSetup& setup, co
 void print_plan(const sweep::CalibrationSetup& setup, int jobs) {
     auto at_start = setup.overrides;
     for (const auto& p : setup.params) at_start.emplace_back(p.path, p.start);
-    const sweep::ValidationPlan vp = sweep::make_validation_plan(setup.file, setup.seeds, at_start);
+    const sweep::ValidationPlan vp = sweep::make_validation_plan(setup.file, setup.seeds, at_start, true);
     fmt::print("polyroll calibrate: {} field{} against {} observation{} of {}, {} seed{} a scene\n", setup.params.size(),
                setup.params.size() == 1 ? "" : "s", setup.file.observations.size(),
                setup.file.observations.size() == 1 ? "" : "s", setup.file.origin, setup.seeds,
@@ -307,8 +319,9 @@ int run(const CalibrateArgs& a) {
 
     // Ctrl-C at any moment, during a candidate's sweep or between two, stops at the next sweep.
     const InterruptScope interrupt_scope("polyroll calibrate");
-    sweep::CalibrationRuns runs(dir, setup, [&](const sweep::SweepPlan& plan) {
+    sweep::CalibrationRuns runs(dir, setup, [&](const sweep::SweepPlan& plan, const std::vector<double>& expected_s) {
         sweep::SweepOptions o;
+        o.expected_s = expected_s;
         o.dir = dir;
         o.jobs = jobs;
         o.quiet = true;  // one line per evaluation instead
@@ -325,9 +338,13 @@ int run(const CalibrateArgs& a) {
         seen.push_back(e);
         write_file_atomic(dir / "evaluations.csv", evaluations_csv(setup, seen));
         if (a.quiet) return;
+        std::string what = e.number == 0 ? " (the scene's own values)" : "";
+        if (setup.first_pass_seeds > 0)
+            what += e.number >= budget ? fmt::format(" (final pass, {} seeds)", e.seeds)
+                                       : fmt::format(" ({} seed{})", e.seeds, e.seeds == 1 ? "" : "s");
         fmt::print(stderr, "polyroll calibrate: evaluation {}/{}{} {}: objective {:.4g} ({} of {} checks agree, {} runs{}, "
                            "{}); best {:.4g} (#{})\n",
-                   e.number, budget - 1, e.number == 0 ? " (the scene's own values)" : "", values_text(setup, e.values),
+                   e.number, budget - 1, what, values_text(setup, e.values),
                    e.objective, e.agreeing, e.checks, e.runs,
                    e.failed ? fmt::format(", {} failed", e.failed) : std::string(),
                    e.ran == 0 ? "found done" : fmt::format("{:.1f} s", e.wall_time_s), best.objective, best.number);
@@ -369,6 +386,9 @@ Action add_calibrate_command(Command& app) {
         .delimiter(',');
     sub.add_option("--seeds", a->seeds, "seeds per scene, the same for every candidate: 1, 2, ..., N (default 2)")
         .check(Range(1, 1000));
+    sub.add_option("--first-pass-seeds", a->first_pass_seeds,
+                   "search with seeds 1..K (cheaper), then score the best candidate found with all --seeds and keep it "
+                   "if it beats the start there (default 0: every evaluation at --seeds)");
     sub.add_option("--max-evals", a->max_evals,
                    fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
     sub.add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");

@@ -46,6 +46,9 @@ std::string to_string(Behaviour b);
 struct Measurements {
     Behaviour behaviour = Behaviour::running;
     std::string divergence;              // what went wrong, when behaviour == diverged
+    // Why the run ended before the shell decided its end (run.end_at_impact), or empty. The behaviour is
+    // then time_limit: a limit the caller chose ended it.
+    std::string ended_early;
     double end_time_s = 0.0;
     double distance_m = 0.0;             // lid centre along the ramp, release to stop or end
     std::optional<double> terminal_velocity_m_s;

@@ -144,6 +144,14 @@ bool ShellTracker::observe(long step, const ObservedState& s) {
     if (step > 0) check_impact(s);
     previous_kinetic_J_ = now_.kinetic_J;
     record_delayed_kinetic(m_, t, step_s_, now_.kinetic_J);
+    // The caller's early exit: at this face impact the run has told it all it needs.
+    const int end_at = scene_.run.end_at_impact;
+    if (end_at > 0 && m_.impacts.size() >= static_cast<std::size_t>(end_at)) {
+        m_.ended_early = fmt::format("ended early at face impact {} (run.end_at_impact = {}), at t = {:.4f} s", end_at,
+                                     end_at, t);
+        finish(Behaviour::time_limit, t);
+        return false;
+    }
 
     if (step >= next_sample_step_) {
         m_.trajectory.push_back(now_);

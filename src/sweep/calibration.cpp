@@ -67,11 +67,19 @@ CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, Ru
     }
 }
 
-Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
+Evaluation CalibrationRuns::evaluate(const std::vector<double>& values, int seeds) {
     const auto start = std::chrono::steady_clock::now();
+    if (seeds <= 0) seeds = setup_.seeds;
     auto overrides = setup_.overrides;
     for (std::size_t i = 0; i < setup_.params.size(); ++i) overrides.emplace_back(setup_.params[i].path, values[i]);
-    const ValidationPlan vp = make_validation_plan(setup_.file, setup_.seeds, overrides);
+    const ValidationPlan vp = make_validation_plan(setup_.file, seeds, overrides, true);
+    // A run's place whatever the candidate: its point without the fitted fields.
+    std::vector<std::string> slot;
+    for (const PlannedRun& r : vp.plan.runs) {
+        json p = r.point;
+        for (const CalibrationParam& c : setup_.params) p.erase(c.path);
+        slot.push_back(p.dump());
+    }
     if (plan_.fields.empty()) {
         plan_.base = vp.plan.base;
         plan_.fields = vp.plan.fields;
@@ -95,7 +103,13 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
         write_plan(dir_, plan_);
         written_runs_ = plan_.runs.size();
     }
-    const SweepReport report = run_plan_(plan_);
+    std::vector<double> expected;
+    if (!last_wall_s_.empty()) {
+        expected.assign(plan_.runs.size(), -1.0);
+        for (std::size_t j = 0; j < table_index.size(); ++j)
+            if (const auto it = last_wall_s_.find(slot[j]); it != last_wall_s_.end()) expected[table_index[j]] = it->second;
+    }
+    const SweepReport report = run_plan_(plan_, expected);
     if (report.interrupted) throw CalibrationInterrupted();
     auto outcomes = finished_outcomes(plan_, dir_);
     auto missing = [&] {
@@ -118,6 +132,7 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
                                                  (dir_ / "results.csv").string(), i, plan_.runs[i].id));
     Evaluation e;
     e.values = values;
+    e.seeds = seeds;
     e.scores = score_validation(setup_.file, vp, outcomes, table_index);
     e.objective = calibration_objective(e.scores);
     for (const ObservationScore& s : e.scores)
@@ -127,6 +142,7 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
         }
     e.runs = vp.plan.runs.size();
     for (std::size_t i : table_index) e.failed += outcomes.at(i).ok ? 0 : 1;
+    for (std::size_t j = 0; j < table_index.size(); ++j) last_wall_s_[slot[j]] = outcomes.at(table_index[j]).wall_time_s;
     e.ran = report.ran;
     e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return e;
@@ -135,17 +151,27 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values) {
 CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRuns& runs,
                                    const std::function<void(const Evaluation&, const Evaluation&)>& progress) {
     const std::size_t n = setup.params.size();
+    const bool first_pass = setup.first_pass_seeds > 0 && setup.first_pass_seeds < setup.seeds;
+    const int search_seeds = first_pass ? setup.first_pass_seeds : setup.seeds;
     CalibrationOutcome out;
-    auto record = [&](std::vector<double> x) {
+    std::size_t search_best = 0;  // the best of the search's evaluations (at search_seeds)
+    bool searched = false;        // any evaluation at search_seeds yet
+    auto evaluate = [&](std::vector<double> x, int seeds) -> const Evaluation& {
         for (double& v : x) v = tidy_value(v);
-        Evaluation e = runs.evaluate(x);
+        Evaluation e = runs.evaluate(x, seeds);
         e.number = out.evaluations.size();
         out.evaluations.push_back(std::move(e));
         const Evaluation& last = out.evaluations.back();
-        if (last.objective < out.evaluations[out.best].objective) out.best = last.number;
-        if (progress) progress(last, out.evaluations[out.best]);
-        return last.objective;
+        // Objectives are compared only between evaluations over the same seeds.
+        if (last.seeds == setup.seeds && last.objective < out.evaluations[out.best].objective) out.best = last.number;
+        if (last.seeds == search_seeds && (!searched || last.objective < out.evaluations[search_best].objective)) {
+            search_best = last.number;
+            searched = true;
+        }
+        if (progress) progress(last, out.evaluations[last.seeds == search_seeds ? search_best : out.best]);
+        return last;
     };
+    auto record = [&](std::vector<double> x) { return evaluate(std::move(x), search_seeds).objective; };
     std::vector<double> x(n), lo(n), hi(n), step(n), xtol(n);
     for (std::size_t i = 0; i < n; ++i) {
         const CalibrationParam& p = setup.params[i];
@@ -156,7 +182,7 @@ CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRun
         step[i] = 0.25 * (p.hi - p.lo);
         xtol[i] = 1e-3 * (p.hi - p.lo);
     }
-    record(x);  // the scene's own values: the objective before
+    evaluate(x, setup.seeds);  // the scene's own values: the objective before
     if (setup.max_evaluations <= 0) {
         out.stop_reason = "no optimiser evaluations asked for (--max-evals 0)";
         return out;
@@ -200,6 +226,19 @@ CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRun
     }
     if (error) std::rethrow_exception(error);
     out.stop_reason = result_text(r);
+    if (first_pass && searched) {
+        // The final pass: the search's best over every seed, kept if it beats the start there.
+        const std::vector<double> best_values = out.evaluations[search_best].values;
+        const double search_objective = out.evaluations[search_best].objective;
+        const std::size_t search_number = search_best;
+        const Evaluation& confirmed = evaluate(best_values, setup.seeds);
+        const Evaluation& before = out.evaluations.front();
+        out.stop_reason += fmt::format(
+            "; first pass at {} seed{}: best #{} ({:.4g}); final pass at {} seeds: {:.4g} against {:.4g} for the start, {}",
+            search_seeds, search_seeds == 1 ? "" : "s", search_number, search_objective, setup.seeds,
+            confirmed.objective, before.objective,
+            out.best == confirmed.number ? "confirmed" : "not confirmed: the start is kept");
+    }
     return out;
 }
 

@@ -28,6 +28,10 @@ namespace polyroll::sweep {
 struct CalibrationSetup {
     ObservationFile file;
     int seeds = 2;
+    // A cheaper first pass: the optimiser searches with seeds 1..first_pass_seeds, then its best
+    // candidate is evaluated again with seeds 1..seeds (the final pass) and kept if it beats the start
+    // there. 0 (or >= seeds): no first pass, every evaluation at `seeds`.
+    int first_pass_seeds = 0;
     std::vector<std::pair<std::string, nlohmann::ordered_json>> overrides;  // the command line's, on every run
     std::vector<CalibrationParam> params;
     std::string algorithm = "sbplx";
@@ -40,6 +44,7 @@ const std::vector<std::string>& calibration_algorithms();
 struct Evaluation {
     std::size_t number = 0;  // 0: the start values (the scene's own)
     std::vector<double> values;
+    int seeds = 0;           // seeds 1..seeds: the setup's, or the first pass's
     double objective = 0.0;
     std::size_t checks = 0, agreeing = 0;  // scorecard checks, and those that agree
     std::size_t runs = 0, failed = 0;      // the candidate's runs, and the failed ones
@@ -64,7 +69,8 @@ struct CalibrationInterrupted : std::runtime_error {
 class CalibrationRuns {
 public:
     // Runs what is left of a plan in the folder (the command line's: interruptible, parallel).
-    using RunPlan = std::function<SweepReport(const SweepPlan&)>;
+    // `expected_s`: by plan index, each run's expected wall time (SweepOptions::expected_s).
+    using RunPlan = std::function<SweepReport(const SweepPlan&, const std::vector<double>& expected_s)>;
     // Reads the folder's plan.json if there is one (a calibration being resumed). With
     // `wait_for_others` (a shard: run_plan runs one slice), a candidate's runs that other processes
     // run are waited for in the folder's tables, polled every half second; `waiting` is told how
@@ -73,7 +79,8 @@ public:
                     bool wait_for_others = false, std::function<void(std::size_t)> waiting = {},
                     std::function<bool()> stop_requested = {});
 
-    Evaluation evaluate(const std::vector<double>& values);
+    // The candidate scored over seeds 1..seeds (0: the setup's).
+    Evaluation evaluate(const std::vector<double>& values, int seeds = 0);
     const SweepPlan& plan() const { return plan_; }
 
 private:
@@ -82,6 +89,9 @@ private:
     RunPlan run_plan_;
     SweepPlan plan_;
     std::map<std::string, std::size_t> planned_;  // a point's text -> its index
+    // The wall time of each of a candidate's runs (by its place in the candidate's plan) the last time
+    // it ran: the next candidate's same runs are expected to take about as long.
+    std::map<std::string, double> last_wall_s_;  // by the point without the fitted fields
     std::size_t written_runs_ = 0;                // runs in plan.json on disk
     bool wait_for_others_ = false;
     std::function<void(std::size_t)> waiting_;
@@ -90,8 +100,8 @@ private:
 
 struct CalibrationOutcome {
     std::vector<Evaluation> evaluations;  // [0] the start; then the optimiser's, in order
-    std::size_t best = 0;
-    std::string stop_reason;  // why the optimiser stopped
+    std::size_t best = 0;     // the best at the setup's seeds (a first pass's best only once confirmed)
+    std::string stop_reason;  // why the optimiser stopped (and, with a first pass, what the final pass found)
 };
 
 // Evaluates the start values, then lets the optimiser search within the bounds for at most

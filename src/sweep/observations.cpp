@@ -477,25 +477,43 @@ std::vector<ValidationPoint> observation_points(const ObservationFile& file, std
 }
 
 // One plan over the union of the points' fields (in order of first use, the angle last, then the
-// seed), each distinct point one run; each point's place names its run.
-ValidationPlan plan_of(std::vector<ValidationPoint>& points, std::vector<std::string> order) {
+// seed), each distinct point one run; each point's place names its run. With `early_exit`, a run
+// every observation of which is decided at a face impact (decided_at_impact) ends there: its point
+// has run.end_at_impact, a field of its own after the seed.
+ValidationPlan plan_of(const ObservationFile& file, std::vector<ValidationPoint>& points, std::vector<std::string> order,
+                       bool early_exit) {
     ValidationPlan vp;
     vp.plan.base = json::object();
     std::stable_partition(order.begin(), order.end(), [](const std::string& f) { return f != "ramp.angle_deg"; });
     order.push_back("run.seed");
-    vp.plan.fields = order;
-    vp.plan.flags = order;
-    std::map<std::string, std::size_t> planned;  // a point's text -> its run
+    const bool set_by_caller = std::find(order.begin(), order.end(), "run.end_at_impact") != order.end();
+    std::vector<std::string> keys;
+    std::map<std::string, int> end_at;  // a point's text -> the impact every observation of it is decided at, or 0
     for (ValidationPoint& p : points) {
         p.fields["run.seed"] = p.place.seed;
         json ordered = json::object();
         for (const std::string& f : order)
             if (p.fields.contains(f)) ordered[f] = p.fields[f];
-        const std::string key = ordered.dump();
-        auto it = planned.find(key);
+        keys.push_back(ordered.dump());
+        const int decided = early_exit && !set_by_caller ? decided_at_impact(file.observations[p.place.observation]) : 0;
+        const auto [it, first] = end_at.emplace(keys.back(), decided);
+        if (!first) it->second = (it->second == 0 || decided == 0) ? 0 : std::max(it->second, decided);
+    }
+    const bool any_early = std::any_of(end_at.begin(), end_at.end(), [](const auto& e) { return e.second > 0; });
+    if (any_early) order.push_back("run.end_at_impact");
+    vp.plan.fields = order;
+    vp.plan.flags = order;
+    std::map<std::string, std::size_t> planned;  // a point's text -> its run
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        ValidationPoint& p = points[i];
+        auto it = planned.find(keys[i]);
         if (it == planned.end()) {
+            json ordered = json::object();
+            for (const std::string& f : order)
+                if (p.fields.contains(f)) ordered[f] = p.fields[f];
+            if (const int e = end_at.at(keys[i]); e > 0) ordered["run.end_at_impact"] = e;
             add_run(vp.plan, ordered);
-            it = planned.emplace(key, vp.plan.runs.size() - 1).first;
+            it = planned.emplace(keys[i], vp.plan.runs.size() - 1).first;
         }
         p.place.run = it->second;
         vp.places.push_back(p.place);
@@ -505,7 +523,21 @@ ValidationPlan plan_of(std::vector<ValidationPoint>& points, std::vector<std::st
 
 }  // namespace
 
-ValidationPlan make_validation_plan(const ObservationFile& file, int seeds, const Overrides& overrides) {
+int decided_at_impact(const Observation& ob) {
+    // Whether a run stopped at its first impact is known once it lands a second face: from then on it
+    // can only stop later, roll to the end or reach the time limit, none of which is that behaviour. An
+    // observation that scores nothing else of its runs (no band, no measured number, no terminal
+    // velocity to report) has what it needs there.
+    const bool first_impact_only =
+        ob.behaviour == "stopped_at_first_impact" || (ob.behaviour.empty() && ob.not_behaviour == "stopped_at_first_impact");
+    if (!first_impact_only || ob.angle_range_deg || ob.distance_m || ob.terminal_velocity_m_s ||
+        !ob.terminal_velocity.empty())
+        return 0;
+    return 2;
+}
+
+ValidationPlan make_validation_plan(const ObservationFile& file, int seeds, const Overrides& overrides,
+                                   bool early_exit) {
     // Every observation's points first, with their place; then one plan over the union of their fields.
     std::vector<ValidationPoint> points;
     std::vector<std::string> order;  // fields in order of first use
@@ -516,7 +548,7 @@ ValidationPlan make_validation_plan(const ObservationFile& file, int seeds, cons
             points.push_back(std::move(p));
         }
     }
-    return plan_of(points, std::move(order));
+    return plan_of(file, points, std::move(order), early_exit);
 }
 
 }  // namespace polyroll::sweep

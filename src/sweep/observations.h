@@ -85,10 +85,17 @@ struct ValidationPlan {
     std::vector<RunPlace> places;  // one per observation run (a run shared by two observations is listed twice)
 };
 
+// The face impact at which everything `ob` scores of a run is known (2: it only asks whether runs
+// stop at their first impact, which a second impact decides), or 0: only at the run's own end.
+int decided_at_impact(const Observation& ob);
+
 // Every observation's runs: its scene, each grid combination, each angle, seeds 1..seeds, with
 // `overrides` (field path -> value, from the command line) on top of each. A run two observations
 // share is planned once. Each point is resolved now: a bad value is an InputError naming the observation.
+// With `early_exit` (calibrate), a run all of whose observations are decided at a face impact
+// (decided_at_impact) ends there: its point sets run.end_at_impact, unless the overrides set it.
 ValidationPlan make_validation_plan(const ObservationFile& file, int seeds,
-                                   const std::vector<std::pair<std::string, nlohmann::ordered_json>>& overrides);
+                                   const std::vector<std::pair<std::string, nlohmann::ordered_json>>& overrides,
+                                   bool early_exit = false);
 
 }  // namespace polyroll::sweep

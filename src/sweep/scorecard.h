@@ -24,6 +24,7 @@ struct ScoredRun {
     std::string behaviour;    // as in the table: rolled_to_end, stopped, ...
     double distance_m = 0.0;
     std::optional<double> terminal_velocity_m_s;
+    double wall_time_s = 0.0;  // what the run cost (calibrate orders the next candidate's runs by it)
 };
 
 // One line of the scorecard.

@@ -54,6 +54,8 @@ RunRecord attempt_run(const SweepPlan& plan, const PlannedRun& run, const fs::pa
         rec.wall_time_s = r.wall_time_s;
         rec.ok = r.measured.behaviour != Behaviour::diverged;
         if (!rec.ok) rec.reason = "diverged: " + r.measured.divergence;
+        // A run the caller ended early is ok; its row says so where a failure would say why.
+        else if (!r.measured.ended_early.empty()) rec.reason = r.measured.ended_early;
         if (!run_dir.empty()) {
             fs::create_directories(run_dir);
             write_file_atomic(run_dir / "summary.json", summary_json(r).dump(2) + "\n");
@@ -119,6 +121,10 @@ SweepReport run_sweep(const SweepPlan& plan, const SweepOptions& o, const std::a
     for (std::size_t i : slice)
         if (!finished.count(i)) todo.push_back(i);
     report.already = slice.size() - todo.size();
+    if (!o.expected_s.empty()) {
+        auto expected = [&](std::size_t i) { return i < o.expected_s.size() ? o.expected_s[i] : -1.0; };
+        std::stable_sort(todo.begin(), todo.end(), [&](std::size_t a, std::size_t b) { return expected(a) > expected(b); });
+    }
 
     // Each run's estimated cost, so the time left weighs the runs left by what they cost.
     std::vector<double> cost(todo.size());

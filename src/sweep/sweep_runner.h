@@ -22,6 +22,11 @@ struct SweepOptions {
     bool trajectories = false;  // also write each run's trajectory.csv
     bool retry_failed = false;  // run again the runs recorded as failed
     bool quiet = false;         // no progress line
+    // By plan index, how long each run is expected to take (calibrate: the same observation run's wall
+    // time for the previous candidate): the longest start first, so that no job is left alone with a
+    // long run at the end. Runs without an expectation (past the vector, or negative) go last, in plan
+    // order. Empty: plan order. Only the order changes: each run's result is its own.
+    std::vector<double> expected_s;
 };
 
 struct SweepReport {

@@ -18,6 +18,7 @@ std::map<std::size_t, ScoredRun> finished_outcomes(const SweepPlan& plan, const 
         const std::size_t c_index = col("index"), c_id = col("run_id"), c_status = col("status"),
                           c_behaviour = col("behaviour"), c_distance = col("distance_m"),
                           c_terminal = col("terminal_velocity_m_s");
+        const std::optional<std::size_t> c_wall = find_column(t.header, "wall_time_s");
         for (const auto& r : t.rows) {
             const std::size_t i = std::stoull(r.at(c_index));
             if (i >= plan.runs.size() || plan.runs[i].id != r.at(c_id)) continue;
@@ -28,6 +29,7 @@ std::map<std::size_t, ScoredRun> finished_outcomes(const SweepPlan& plan, const 
             s.behaviour = r.at(c_behaviour);
             if (!r.at(c_distance).empty()) s.distance_m = std::stod(r.at(c_distance));
             if (!r.at(c_terminal).empty()) s.terminal_velocity_m_s = std::stod(r.at(c_terminal));
+            if (c_wall && !r.at(*c_wall).empty()) s.wall_time_s = std::stod(r.at(*c_wall));
             out[i] = s;
         }
     }

@@ -27,6 +27,7 @@ json summary_json(const RunResult& r) {
     results["model"] = to_string(r.scene.run.model);
     results["behaviour"] = to_string(m.behaviour);
     if (m.behaviour == Behaviour::diverged) results["divergence"] = m.divergence;
+    if (!m.ended_early.empty()) results["ended_early"] = m.ended_early;
     results["distance_m"] = m.distance_m;
     results["terminal_velocity_m_s"] = m.terminal_velocity_m_s ? json(*m.terminal_velocity_m_s) : json(nullptr);
     results["terminal_velocity_faces"] = m.terminal_velocity_faces;

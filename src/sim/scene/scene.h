@@ -124,6 +124,10 @@ struct RunParams {
     double settle_time_s = 0.0;    // longest time given to the grains to settle before release
     double rest_speed_m_s = 0.0;   // the shell counts as at rest below this speed...
     double rest_time_s = 0.0;      // ... held for this long
+    // The run ends at this face impact (1 = the first face landed), whatever the shell does next: an
+    // early exit for a caller that needs no more (calibrate's runs for an observation decided once the
+    // shell is past its first impact). 0: never. Read by the shell tracker (the grain and 3D models).
+    int end_at_impact = 0;
 };
 
 struct Scene {

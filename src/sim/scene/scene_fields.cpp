@@ -250,6 +250,10 @@ std::vector<SceneField> make_table() {
             .range(0.0, 1.0).min_open().unit("m/s").help("the shell counts as at rest below this speed..."),
         Row("run.rest_time_s", T::number, member<&Scene::run, &RunParams::rest_time_s>())
             .range(0.0, 60.0).min_open().unit("s").help("... held for this long"),
+        Row("run.end_at_impact", T::integer, member<&Scene::run, &RunParams::end_at_impact>())
+            .range(0, 100000)
+            .help("the run ends at this face impact whatever the shell does next (behaviour time_limit, its summary "
+                  "says it ended early): calibrate's early exit where an observation is decided; 0: never"),
 
         // --- dem3d: only the 3D reference (--model dem3d) reads these
         Row("dem3d.contact_time_s", T::number, member<&Scene::dem3d, &Dem3dParams::contact_time_s>())
