@@ -11,11 +11,23 @@
 
 namespace polyroll::render {
 
+std::string race_outcome_text(Behaviour b) {
+    switch (b) {
+        case Behaviour::stopped_at_first_impact: return "stopped at its first impact";
+        case Behaviour::stopped: return "stopped";
+        case Behaviour::rolled_to_end: return "rolled to the end";
+        case Behaviour::time_limit: return "time limit reached";
+        case Behaviour::diverged: return "diverged";
+        case Behaviour::running: return "";
+    }
+    return "";
+}
+
 namespace {
 
 // The panel: the time, then one row per lane: its badge, its parameters, its distance and face
-// impacts, and its speed (or, on the held frames, its ending). Returns its bottom edge.
-float draw_race_panel(const std::vector<Snapshot>& lanes, const FrameOptions& o, const FrameLayout& L,
+// impacts, and its speed (or, on the held frames, its ending). Returns its box.
+PxRect draw_race_panel(const std::vector<Snapshot>& lanes, const FrameOptions& o, const FrameLayout& L,
                       const std::vector<std::string>& outcomes, const FontAtlas& font, Layer& out) {
     const float u = L.unit;
     const float pad = 14.0f * u;
@@ -33,6 +45,10 @@ float draw_race_panel(const std::vector<Snapshot>& lanes, const FrameOptions& o,
     for (const Snapshot& s : lanes) params_w = std::max(params_w, font.text_width(params_text(s), L.label));
     const float badge_r = 0.62f * font.line_height(L.label);
     const float gap = 22.0f * u;
+    float last_w = font.text_width("\u22120.00 m/s", L.label);
+    for (Behaviour b : {Behaviour::stopped_at_first_impact, Behaviour::stopped, Behaviour::rolled_to_end,
+                        Behaviour::time_limit, Behaviour::diverged})
+        last_w = std::max(last_w, font.text_width(race_outcome_text(b), L.label));
     const float row_h = std::max(2.0f * badge_r, font.line_height(L.label)) + 8.0f * u;
     y += 10.0f * u;
     for (size_t i = 0; i < lanes.size(); ++i) {
@@ -49,23 +65,22 @@ float draw_race_panel(const std::vector<Snapshot>& lanes, const FrameOptions& o,
         font.layout(distance, L.label, {x + font.text_width("0.000 m", L.label) - font.text_width(distance, L.label), base},
                     palette::text, out.glyphs);
         x += font.text_width("0.000 m", L.label) + gap;
-        const std::string impacts = fmt::format("{} face impact{}", s.impacts, s.impacts == 1 ? "" : "s");
+        const std::string impacts = fmt::format("{} impact{}", s.impacts, s.impacts == 1 ? "" : "s");
         font.layout(impacts, L.label, {x, base}, palette::text_dim, out.glyphs);
-        x += font.text_width("000 face impacts", L.label) + gap;
-        const std::string last = i < outcomes.size() && !outcomes[i].empty()
-                                     ? outcomes[i]
-                                     : signed_value(s.now.speed_m_s, 2) + " m/s";
-        x += font.layout(last, L.label, {x, base}, i < outcomes.size() && !outcomes[i].empty() ? palette::text
-                                                                                                 : palette::text_dim,
-                         out.glyphs);
+        x += font.text_width("000 impacts", L.label) + gap;
+        // The speed while running, the ending on the held frames: the column as wide as the widest
+        // of them, so the panel (and the plot beside it) keeps its size from the first frame to the last.
+        const bool ended = i < outcomes.size() && !outcomes[i].empty();
+        const std::string last = ended ? outcomes[i] : signed_value(s.now.speed_m_s, 2) + " m/s";
+        font.layout(last, L.label, {x, base}, ended ? palette::text : palette::text_dim, out.glyphs);
+        x += last_w;
         content_w = std::max(content_w, x - (r.x + pad));
         y += row_h;
     }
-    const float bottom = y + pad - 4.0f * u;
-    out.shapes[box_index] = rounded_box({r.x, r.y}, {content_w + 2.0f * pad, bottom - r.y}, 10.0f * u,
-                                        palette::panel_fill, std::max(1.0f, 1.5f * u), palette::panel_border,
-                                        Tag::panel);
-    return bottom;
+    const PxRect box{r.x, r.y, content_w + 2.0f * pad, y + pad - 4.0f * u - r.y};
+    out.shapes[box_index] = rounded_box({box.x, box.y}, {box.width, box.height}, 10.0f * u, palette::panel_fill,
+                                        std::max(1.0f, 1.5f * u), palette::panel_border, Tag::panel);
+    return box;
 }
 
 }  // namespace
@@ -83,10 +98,15 @@ DrawList build_race_frame(const std::vector<Snapshot>& lanes, const FrameOptions
     // The panel and the plot first, to know where the lanes may start: the overlay is drawn after.
     DrawList overlay_list;
     Layer& overlay = overlay_list.new_layer();
-    const float panel_bottom = draw_race_panel(lanes, o, L, outcomes, font, overlay);
+    const PxRect panel = draw_race_panel(lanes, o, L, outcomes, font, overlay);
+    const float panel_bottom = panel.y + panel.height;
     FrameLayout plot_layout = L;
-    // The plot beside the panel, as tall as it (at least the frames' plot height).
+    // The plot beside the panel, as tall as it (at least the frames' plot height), in the width the
+    // panel leaves (a narrower plot than a single run's frame, if need be).
     plot_layout.plot.height = std::max(L.plot.height, panel_bottom - L.plot.y);
+    const float plot_left = std::max(L.plot.x, panel.x + panel.width + L.margin);
+    plot_layout.plot.width = std::max(1.0f, L.plot.x + L.plot.width - plot_left);
+    plot_layout.plot.x = plot_left;
     PlotAxes axes;
     axes.time_max_s = o.plot_time_max_s.value_or(1.0);
     axes.speed_min_m_s = o.plot_speed_min_m_s.value_or(0.0);

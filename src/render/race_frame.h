@@ -11,13 +11,18 @@
 #include "render/font.h"
 #include "render/frame_layout.h"
 #include "render/snapshot.h"
+#include "sim/measurements.h"
 
 namespace polyroll::render {
 
-// `outcomes`: each lane's ending in words on the held frames (render_sequence.h's outcome_text), or
-// empty while the race runs. The options' plot axes and colour map hold for every lane.
+// `outcomes`: each lane's ending on the held frames (race_outcome_text), or empty while the race
+// runs. The options' plot axes and colour map hold for every lane.
 DrawList build_race_frame(const std::vector<Snapshot>& lanes, const FrameOptions& o,
                           const std::vector<std::string>& outcomes, const FontAtlas& font);
+
+// A lane's ending in a few words, for the panel's row beside its distance: "stopped at its first
+// impact", "rolled to the end", "time limit reached" ("" while running).
+std::string race_outcome_text(Behaviour b);
 
 // Every font size a race frame of these options uses.
 std::vector<FontSpec> race_frame_fonts(const FrameOptions& o);

@@ -173,9 +173,9 @@ SequenceResult render_lanes(const std::vector<Scene>& scenes, const SequenceSett
     // The held frames carry the outcome banner: the run's ending said in words.
     if (result.hold_frames > 0) {
         std::vector<std::string> outcomes;
-        for (const RunResult& r : result.lane_runs) outcomes.push_back(outcome_text(r.measured));
+        for (const RunResult& r : result.lane_runs) outcomes.push_back(race_outcome_text(r.measured.behaviour));
         FrameOptions held = options;
-        held.outcome = outcomes.front();
+        held.outcome = outcome_text(result.run.measured);
         emit(static_cast<int>(result.hold_frames), held, outcomes);
     }
     if (encoder) {
