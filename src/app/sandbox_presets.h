@@ -21,7 +21,7 @@ using SandboxPreset = WindowPreset;
 inline std::vector<std::string> sandbox_preset_names() { return window_preset_names(); }
 
 // Throws InputError naming the choices for an unknown name, or a lane count out of range.
-inline SandboxPreset sandbox_preset(const std::string& name) { return window_preset(name, "--preset"); }
+inline SandboxPreset sandbox_preset(const std::string& name) { return window_preset(name); }
 
 // Each lane's document resolved over assets/defaults.json (throws InputError).
 inline std::vector<Scene> resolve_preset(const SandboxPreset& preset) { return resolve_window_preset(preset); }

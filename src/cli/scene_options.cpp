@@ -137,7 +137,7 @@ SceneLayer SceneOptions::cli_layer() const {
 }
 
 Scene SceneOptions::resolve_lane(const WindowPreset& preset, int k) const {
-    return resolve_scene({window_preset_lane(preset, k, "--lane"), cli_layer()});
+    return resolve_scene({window_preset_lane(preset, k), cli_layer()});
 }
 
 std::vector<Scene> SceneOptions::resolve_lanes() const {
@@ -145,7 +145,7 @@ std::vector<Scene> SceneOptions::resolve_lanes() const {
     if (scene_option_.count() > 0)
         throw InputError(fmt::format("--scene {} and --preset {}: both name the scene (allowed: one of them)",
                                      scene_file_, preset_));
-    const WindowPreset preset = window_preset(preset_, "--preset");
+    const WindowPreset preset = window_preset(preset_);
     if (lane_option_.count() > 0) return {resolve_lane(preset, lane_)};
     std::vector<Scene> lanes;
     for (int k = 1; k <= static_cast<int>(preset.lanes.size()); ++k) lanes.push_back(resolve_lane(preset, k));
@@ -159,7 +159,7 @@ Scene SceneOptions::resolve() const {
         if (scene_option_.count() > 0)
             throw InputError(fmt::format("--scene {} and --preset {}: both name the scene (allowed: one of them)",
                                          scene_file_, preset_));
-        const WindowPreset preset = window_preset(preset_, "--preset");
+        const WindowPreset preset = window_preset(preset_);
         const int n = static_cast<int>(preset.lanes.size());
         if (lane_option_.count() == 0 && n > 1)
             throw InputError(fmt::format("--preset {}: a race of {} lanes; this command runs one (allowed: --lane 1 to "

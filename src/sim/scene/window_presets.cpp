@@ -19,13 +19,14 @@ std::vector<std::string> window_preset_names() {
     return names;
 }
 
-WindowPreset window_preset(const std::string& name, const std::string& what) {
+WindowPreset window_preset(const std::string& name, const std::string& label) {
     const auto& all = presets_json();
     const auto it = all.find(name);
     if (it == all.end()) {
         std::string allowed;
         for (const std::string& n : window_preset_names()) allowed += (allowed.empty() ? "" : ", ") + n;
-        throw InputError(fmt::format("{} {}: unknown sandbox preset (allowed: {})", what, name, allowed));
+        throw InputError(fmt::format("{}: unknown window preset (allowed: {}; polyroll presets describes them)",
+                                     label.empty() ? "--preset " + name : label, allowed));
     }
     WindowPreset p;
     p.name = name;
@@ -37,12 +38,12 @@ WindowPreset window_preset(const std::string& name, const std::string& what) {
     return p;
 }
 
-SceneLayer window_preset_lane(const WindowPreset& preset, int k, const std::string& what) {
+SceneLayer window_preset_lane(const WindowPreset& preset, int k, const std::string& label) {
     const int n = static_cast<int>(preset.lanes.size());
+    const std::string said = label.empty() ? fmt::format("--lane {}", k) : label;
     if (k < 1 || k > n)
-        throw InputError(n == 1 ? fmt::format("{} {}: the preset {} has one lane (allowed: 1)", what, k, preset.name)
-                                : fmt::format("{} {}: the preset {} has {} lanes (allowed: 1 to {})", what, k,
-                                              preset.name, n, n));
+        throw InputError(n == 1 ? fmt::format("{}: the preset {} has one lane (allowed: 1)", said, preset.name)
+                                : fmt::format("{}: the preset {} has {} lanes (allowed: 1 to {})", said, preset.name, n, n));
     return SceneLayer{preset.lanes[static_cast<size_t>(k - 1)],
                       fmt::format("sandbox preset {} lane {}", preset.name, k), {}};
 }

@@ -28,13 +28,15 @@ struct WindowPreset {
 // In the file's order (the panel's order).
 std::vector<std::string> window_preset_names();
 
-// Throws InputError for an unknown name, naming `what` (as the caller's user typed it: "--preset",
-// "preset=") and listing the names; or for a lane count out of range.
-WindowPreset window_preset(const std::string& name, const std::string& what = "--preset");
+// Throws InputError for an unknown name, starting with `label` (the argument as the user wrote it:
+// "--preset rcae", "preset='rcae'"; "--preset NAME" when empty) and listing the names; or for a lane
+// count out of range.
+WindowPreset window_preset(const std::string& name, const std::string& label = "");
 
-// Lane k (1-based) of a preset as a scene layer ("window preset race, lane 2"): InputError naming
-// `what` ("--lane", "lane=") and the lanes there are for a k out of range.
-SceneLayer window_preset_lane(const WindowPreset& preset, int k, const std::string& what = "--lane");
+// Lane k (1-based) of a preset as a scene layer (its origin "sandbox preset race lane 2"):
+// InputError starting with `label` ("--lane 5", "lane=5"; "--lane K" when empty) and naming the
+// lanes there are, for a k out of range.
+SceneLayer window_preset_lane(const WindowPreset& preset, int k, const std::string& label = "");
 
 // Each lane's document resolved over assets/defaults.json (throws InputError).
 std::vector<Scene> resolve_window_preset(const WindowPreset& preset);
