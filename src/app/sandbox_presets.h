@@ -1,5 +1,6 @@
 // Sandbox presets (assets/sandbox-presets.json): named whole scenes, each a list of one to four
-// lanes, every lane a scene document resolved over the defaults like a scene file.
+// lanes, every lane a scene document resolved over the defaults like a scene file (read by
+// sim/scene/window_presets.h); here the window's panel of them.
 #pragma once
 
 #include <string>
@@ -8,23 +9,22 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/scene/scene.h"
+#include "sim/scene/window_presets.h"
 
 namespace polyroll::app {
 
-struct SandboxPreset {
-    std::string name;
-    std::string description;
-    std::vector<nlohmann::ordered_json> lanes;  // scene documents, 1 to kMaxLanes
-};
+// The presets themselves are the core's (sim/scene/window_presets.h: the command line and Python
+// read them too); these are the window's names for them.
+using SandboxPreset = WindowPreset;
 
 // In the file's order (the panel's order).
-std::vector<std::string> sandbox_preset_names();
+inline std::vector<std::string> sandbox_preset_names() { return window_preset_names(); }
 
 // Throws InputError naming the choices for an unknown name, or a lane count out of range.
-SandboxPreset sandbox_preset(const std::string& name);
+inline SandboxPreset sandbox_preset(const std::string& name) { return window_preset(name); }
 
 // Each lane's document resolved over assets/defaults.json (throws InputError).
-std::vector<Scene> resolve_preset(const SandboxPreset& preset);
+inline std::vector<Scene> resolve_preset(const SandboxPreset& preset) { return resolve_window_preset(preset); }
 
 // The panel's preset buttons (GL-free, so the tests check them): the demonstrations first (presets
 // with a "demo", labelled by it: "stops abruptly", "rolls to a terminal velocity"), then the presets

@@ -6,6 +6,8 @@
 
 #include <array>
 
+#include "sim/scene/window_presets.h"
+
 namespace polyroll::app {
 
 // --- Control ranges. The limits of the scene fields the panel edits are the field table's
@@ -15,7 +17,7 @@ namespace polyroll::app {
 inline constexpr int kSidesSliderMax = 24;  // 3 to 24 sides on the slider, up to 64 typed
 // The experiment ran 5-25 degrees; above about 15 the polygons hop.
 inline constexpr double kAngleSliderMaxDeg = 45.0;
-inline constexpr int kMaxLanes = 4;  // up to four polygons race: more lanes would be too narrow to read
+inline constexpr int kMaxLanes = kMaxRaceLanes;  // up to four polygons race (sim/scene/window_presets.h)
 
 // --- Transport. Slow motion halves the rate down to 1/16: slow enough to watch one impact.
 inline constexpr std::array<int, 5> kSlowMotionDivisors = {1, 2, 4, 8, 16};

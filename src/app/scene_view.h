@@ -1,53 +1,17 @@
-// The sandbox's scene view as a draw list (GL-free): what a frame draws (the world and the close-up,
-// in render/view_style.h's style) for each lane through the lane's camera (view_control.h), clipped
-// to the view, plus what only the window has: the lanes' badges in their colours. The
-// window draws it with render::GlRenderer, the same renderer as polyroll render's frames.
+// The sandbox's scene view: the lanes side by side as a draw list, now in the renderer
+// (render/scene_view.h) so that polyroll render draws a race as the window does; the window's names
+// for it.
 #pragma once
 
-#include <optional>
-#include <vector>
-
 #include "app/view_control.h"
-#include "render/draw_list.h"
-#include "render/font.h"
-#include "render/snapshot.h"
-#include "render/view_style.h"
+#include "render/scene_view.h"
 
 namespace polyroll::app {
 
-struct SceneViewOptions {
-    int width_px = 0, height_px = 0;  // the whole framebuffer
-    render::PxRect area;              // the part the scene fills (the rest is under the panels)
-    float unit = 1.0f;                // design pixel: the UI scale
-    bool follow = false;
-    render::GrainColouring colouring = render::GrainColouring::material;
-    double colour_speed_max_m_s = 1.0;
-    ViewTransform view;
-    // Whole-ramp view: a close-up of this lane's polygon in the free corner under the ramp
-    // (-1 for none). The polygon is small on a 2.5 m ramp; the close-up shows its grains.
-    int close_up_lane = 0;
-    // The colour of the framebuffer outside the area (the panels' background, which the panels
-    // leave to the clear), or none to clear it all to the scene's background.
-    std::optional<render::Rgba> surround;
-};
-
-// The font sizes the view uses at a UI scale (the atlas must hold them).
-std::vector<render::FontSpec> scene_view_fonts(float unit);
-
-// Each lane's colour: its label, its plot trace and its readout column share it.
-render::Rgba lane_colour(size_t lane);
-
-// Where the view put what must stay visible, in framebuffer pixels, for the layout checks
-// (polyroll-sandbox --layout-report): each lane's release point (its ramp's upper end) and badge,
-// and the close-up.
-struct SceneViewBoxes {
-    std::vector<render::Px> ramp_starts;
-    std::vector<render::PxRect> badges;
-    std::vector<render::PxRect> close_up;  // none or one
-};
-
-render::DrawList build_scene_view(const std::vector<render::Snapshot>& lanes, const SceneViewOptions& o,
-                                  const render::FontAtlas& font,
-                                  SceneViewBoxes* boxes = nullptr);
+using render::build_scene_view;
+using render::lane_colour;
+using render::scene_view_fonts;
+using render::SceneViewBoxes;
+using render::SceneViewOptions;
 
 }  // namespace polyroll::app

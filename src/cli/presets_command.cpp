@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "sim/assets.h"
 #include "sim/geometry/shell_properties.h"
+#include "sim/scene/window_presets.h"
 
 namespace polyroll::cli {
 
@@ -23,6 +24,15 @@ std::string value_text(std::string_view key, const nlohmann::ordered_json& v) {
     }
     if (v.is_number_float()) return fmt::format("{:g}", v.get<double>());
     return v.dump();
+}
+
+// A race lane in a line: "the small hexagon half full of BBs, 18 deg on the air-track ramp".
+std::string lane_text(const Scene& s) {
+    const std::string fill = s.fill.ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill.ratio, s.fill.material.preset)
+                                                : std::string("empty");
+    return fmt::format("{}, {}, {:g} deg on {}", s.shell.preset.empty() ? fmt::format("n = {}", s.shell.sides)
+                                                                        : s.shell.preset,
+                       fill, s.ramp.angle_deg, s.ramp.preset.empty() ? "a custom ramp" : s.ramp.preset);
 }
 
 int list(bool as_json) {
@@ -53,11 +63,26 @@ int list(bool as_json) {
         }
         fmt::print("\n");
     }
-    // The window's whole scenes (polyroll-sandbox --preset NAME, the page's ?preset=NAME) and the
+    // The window's whole scenes, each with its lanes, and which surface takes them; then the
     // observations validate and calibrate score (--only ID).
-    fmt::print("window presets (assets/sandbox-presets.json; polyroll-sandbox --preset NAME):\n");
-    for (const auto& [name, entry] : assets::file("sandbox-presets.json").at("presets").items())
-        fmt::print("  {:<24} {}\n", name, entry.value("description", std::string()));
+    fmt::print("window presets (assets/sandbox-presets.json), whole scenes of one lane or a race of several:\n");
+    for (const std::string& name : window_preset_names()) {
+        const WindowPreset preset = window_preset(name);
+        const std::vector<Scene> lanes = resolve_window_preset(preset);
+        fmt::print("  {:<24} {}\n", lanes.size() > 1 ? fmt::format("{} ({} lanes)", name, lanes.size()) : name,
+                   preset.description);
+        if (lanes.size() > 1)
+            for (size_t k = 0; k < lanes.size(); ++k)
+                fmt::print("  {:<24}   lane {}: {}\n", "", k + 1, lane_text(lanes[k]));
+    }
+    fmt::print("  Which surface takes which:\n"
+               "    the window     polyroll-sandbox --preset NAME          every preset, a race's lanes side by side\n"
+               "    the page       index.html?preset=NAME                  every preset, as the window\n"
+               "    render         polyroll render --preset NAME --out DIR every preset, a race's lanes side by side\n"
+               "                   (--lane K: one lane)\n"
+               "    run            polyroll run --preset NAME [--lane K]   one lane: a race needs --lane\n"
+               "    Python         polyroll.run(preset=NAME, lane=K)       one lane: a race needs lane=; also\n"
+               "                   polyroll.Simulation and polyroll.scene; polyroll.window_presets() lists them\n");
     fmt::print("\nobservations (assets/experiment.json; polyroll validate --only ID):\n");
     for (const auto& ob : assets::file("experiment.json").at("observations"))
         fmt::print("  {:<36} {}\n", ob.at("id").get<std::string>(), ob.value("source", std::string()));
@@ -78,6 +103,7 @@ Action add_presets_command(Command& app) {
                            "Examples:\n"
                            "  polyroll presets\n"
                            "  polyroll presets --json > presets.json\n"
+                           "  polyroll render --preset race --out frames/race   # a window preset, headless\n"
                            "  {}=my-assets polyroll presets       # my-assets/materials.json and the rest",
                            assets::kDirectoryVariable, assets::kDirectoryVariable));
     sub.add_flag("--json", *as_json, "print them, with their sources, as JSON");

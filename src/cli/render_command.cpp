@@ -216,20 +216,49 @@ void announce(const Scene& scene, const RenderOptions& o, const Size& size) {
     std::fflush(stdout);
 }
 
+// The race's lines: the preset, then each lane in its number.
+void announce_race(const std::vector<Scene>& lanes, const RenderOptions& o, const Size& size) {
+    fmt::print("polyroll render: preset {}, {} lanes side by side, {}x{} at {:g} fps{}{}\n", o.scene.preset(),
+               lanes.size(), size.width, size.height, o.fps, o.slow > 1 ? fmt::format(", {}x slow motion", o.slow) : "",
+               o.follow ? ", following the leading polygon" : "");
+    for (size_t i = 0; i < lanes.size(); ++i) {
+        const Scene& s = lanes[i];
+        const std::string fill = s.fill.ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill.ratio, s.fill.material.preset)
+                                                    : std::string("empty");
+        fmt::print("  lane {}     n = {}, {}, theta = {:g} deg on {}\n", i + 1, s.shell.sides, fill, s.ramp.angle_deg,
+                   s.ramp.preset.empty() ? "a custom ramp" : "the " + s.ramp.preset + " ramp");
+    }
+    std::fflush(stdout);
+}
+
+// A race's lane's files go in a folder of their own: OUT/lane-1/summary.json, ...
+fs::path lane_folder(const RenderOptions& o, size_t i) { return fs::path(o.out) / fmt::format("lane-{}", i + 1); }
+
 // What was rendered, where, and how long it took.
 void report(const render::SequenceResult& res, const RenderOptions& o) {
-    const Measurements& m = res.run.measured;
     const long total = res.run_frames + res.hold_frames;
     const double fps_wall = res.render_wall_s > 0 ? static_cast<double>(total) / res.render_wall_s : 0.0;
     const std::string folder = (fs::path(o.out) / "").string();
     fmt::print("  frames     {} ({} of the run, {} holding the end): {}{} ... {}\n", total, res.run_frames,
                res.hold_frames, folder, render::frame_file_name(1), render::frame_file_name(total));
-    fmt::print("  run        {} after {:.3f} s, distance {:.3f} m, {} face impact{}\n", to_string(m.behaviour),
-               m.end_time_s, m.distance_m, m.impacts.size(), m.impacts.size() == 1 ? "" : "s");
-    fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after a {:.2f} s data run; {:.1f} MB of PNG\n",
-               res.render_wall_s, fps_wall, res.run.wall_time_s, static_cast<double>(res.png_bytes) / 1e6);
+    const bool race = res.lane_runs.size() > 1;
+    double data_wall_s = 0.0;
+    for (size_t i = 0; i < res.lane_runs.size(); ++i) {
+        const Measurements& lm = res.lane_runs[i].measured;
+        data_wall_s += res.lane_runs[i].wall_time_s;
+        fmt::print("  {:<10} {} after {:.3f} s, distance {:.3f} m, {} face impact{}\n",
+                   race ? fmt::format("lane {}", i + 1) : std::string("run"), to_string(lm.behaviour), lm.end_time_s,
+                   lm.distance_m, lm.impacts.size(), lm.impacts.size() == 1 ? "" : "s");
+    }
+    fmt::print("  time       {:.2f} s rendering ({:.0f} frames/s) after {} {:.2f} s data run{}; {:.1f} MB of PNG\n",
+               res.render_wall_s, fps_wall, race ? "the lanes'" : "a", data_wall_s, race ? "s" : "",
+               static_cast<double>(res.png_bytes) / 1e6);
     // Joined as paths: --out frames/ must not print frames//summary.json.
-    fmt::print("  files      {}, trajectory.csv, impacts.csv\n", (fs::path(o.out) / "summary.json").string());
+    if (race)
+        fmt::print("  files      {}, trajectory.csv, impacts.csv (and lane-2/ ... lane-{}/ alike)\n",
+                   (lane_folder(o, 0) / "summary.json").string(), res.lane_runs.size());
+    else
+        fmt::print("  files      {}, trajectory.csv, impacts.csv\n", (fs::path(o.out) / "summary.json").string());
     std::fflush(stdout);
 
 }
@@ -263,7 +292,8 @@ int render(const RenderOptions& given) {
     const Size size = parse_size(o.size);
     check_flags(o);
     const std::string ffmpeg = o.video.empty() ? std::string() : process::find_on_path("ffmpeg");
-    const Scene scene = o.scene.resolve();
+    const std::vector<Scene> lanes = o.scene.resolve_lanes();
+    const Scene& scene = lanes.front();
     const std::optional<fs::path> created = prepare_output_dir(o.out, o.force);
     const CleanUpOnInterrupt on_interrupt("polyroll render", created);
     if (!o.video.empty() && ffmpeg.empty())
@@ -279,14 +309,24 @@ int render(const RenderOptions& given) {
     st.slow = o.slow;
     st.hold_s = o.hold_s;
 
-    announce(scene, o, size);
+    const bool race = lanes.size() > 1;
+    if (race) announce_race(lanes, o, size);
+    else announce(scene, o, size);
     render::SequenceResult res;
     ProgressLine progress(size.width, size.height, o.out);
     try {
         if (o.force) remove_old_frames(o.out);
-        res = render::render_sequence(scene, st, o.out,
-                                      [&](const render::SequenceProgress& p) { progress.update(p); });
-        write_run_files(o.out, res.run);
+        const auto on_progress = [&](const render::SequenceProgress& p) { progress.update(p); };
+        if (race) {
+            res = render::render_race(lanes, st, o.out, on_progress);
+            for (size_t i = 0; i < res.lane_runs.size(); ++i) {
+                fs::create_directories(lane_folder(o, i));
+                write_run_files(lane_folder(o, i).string(), res.lane_runs[i]);
+            }
+        } else {
+            res = render::render_sequence(scene, st, o.out, on_progress);
+            write_run_files(o.out, res.run);
+        }
     } catch (...) {
         // Nothing half-written: a folder this render created goes with it.
         std::error_code ec;
@@ -295,10 +335,14 @@ int render(const RenderOptions& given) {
     }
 
     report(res, o);
-    const Measurements& m = res.run.measured;
-    const int code = m.behaviour == Behaviour::diverged ? kExitDiverged : kExitOk;
-    if (m.behaviour == Behaviour::diverged)
-        fmt::print(stderr, "polyroll: the run diverged {}\n", m.divergence);
+    int code = kExitOk;
+    for (size_t i = 0; i < res.lane_runs.size(); ++i) {
+        const Measurements& m = res.lane_runs[i].measured;
+        if (m.behaviour != Behaviour::diverged) continue;
+        code = kExitDiverged;
+        fmt::print(stderr, "polyroll: {}the run diverged {}\n", race ? fmt::format("lane {}: ", i + 1) : "",
+                   m.divergence);
+    }
     return o.video.empty() ? code : make_video(o, ffmpeg, code);
 }
 
@@ -316,10 +360,15 @@ Action add_render_command(Command& app) {
         "  polyroll render --sides 8 --fill 0.375 --material peas --angle 12 --fps 60 --size 1920x1080 \\\n"
         "      --out frames/oct --video oct.mp4\n"
         "  polyroll render --scene my-scene.json --follow --slow 4 --out frames/slow\n"
+        "  polyroll render --preset race --out frames/race       # the window's race: its lanes side by side\n"
+        "  polyroll render --preset race --lane 2 --out frames/lane2\n"
+        "--preset NAME is a preset of the window (polyroll presets lists them): a race's lanes are drawn side by\n"
+        "side in each frame as the window shows them, each lane's files in OUT/lane-K/; --lane K draws one lane.\n"
         "Exit codes: 0 done, 2 bad input, 3 the run diverged (frames and files are written), 130 interrupted (the\n"
         "folder it made is removed), 1 other failure (including a --video that could not be made; the frames are\n"
         "still written).");
     opts->scene.add_to(sub);
+    opts->scene.add_preset_to(sub);
     sub.add_option("--out", opts->out, "folder for the frames and the run's files").required().group("Output");
     sub.add_option("--size", opts->size, "frame size WIDTHxHEIGHT in pixels (default 1280x720)").group("Output");
     sub.add_option("--fps", opts->fps, "frames per second of video, 1 to 240 (default 30)").group("Output");

@@ -181,9 +181,12 @@ Action add_run_command(Command& app) {
         "  polyroll run --sides 8 --fill 0.375 --material rice --angle 14 --out runs/oct-rice\n"
         "  polyroll run --scene my-scene.json --json\n"
         "  polyroll run --set fill.material.wall_friction=0.05 --set ramp.length_m=1.5\n"
+        "  polyroll run --preset hexagon-large-rice           # a preset of the window (polyroll presets)\n"
+        "  polyroll run --preset race --lane 2                # one lane of a race\n"
         "Exit codes: 0 done, 2 bad input, 3 the run diverged (its files say where), 130 interrupted (the folder it\n"
         "made is removed), 1 other failure.");
     opts->scene.add_to(sub);
+    opts->scene.add_preset_to(sub);
     sub.add_option("--out", opts->out, "folder for summary.json, trajectory.csv and impacts.csv").group("Output");
     sub.add_flag("--json", opts->json, "print the summary as JSON instead of text").group("Output");
     sub.add_flag("--force", opts->force, "write into an existing non-empty --out folder").group("Output");

@@ -106,9 +106,15 @@ std::vector<std::pair<std::string, json>> SceneOptions::parsed_sets() const {
     return out;
 }
 
-Scene SceneOptions::resolve() const {
-    std::vector<SceneLayer> layers;
-    if (scene_option_.count() > 0) layers.push_back(read_scene_file(scene_file_));
+void SceneOptions::add_preset_to(flags::Command& app) {
+    preset_option_ = app.add_option("--preset", preset_,
+                                    "a preset of the window (polyroll presets lists them, with their lanes); the "
+                                    "flags given too override it")
+                         .group("Scene");
+    lane_option_ = app.add_option("--lane", lane_, "which lane of the --preset, 1 to its lane count").group("Scene");
+}
+
+SceneLayer SceneOptions::cli_layer() const {
     SceneLayer cli;
     cli.origin = "command line";
     cli.doc = json::object();
@@ -127,7 +133,43 @@ Scene SceneOptions::resolve() const {
         cli.field_labels.emplace_back(field, "--set " + field);
         node_at(cli.doc, field) = set.second;
     }
-    layers.push_back(cli);
+    return cli;
+}
+
+Scene SceneOptions::resolve_lane(const WindowPreset& preset, int k) const {
+    return resolve_scene({window_preset_lane(preset, k), cli_layer()});
+}
+
+std::vector<Scene> SceneOptions::resolve_lanes() const {
+    if (preset_option_.count() == 0) return {resolve()};
+    if (scene_option_.count() > 0)
+        throw InputError(fmt::format("--scene {} and --preset {}: both name the scene (allowed: one of them)",
+                                     scene_file_, preset_));
+    const WindowPreset preset = window_preset(preset_);
+    if (lane_option_.count() > 0) return {resolve_lane(preset, lane_)};
+    std::vector<Scene> lanes;
+    for (int k = 1; k <= static_cast<int>(preset.lanes.size()); ++k) lanes.push_back(resolve_lane(preset, k));
+    return lanes;
+}
+
+Scene SceneOptions::resolve() const {
+    if (lane_option_.count() > 0 && preset_option_.count() == 0)
+        throw InputError(fmt::format("--lane {}: a lane of a window preset (allowed: with --preset NAME)", lane_));
+    if (preset_option_.count() > 0) {
+        if (scene_option_.count() > 0)
+            throw InputError(fmt::format("--scene {} and --preset {}: both name the scene (allowed: one of them)",
+                                         scene_file_, preset_));
+        const WindowPreset preset = window_preset(preset_);
+        const int n = static_cast<int>(preset.lanes.size());
+        if (lane_option_.count() == 0 && n > 1)
+            throw InputError(fmt::format("--preset {}: a race of {} lanes; this command runs one (allowed: --lane 1 to "
+                                         "{}; polyroll render --preset {} draws them all side by side)",
+                                         preset_, n, n, preset_));
+        return resolve_lane(preset, lane_option_.count() > 0 ? lane_ : 1);
+    }
+    std::vector<SceneLayer> layers;
+    if (scene_option_.count() > 0) layers.push_back(read_scene_file(scene_file_));
+    layers.push_back(cli_layer());
     return resolve_scene(layers);
 }
 

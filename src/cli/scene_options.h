@@ -15,6 +15,8 @@
 
 #include "sim/scene/scene.h"
 #include "sim/scene/scene_fields.h"
+#include "sim/scene/scene_json.h"
+#include "sim/scene/window_presets.h"
 
 namespace polyroll::cli {
 
@@ -33,8 +35,18 @@ public:
     // a command that sets that field itself does not list a flag it would ignore), and --set for
     // any other field.
     void add_to(flags::Command& app, const std::vector<std::string>& without = {});
-    // Resolves and validates the scene; throws InputError.
+    // --preset NAME and --lane K: a window preset's lane (assets/sandbox-presets.json) in place of
+    // --scene, the flags over it. For the commands that run one scene (run) or draw a preset's lanes
+    // (render).
+    void add_preset_to(flags::Command& app);
+    // Resolves and validates the scene; throws InputError (for a --preset of several lanes without
+    // --lane too).
     Scene resolve() const;
+    // Every lane: a --preset's lanes (just the --lane if given), each under the flags; otherwise the
+    // one scene resolve() gives.
+    std::vector<Scene> resolve_lanes() const;
+    // The --preset named ("" without one).
+    const std::string& preset() const { return preset_; }
 
 private:
     struct Flag {
@@ -48,8 +60,16 @@ private:
     // --set FIELD=VALUE: any field of a scene file, as sweep, validate and calibrate take it.
     std::vector<std::pair<std::string, nlohmann::ordered_json>> parsed_sets() const;
 
+    // The flags' and --set's layer, over the scene file or the preset's lane.
+    SceneLayer cli_layer() const;
+    // The preset's lane `k` (1-based) under the flags.
+    Scene resolve_lane(const WindowPreset& preset, int k) const;
+
     std::string scene_file_;
     flags::Flag scene_option_;
+    std::string preset_;
+    int lane_ = 0;
+    flags::Flag preset_option_, lane_option_;
     std::vector<Flag> flags_;
     std::vector<std::string> sets_;
     std::vector<std::string> without_;  // fields the command sets itself: no flag, and refused by --set

@@ -127,12 +127,18 @@ py::dict energies(const Simulation& s) {
 void bind_run(py::module_& m) {
     m.def(
         "resolve",
-        [](py::handle source, const py::dict& keywords, const py::dict& sets, const std::string& sets_name) {
-            return from_json(scene_to_json(resolve(source, keywords, sets, sets_name)));
+        [](py::handle source, const py::dict& keywords, const py::dict& sets, const std::string& sets_name,
+           const py::object& preset, const py::object& lane) {
+            std::vector<SceneLayer> layers;
+            if (!preset.is_none()) layers.push_back(preset_lane_layer(preset.cast<std::string>(), lane));
+            for (SceneLayer& l : scene_layers(source, keywords, sets, sets_name)) layers.push_back(std::move(l));
+            return from_json(scene_to_json(resolve_scene(layers)));
         },
         py::arg("source"), py::arg("keywords"), py::arg("sets"), py::arg("sets_name") = "fields",
-        "the resolved scene document (a dict) of a scene file or dict, scene keywords and FIELD: VALUE sets "
-        "(named sets_name in messages)");
+        py::arg("preset") = py::none(), py::arg("lane") = py::none(),
+        "the resolved scene document (a dict) of a window preset's lane (preset, lane), a scene file or dict, "
+        "scene keywords and FIELD: VALUE sets (named sets_name in messages)");
+    m.def("window_presets", &window_preset_table, "the window's presets: name, description, lanes (scene documents)");
     m.def("scene_keywords", &keyword_table, "every scene keyword: its field, flag, type and help");
     m.def("field_types", &field_types, "every scene field's type, by its path");
     m.def(

@@ -9,6 +9,7 @@
 #include "sim/errors.h"
 #include "sim/scene/json_path.h"
 #include "sim/scene/scene_fields.h"
+#include "sim/scene/window_presets.h"
 #include "sweep/sweep_plan.h"
 
 namespace py = pybind11;
@@ -105,6 +106,40 @@ std::vector<SceneLayer> scene_layers(py::handle source, const py::dict& keywords
 
 Scene resolve(py::handle source, const py::dict& keywords, const py::dict& sets, const std::string& sets_name) {
     return resolve_scene(scene_layers(source, keywords, sets, sets_name));
+}
+
+SceneLayer preset_lane_layer(const std::string& preset, py::handle lane) {
+    const std::string said = "preset=" + py::repr(py::str(preset)).cast<std::string>();
+    const WindowPreset p = window_preset(preset, said);
+    const int n = static_cast<int>(p.lanes.size());
+    if (lane.is_none()) {
+        if (n > 1)
+            throw InputError(fmt::format("{}: a race of {} lanes; a run takes one (allowed: lane=1 to {}; polyroll "
+                                         "render --preset {} draws them all side by side)",
+                                         said, n, n, preset));
+        return window_preset_lane(p, 1, "lane=1");
+    }
+    int k = 0;  // out of range unless it fits
+    try {
+        k = lane.cast<int>();
+    } catch (const py::cast_error&) {
+    }
+    return window_preset_lane(p, k, "lane=" + py::repr(lane).cast<std::string>());
+}
+
+py::list window_preset_table() {
+    py::list out;
+    for (const std::string& name : window_preset_names()) {
+        const WindowPreset p = window_preset(name);
+        py::dict row;
+        row["name"] = name;
+        row["description"] = p.description;
+        py::list lanes;
+        for (const Scene& scene : resolve_window_preset(p)) lanes.append(from_json(scene_to_json(scene)));
+        row["lanes"] = lanes;
+        out.append(row);
+    }
+    return out;
 }
 
 py::list keyword_table() {

@@ -27,6 +27,15 @@ std::vector<SceneLayer> scene_layers(pybind11::handle source, const pybind11::di
 Scene resolve(pybind11::handle source, const pybind11::dict& keywords, const pybind11::dict& sets,
               const std::string& sets_name = "fields");
 
+// A window preset's lane as the first layer, for preset= and lane= (`lane` None: the preset's only
+// lane). ValueError (InputError) naming the argument as written for an unknown name, a lane out of
+// range, or a race without lane=.
+SceneLayer preset_lane_layer(const std::string& preset, pybind11::handle lane);
+
+// The window's presets: a list of dicts with name, description and lanes (each lane's resolved scene
+// document).
+pybind11::list window_preset_table();
+
 // The scene flag a keyword names ("vertex_radius" -> "--vertex-radius"), or "" for none.
 std::string flag_of_keyword(const std::string& keyword);
 

@@ -25,6 +25,14 @@ std::string signed_fixed(double v, int decimals) {
 
 }  // namespace
 
+std::string params_text(const Snapshot& s) {
+    const std::string fill = s.fill_ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill_ratio, material_label(s.material))
+                                                : std::string("empty (r = 0)");
+    return fmt::format("n = {}    {}    \u03B8 = {:g}\u00B0", s.sides, fill, s.ramp_angle_deg);
+}
+
+std::string signed_value(double v, int decimals) { return signed_fixed(v, decimals); }
+
 void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
     const float u = L.unit;
     PxRect r = L.panel;
@@ -32,10 +40,7 @@ void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, 
     out.shapes.emplace_back();  // the box, sized once the content is measured
     const float pad = 18.0f * u;
     float y = r.y + pad + font.ascent(L.title);
-    const std::string fill = s.fill_ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill_ratio, material_label(s.material))
-                                                : std::string("empty (r = 0)");
-    const std::string params =
-        fmt::format("n = {}    {}    \u03B8 = {:g}\u00B0", s.sides, fill, s.ramp_angle_deg);
+    const std::string params = params_text(s);
     float content_w = font.layout(params, L.title, {r.x + pad, y}, palette::text, out.glyphs);
     // The tracked dot's legend on the same line: the black dot is the lid centre, whose distance
     // and speed the panel and the plot give.
@@ -134,11 +139,15 @@ PlotAxes growing_speed_axes(double t_hi_s, double v_lo_m_s, double v_hi_m_s) {
 }
 
 void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out) {
+    draw_speed_plot({{&s.speed_history, palette::plot_curve}}, plot_axes(s, o), L, font, out);
+}
+
+void draw_speed_plot(const std::vector<PlotTrace>& traces, const PlotAxes& ax, const FrameLayout& L,
+                     const FontAtlas& font, Layer& out) {
     const float u = L.unit;
     const PxRect& r = L.plot;
     out.shapes.push_back(rounded_box({r.x, r.y}, {r.width, r.height}, 10.0f * u, palette::panel_fill,
                                      std::max(1.0f, 1.5f * u), palette::panel_border, Tag::panel));
-    const PlotAxes ax = plot_axes(s, o);
     const float pad = 14.0f * u;
     font.layout("speed along the ramp, m/s", L.label, {r.x + pad, r.y + pad + font.ascent(L.label)}, palette::text,
                 out.glyphs);
@@ -178,17 +187,19 @@ void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, c
     if (ax.speed_min_m_s < 0.0)
         out.shapes.push_back(segment({left, Y(0.0)}, {right, Y(0.0)}, thin, palette::plot_axis, Tag::plot));
 
-    // The curve so far, as a polyline of round-capped segments; a dot marks the present.
+    // Each curve so far, as a polyline of round-capped segments; a dot marks the present.
     const float curve = std::max(1.5f, 3.0f * u);
-    const std::vector<SpeedPoint>& h = s.speed_history;
-    for (size_t i = 1; i < h.size(); ++i) {
-        if (h[i].time_s > ax.time_max_s) break;
-        out.shapes.push_back(segment({X(h[i - 1].time_s), Y(h[i - 1].speed_m_s)}, {X(h[i].time_s), Y(h[i].speed_m_s)},
-                                     curve, palette::plot_curve, Tag::plot));
+    for (const PlotTrace& trace : traces) {
+        const std::vector<SpeedPoint>& h = *trace.history;
+        for (size_t i = 1; i < h.size(); ++i) {
+            if (h[i].time_s > ax.time_max_s) break;
+            out.shapes.push_back(segment({X(h[i - 1].time_s), Y(h[i - 1].speed_m_s)},
+                                         {X(h[i].time_s), Y(h[i].speed_m_s)}, curve, trace.colour, Tag::plot));
+        }
+        if (!h.empty() && h.back().time_s <= ax.time_max_s)
+            out.shapes.push_back(disc({X(h.back().time_s), Y(h.back().speed_m_s)}, 2.2f * curve, trace.colour,
+                                      Tag::plot));
     }
-    if (!h.empty() && h.back().time_s <= ax.time_max_s)
-        out.shapes.push_back(disc({X(h.back().time_s), Y(h.back().speed_m_s)}, 2.2f * curve, palette::plot_curve,
-                                  Tag::plot));
 }
 
 }  // namespace polyroll::render

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "render/draw_list.h"
 #include "render/font.h"
@@ -15,6 +16,11 @@ namespace polyroll::render {
 
 // How the panel names a material preset ("BBs", "peas", ...): its "look" in assets/materials.json.
 std::string material_label(const std::string& preset);
+
+// The panel's parameter line: "n = 6    r = 0.5 BBs    \u03B8 = 14\u00B0".
+std::string params_text(const Snapshot& s);
+// A number with a real minus sign ("\u22120.12"), as the panel writes speeds and distances.
+std::string signed_value(double v, int decimals);
 
 void draw_panel(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out);
 
@@ -46,5 +52,13 @@ struct PlotMapping {
 };
 
 void draw_plot(const Snapshot& s, const FrameOptions& o, const FrameLayout& L, const FontAtlas& font, Layer& out);
+
+// The same plot in the layout's plot box with several curves (a race: one per lane, in its colour).
+struct PlotTrace {
+    const std::vector<SpeedPoint>* history = nullptr;
+    Rgba colour;
+};
+void draw_speed_plot(const std::vector<PlotTrace>& traces, const PlotAxes& ax, const FrameLayout& L,
+                     const FontAtlas& font, Layer& out);
 
 }  // namespace polyroll::render

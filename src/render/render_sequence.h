@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "render/frame_layout.h"
 #include "sim/run_result.h"
@@ -31,7 +32,8 @@ struct SequenceProgress {
 };
 
 struct SequenceResult {
-    RunResult run;            // the data run, as `polyroll run` gives it
+    RunResult run;            // the data run, as `polyroll run` gives it (a race: its first lane's)
+    std::vector<RunResult> lane_runs;  // every lane's data run (one for render_sequence)
     long run_frames = 0;      // frames of the moving run
     long hold_frames = 0;     // copies of the final state after it
     std::uint64_t png_bytes = 0;
@@ -43,6 +45,13 @@ struct SequenceResult {
 // run and std::runtime_error for a failure to render or write.
 SequenceResult render_sequence(const Scene& scene, const SequenceSettings& settings, const std::filesystem::path& dir,
                                const std::function<void(const SequenceProgress&)>& progress = {});
+
+// A race: every lane's run drawn side by side in each frame, as the window shows them
+// (race_frame.h); the frames follow simulated time, a lane that has ended stays as it ended, and the
+// sequence runs until the last lane has ended. Throws as render_sequence.
+SequenceResult render_race(const std::vector<Scene>& lanes, const SequenceSettings& settings,
+                           const std::filesystem::path& dir,
+                           const std::function<void(const SequenceProgress&)>& progress = {});
 
 // The frame options for a run whose results are known: the plot's axes cover the whole run and
 // the speed colour map tops out a little above the fastest speed, both rounded to readable values.

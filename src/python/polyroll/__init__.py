@@ -14,6 +14,9 @@ named as its scene flags (``sides=8`` for ``--sides 8``, ``vertex_radius=`` for
 field, as ``--set FIELD=VALUE``. (``fields=`` was called ``set=``, which still works with a
 DeprecationWarning.)
 
+A preset of the window (``polyroll-sandbox --preset NAME``) runs by name: ``run(preset="race",
+lane=2)`` runs lane 2 of the race; ``window_presets()`` lists them with their lanes.
+
 Errors are Python's: an unknown keyword or a value of the wrong type (``angle="x"``) raises
 TypeError, a value out of range (``sides=2``) raises ValueError with the command line's message;
 both name the keyword as written. None is a scene's null, the value of an optional field
@@ -35,7 +38,8 @@ import numpy as np
 
 from . import _polyroll
 
-__all__ = ["scene", "run", "sweep", "Simulation", "Result", "SweepResult", "scene_keywords", "version"]
+__all__ = ["scene", "run", "sweep", "Simulation", "Result", "SweepResult", "scene_keywords", "window_presets",
+           "version"]
 
 version = _polyroll.version
 
@@ -121,22 +125,50 @@ def _fields_argument(caller, fields, keywords, stacklevel=3):
     return dict(fields), name
 
 
-def _resolve(caller, source, fields_and_name, keywords):
+def _check_preset(caller, source, preset, lane):
+    """TypeError for a preset= or lane= of the wrong type, for lane= without preset=, or for both a
+    preset and a scene source; the names and the lane's range are the core's (ValueError)."""
+    if preset is None:
+        if lane is not None:
+            raise TypeError(f"{caller}(): lane={lane!r} without preset= (lane= picks a lane of a window preset)")
+        return
+    if not isinstance(preset, str):
+        raise TypeError(f"{caller}(): preset={preset!r}: {_a_type_name(preset)} where a window preset's name (str) is "
+                        "expected (polyroll.window_presets() lists them)")
+    if lane is not None and (not isinstance(lane, numbers.Integral) or isinstance(lane, (bool, np.bool_))):
+        raise TypeError(f"{caller}(): lane={lane!r}: {_a_type_name(lane)} where a whole number (the lane, from 1) "
+                        "is expected")
+    if source is not None:
+        raise TypeError(f"{caller}() got both a scene source ({source!r}) and preset={preset!r} (allowed: one of "
+                        "them; keywords and fields= change the preset's lane)")
+
+
+def _resolve(caller, source, fields_and_name, keywords, preset=None, lane=None):
     """The resolved scene document of a public call's scene arguments (fields from _fields_argument)."""
     fields, name = fields_and_name
+    _check_preset(caller, source, preset, lane)
     _check_keywords(caller, keywords)
     types = _field_types()
     for path, value in fields.items():
         if isinstance(path, str) and path in types:  # an unknown path is the core's ValueError
             _check_type(f'{name}["{path}"] = {value!r}', value, types[path])
-    return _polyroll.resolve(source, keywords, fields, name)
+    return _polyroll.resolve(source, keywords, fields, name, preset,
+                             None if lane is None else int(lane))
 
 
-def scene(source=None, *, fields=None, **keywords):
+def window_presets():
+    """The window's presets (``polyroll-sandbox --preset NAME``; ``polyroll presets`` lists them too):
+    a list of dicts with "name", "description" and "lanes" (each lane's resolved scene document, as
+    scene() gives it). A preset of several lanes is a race: run(preset=NAME, lane=K) runs one lane,
+    ``polyroll render --preset NAME`` draws them all side by side."""
+    return _polyroll.window_presets()
+
+
+def scene(source=None, *, fields=None, preset=None, lane=None, **keywords):
     """The resolved scene document (a dict, as summary.json's "scene"): the defaults, then `source`
-    (a scene file's path or a scene dict), then the scene keywords (``angle=14``), then `fields`
-    (``{"ramp.length_m": 1.5}``, any field)."""
-    return _resolve("scene", source, _fields_argument("scene", fields, keywords), keywords)
+    (a scene file's path or a scene dict) or a window preset's lane (``preset="race", lane=2``), then
+    the scene keywords (``angle=14``), then `fields` (``{"ramp.length_m": 1.5}``, any field)."""
+    return _resolve("scene", source, _fields_argument("scene", fields, keywords), keywords, preset, lane)
 
 
 def _records(columns):
@@ -184,11 +216,22 @@ class Result:
                 f"{len(self.trajectory)} samples, {len(self.impacts)} impacts>")
 
 
-def run(source=None, *, fields=None, **keywords):
+def run(source=None, *, fields=None, preset=None, lane=None, **keywords):
     """Runs a scene to its end, as `polyroll run` (the same numbers), and returns a Result. The scene
     as scene() takes it: `source`, the scene keywords, `fields`. Any model, `model="auto"` and
-    `model="dem3d"` included. Releases the GIL; Ctrl-C raises KeyboardInterrupt."""
-    return Result(_polyroll.run(_resolve("run", source, _fields_argument("run", fields, keywords), keywords)))
+    `model="dem3d"` included. Releases the GIL; Ctrl-C raises KeyboardInterrupt.
+
+    A preset of the window by name instead of `source`, as ``polyroll run --preset NAME --lane K``::
+
+        polyroll.run(preset="hexagon-large-rice")           # a preset of one lane
+        polyroll.run(preset="race", lane=2)                 # one lane of a race (lanes count from 1)
+        polyroll.run(preset="race", lane=2, time_limit=3)   # keywords and fields= change the lane
+
+    window_presets() lists the presets with their lanes. A name that is no preset, a lane out of range
+    or a race without lane= raises ValueError naming the argument and what is allowed; a preset or
+    lane of the wrong type raises TypeError."""
+    return Result(_polyroll.run(_resolve("run", source, _fields_argument("run", fields, keywords), keywords,
+                                         preset, lane)))
 
 
 class Simulation:
@@ -200,9 +243,11 @@ class Simulation:
         result = sim.result()
     """
 
-    def __init__(self, source=None, *, fields=None, **keywords):
-        """Builds the run of a scene as scene() takes it (pouring and settling its grains, if any)."""
-        self.scene = _resolve("Simulation", source, _fields_argument("Simulation", fields, keywords), keywords)
+    def __init__(self, source=None, *, fields=None, preset=None, lane=None, **keywords):
+        """Builds the run of a scene as scene() takes it (pouring and settling its grains, if any);
+        ``preset="race", lane=2`` for a window preset's lane, as run() takes it."""
+        self.scene = _resolve("Simulation", source, _fields_argument("Simulation", fields, keywords), keywords,
+                              preset, lane)
         self._native = _polyroll.Simulation(self.scene)
 
     def step(self, n=1):

@@ -1,5 +1,5 @@
 // Pan, zoom and the lanes' framing: see view_control.h.
-#include "app/view_control.h"
+#include "render/view_control.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,7 @@
 #include "render/view_style.h"
 #include "render/world_draw.h"
 
-namespace polyroll::app {
-
-using render::Camera;
-using render::Px;
-using render::PxRect;
+namespace polyroll::render {
 
 namespace {
 
@@ -118,4 +114,4 @@ LaneLayout lane_layout(const std::vector<render::Snapshot>& lanes, const PxRect&
     return out;
 }
 
-}  // namespace polyroll::app
+}  // namespace polyroll::render

@@ -1,5 +1,5 @@
 // The scene view's draw list: see scene_view.h.
-#include "app/scene_view.h"
+#include "render/scene_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,8 @@
 #include "render/close_up.h"
 #include "render/world_draw.h"
 
-namespace polyroll::app {
+namespace polyroll::render {
 
-using namespace render;
 
 namespace {
 // The lanes' numbers and legend: the window's own text (the scene's is render/view_style.h's).
@@ -119,4 +118,4 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const SceneViewOpt
     return dl;
 }
 
-}  // namespace polyroll::app
+}  // namespace polyroll::render
