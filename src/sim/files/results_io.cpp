@@ -76,6 +76,9 @@ json summary_json(const RunResult& r) {
 
     json out;
     out["polyroll"] = "0.1.0";
+    // The headline first, where a reader looks (summary["behaviour"] in Python, .behaviour with jq):
+    // the same value as results.behaviour.
+    out["behaviour"] = to_string(r.measured.behaviour);
     out["scene"] = scene_to_json(r.scene);
     out["results"] = results;
     out["shell"] = shell;
