@@ -667,7 +667,7 @@ TEST_CASE("the model row names the model or what auto chose and when it handed o
     CHECK(r.model == "auto: rigid");
     CHECK(r.model_reason == "empty shell");
     c.lift_off_time_s = 0.3;
-    CHECK(lane_readout(s, Measurements{}, 0.35, &c).model == "auto: rigid, rolling and hopping from 0.30 s");
+    CHECK(lane_readout(s, Measurements{}, 0.35, &c).model == "auto: rigid, hops from 0.30 s");
     c.hand_over_time_s = 0.412;
     CHECK(lane_readout(s, Measurements{}, 0.5, &c).model == "auto: grains from 0.41 s");
     ModelChoice filled;

@@ -30,7 +30,7 @@ namespace {
 struct ModelLabel {
     std::string prefix;
     Model running;
-    std::string name;   // the model's name, or "rigid, rolling and hopping" for the rigid body free to lift off
+    std::string name;   // the model's name, or "rigid, hops" for the rigid body free to lift off
     std::string since;  // " from 0.41 s", or "" for the model the run started with
 };
 
@@ -41,7 +41,7 @@ ModelLabel model_label_parts(const Scene& scene, const ModelChoice* choice) {
     if (choice->then && choice->hand_over_time_s)
         return {"auto: ", *choice->then, to_string(*choice->then), fmt::format(" from {:.2f} s", *choice->hand_over_time_s)};
     if (choice->then && choice->lift_off_time_s)
-        return {"auto: ", choice->model, "rigid, rolling and hopping", fmt::format(" from {:.2f} s", *choice->lift_off_time_s)};
+        return {"auto: ", choice->model, "rigid, hops", fmt::format(" from {:.2f} s", *choice->lift_off_time_s)};
     return {"auto: ", choice->model, to_string(choice->model), ""};
 }
 

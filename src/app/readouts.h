@@ -24,7 +24,7 @@ struct LaneReadout {
     std::string behaviour;  // "rolling", "stopped", ...
     std::string distance;   // "-" until known
     std::string terminal;   // "-" unless it rolled to the end
-    std::string model;      // "grains", or what auto chose: "auto: rigid", "auto: rigid, rolling and hopping from 0.47 s", "auto: grains from 0.41 s"
+    std::string model;      // "grains", or what auto chose: "auto: rigid", "auto: rigid, hops from 0.47 s", "auto: grains from 0.41 s"
     std::string model_reason;  // auto's reason (its tooltip); empty for a model the user named
 };
 

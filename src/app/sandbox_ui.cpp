@@ -832,7 +832,7 @@ std::vector<LaneReadout> lane_readouts(const UiContext& ctx) {
 }
 
 // The model entry wraps in its cell no narrower than this text (two lines at most for auto's).
-constexpr const char* kModelEntryMinText = "auto: rigid, rolling";
+constexpr const char* kModelEntryMinText = "auto: rigid, hops";
 
 // How the readouts strip is shared between the table and the plots.
 struct StripLayout {
@@ -855,8 +855,8 @@ StripLayout strip_layout(const std::vector<LaneReadout>& r, ImVec2 avail) {
     needed_w += cell_pad;
     for (const LaneReadout& lr : r) {
         float w = fs * 2.0f;
-        // The model entry wraps in its cell ("auto: rigid, rolling and hopping from 0.48 s" would set the column's width
-        // alone): the table is as wide as the other entries, or as "auto: rigid, rolling" (two lines at most).
+        // The model entry wraps in its cell ("auto: rigid, hops from 0.48 s" would set the column's width
+        // alone): the table is as wide as the other entries, or as "auto: rigid, hops" (two lines at most).
         for (const ReadoutRow& row : readout_rows())
             if (row.field != &LaneReadout::model) w = std::max(w, ImGui::CalcTextSize((lr.*row.field).c_str()).x);
         w = std::max(w, std::min(ImGui::CalcTextSize(lr.model.c_str()).x, ImGui::CalcTextSize(kModelEntryMinText).x));
@@ -922,7 +922,7 @@ void readout_table(const SandboxState& s, const UiContext& ctx, const std::vecto
             for (size_t i = 0; i < r.size(); ++i) {
                 ImGui::TableSetColumnIndex(static_cast<int>(i) + 1);
                 if (S.table_fits && !model) ImGui::TextUnformatted((r[i].*row.field).c_str());
-                // The model entry wraps no narrower than "auto: rigid, rolling", the width strip_layout
+                // The model entry wraps no narrower than "auto: rigid, hops", the width strip_layout
                 // gives it (a cell sized to its content would otherwise wrap word by word).
                 else text_wrapped(r[i].*row.field, ImGui::CalcTextSize(kModelEntryMinText).x);
                 // auto's reason under the pointer, on the lane's model entry.

@@ -1,5 +1,5 @@
 // Wrapping the panel's prose at spaces only. Dear ImGui 1.86's own wrapping may also break a line
-// after '.', ',' and the like, which split numbers across lines ("(7.<newline>00 s)", "rigid, rolling and hopping from
+// after '.', ',' and the like, which split numbers across lines ("(7.<newline>00 s)", "rigid, hops from
 // 0.<newline>65 s"). GL-free: the window passes ImGui's text measure; the tests pass their own.
 #pragma once
 
