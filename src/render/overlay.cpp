@@ -26,8 +26,10 @@ std::string signed_fixed(double v, int decimals) {
 }  // namespace
 
 std::string params_text(const Snapshot& s) {
-    const std::string fill = s.fill_ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill_ratio, material_label(s.material))
-                                                : std::string("empty (r = 0)");
+    // A full shell reads "full of BBs (r = 1)", as the window's readouts say it.
+    const std::string fill = s.fill_ratio >= 1.0 ? fmt::format("full of {} (r = 1)", material_label(s.material))
+                             : s.fill_ratio > 0.0 ? fmt::format("r = {:g} {}", s.fill_ratio, material_label(s.material))
+                                                  : std::string("empty (r = 0)");
     return fmt::format("n = {}    {}    \u03B8 = {:g}\u00B0", s.sides, fill, s.ramp_angle_deg);
 }
 
