@@ -127,6 +127,7 @@ SequenceResult render_lanes(const std::vector<Scene>& scenes, const SequenceSett
     for (size_t i = 0; i < n; ++i) runs[i] = replays[i] ? std::move(replays[i]) : start_run(scenes[i]);
     const auto snapshots = [&runs] {
         std::vector<Snapshot> snaps;
+        snaps.reserve(runs.size());
         for (const auto& r : runs) snaps.push_back(r->snapshot());
         return snaps;
     };
