@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/auto_run.h"
+#include "sim/registry/auto_run.h"
 #include "sim/model_registry.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/files/results_io.h"

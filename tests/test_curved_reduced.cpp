@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "sim/auto_run.h"
+#include "sim/model_choice.h"
 #include "sim/model_registry.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/reduced/rolling_polygon.h"

@@ -9,6 +9,7 @@
 #include "sim/dem3d/state_tracker.h"
 #include "sim/reduced/reduced_models.h"
 #include "sim/files/results_io.h"
+#include "sim/geometry/fill_spheres.h"
 #include "sim/geometry/shell_properties.h"
 #include "test_helpers.h"
 
@@ -51,7 +52,7 @@ TEST_CASE("dem3d's input: the 2D models' pose, end and the fill's grain count", 
     const json in = script_input(s, 30.0);
     const ShellProperties p = shell_properties(s.shell);
     // The small hexagon a quarter full of 6 mm BBs: r x inside volume x packing / grain volume.
-    CHECK(grain_count(s) == 241);
+    CHECK(fill_sphere_count(s) == 241);
     CHECK(in["fill"]["grain_count"] == 241);
     CHECK(in["fill"]["grain_density_kg_m3"].get<double>() == Approx(1060.0 / 0.6));
     CHECK(in["shell"]["outer_vertices_m"].size() == 6);
@@ -70,7 +71,7 @@ TEST_CASE("dem3d's input: the 2D models' pose, end and the fill's grain count", 
     CHECK(tipped_in["release"]["centre_m"][1].get<double>() == Approx(p.outer_apothem_m));
     CHECK(tipped_in["release"]["tip_rad"].get<double>() == Approx(release_pose(tipped, p).angle_rad));
     CHECK(release_pose(tipped, p).angle_rad == Approx(release_pose(s, p).angle_rad));
-    CHECK(grain_count(test::scene_with({{"fill", {{"ratio", 0.0}}}})) == 0);
+    CHECK(fill_sphere_count(test::scene_with({{"fill", {{"ratio", 0.0}}}})) == 0);
 }
 
 TEST_CASE("dem3d's tracker measures a rigid polygon's states as the rigid model does", "[dem3d]") {
@@ -180,7 +181,7 @@ TEST_CASE("dem3d: a saved Yade output is read and measured as the run that wrote
     CHECK(m.grains_inside == 241);
     CHECK(out.result.grains == 241);
     CHECK(out.result.fill_mass_kg == Approx(0.0481).epsilon(0.01));
-    CHECK(out.result.dem3d->yade_version == "2023.02a");
+    CHECK(out.result.model_blocks["dem3d_engine"]["yade_version"] == "2023.02a");
     CHECK(m.stop_time_s);
     CHECK(m.trajectory.front().position_m == 0.0);
     // Released on its vertex, the quarter-full pile lies below the shell's centre, near the axis

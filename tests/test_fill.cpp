@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "sim/grains/contact_values.h"
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "sim/scene/scene_json.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"

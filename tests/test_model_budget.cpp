@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "app/model_budget.h"
 #include "app/readouts.h"
 #include "app/sandbox_physics.h"

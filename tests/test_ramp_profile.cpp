@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/auto_run.h"
+#include "sim/model_choice.h"
 #include "sim/dem3d/dem3d_input.h"
 #include "sim/geometry/ramp_profile.h"
 #include "sim/geometry/shell_pose.h"

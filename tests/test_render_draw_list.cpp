@@ -15,7 +15,7 @@
 #include "render/snapshot.h"
 #include "render/ticks.h"
 #include "render/world_draw.h"
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "sim/geometry/geometry.h"
 #include "sim/grains/simulation.h"
 #include "sim/grains/world_builder.h"

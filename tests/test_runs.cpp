@@ -291,7 +291,7 @@ TEST_CASE("one disc per grain: energy never created and every disc stays inside"
 
 // polyroll bench --scaling reads the engine's load through measure_engine_load: the grains it built,
 // a time spent stepping, and Box2D's contacts split into touching and merely near (their enlarged
-// boxes overlapping). The large hexagon's smaller discs (a deeper box: sim/grains/disc_size.h) sit closer
+// boxes overlapping). The large hexagon's smaller discs (a deeper box: sim/geometry/disc_size.h) sit closer
 // to one another than Box2D's fixed margin, so each disc keeps more contacts there: the measured
 // reason its grains cost more each (docs/engine-cost.md).
 TEST_CASE("the engine's load: grains, contacts near and touching, per disc", "[runs][bench]") {

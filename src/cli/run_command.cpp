@@ -120,12 +120,15 @@ void print_summary(const RunResult& r, const std::string& out) {
                    model_traits(model_that_ran(r)).fill_description, to_string(model_that_ran(r)));
     else
         fmt::print("  grains             none (empty shell)\n");
-    if (r.dem3d && r.dem3d->channel) {
-        const auto& c = *r.dem3d->channel;
+    // The 3D reference in a channel (its summary block, RunResult::model_blocks).
+    const auto yade = r.model_blocks.find("dem3d_engine");
+    if (yade != r.model_blocks.end() && yade->contains("channel")) {
+        const auto& c = yade->at("channel");
         fmt::print("  in the channel     moved {:.1f} mm across, yawed {:.2f} deg, tilted {:.2f} deg; touched its sides in "
                    "{} of {} steps (at most {:.3g} N)\n",
-                   1000.0 * c.max_offset_m, c.max_yaw_deg, c.max_tilt_deg, c.steps_touching, c.steps,
-                   c.max_side_force_N);
+                   1000.0 * c.at("max_offset_m").get<double>(), c.at("max_yaw_deg").get<double>(),
+                   c.at("max_tilt_deg").get<double>(), c.at("steps_touching").get<long>(), c.at("steps").get<long>(),
+                   c.at("max_side_force_N").get<double>());
     }
     // Joined as paths: --out runs/a/ must not print runs/a//summary.json.
     if (!out.empty())

@@ -6,112 +6,16 @@
 
 #include <fmt/core.h>
 
-#include "sim/auto_run.h"
-#ifndef __EMSCRIPTEN__
-#include "sim/dem3d/dem3d_run.h"
-#endif
 #include "sim/errors.h"
 #include "sim/model_choice.h"
-#include "sim/reduced/free_body_run.h"
-#include "sim/reduced/reduced_run.h"
-#include "sim/scene/scene_json.h"
-#include "sim/grains/simulation.h"
+#include "sim/scene/scene_names.h"
 
 namespace polyroll {
 
 namespace {
 
-struct ModelRow {
-    ModelTraits traits;
-    std::unique_ptr<ModelRun> (*start)(const Scene& scene);
-    std::unique_ptr<ModelRun> (*carry_on)(const Scene& scene, const HandOver& from);  // null: cannot
-    // A run computed only while the model holds, for auto's first stage; null: none.
-    std::unique_ptr<ModelRun> (*start_while_valid)(const Scene& scene);
-};
-
-std::unique_ptr<ModelRun> start_grains(const Scene& s) { return std::make_unique<Simulation>(s); }
-std::unique_ptr<ModelRun> carry_on_grains(const Scene& s, const HandOver& from) {
-    return std::make_unique<Simulation>(s, from);
-}
-std::unique_ptr<ModelRun> start_segments(const Scene& s) {
-    return std::make_unique<models::ReducedRun>(s, models::FillMotion::relevel);
-}
-std::unique_ptr<ModelRun> start_rigid(const Scene& s) {
-    return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen);
-}
-// The rigid model computes its whole run at once, so where it stops holding (lift-off or slip) is
-// known from the start; computed only up to there: past it the model means nothing (and a shell that
-// would hop can rock ever faster in it, costing a second of integration for nothing).
-std::unique_ptr<ModelRun> start_rigid_while_valid(const Scene& s) {
-    return std::make_unique<models::ReducedRun>(s, models::FillMotion::frozen, true);
-}
-std::unique_ptr<ModelRun> start_dem3d([[maybe_unused]] const Scene& s) {
-#ifdef __EMSCRIPTEN__
-    throw InputError("--model dem3d runs Yade as a separate program, which a web page cannot: use polyroll run "
-                     "--model dem3d");
-#else
-    return std::make_unique<dem3d::Dem3dRun>(s);
-#endif
-}
-
-// Every trait named in every row (the compiler checks none is left out), in ModelTraits' order.
-const std::vector<ModelRow>& rows() {
-    static const std::vector<ModelRow> table = {
-        {{.model = Model::grains,
-          .description = "Box2D simulates the shell and every grain",
-          .engine = true,
-          .has_grains = true,
-          .fill_description = "",
-          .continues_hand_over = true,
-          .everyday = true,
-          .follows_curved_track = true,
-          .cost = RunCost::engine_bodies,
-          .auto_may_pick = true,
-          .reports_progress = false},
-         start_grains, carry_on_grains, nullptr},
-        {{.model = Model::segments,
-          .description = "the experimenters' reduced model with the fill as rigid segments that re-level after "
-                         "each impact",
-          .engine = false,
-          .has_grains = false,
-          .fill_description = "segments re-levelled at each impact",
-          .continues_hand_over = false,
-          .everyday = true,
-          .follows_curved_track = true,
-          .cost = RunCost::computed_whole,
-          .auto_may_pick = false,
-          .reports_progress = false},
-         start_segments, nullptr, nullptr},
-        {{.model = Model::rigid,
-          .description = "the experimenters' reduced model with the fill frozen as at release",
-          .engine = false,
-          .has_grains = false,
-          .fill_description = "a frozen rigid body",
-          .continues_hand_over = false,
-          .everyday = true,
-          .follows_curved_track = true,
-          .cost = RunCost::computed_whole,
-          .auto_may_pick = true,
-          .reports_progress = false},
-         start_rigid, nullptr, start_rigid_while_valid},
-        {{.model = Model::dem3d,
-          .description = "the 3D reference: Yade simulates the shell and every grain in 3D, about a minute a run",
-          .engine = false,
-          .has_grains = true,
-          .fill_description = "",
-          .continues_hand_over = false,
-          .everyday = false,
-          .follows_curved_track = true,
-          .cost = RunCost::yade_grains,
-          .auto_may_pick = false,
-          .reports_progress = true},
-         start_dem3d, nullptr, nullptr},
-    };
-    return table;
-}
-
 const ModelRow& row(Model model) {
-    for (const ModelRow& r : rows())
+    for (const ModelRow& r : model_rows())
         if (r.traits.model == model) return r;
     throw InputError(fmt::format("model {}: not in the model registry", static_cast<int>(model)));
 }
@@ -121,7 +25,7 @@ const ModelRow& row(Model model) {
 const std::vector<Model>& all_models() {
     static const std::vector<Model> models = [] {
         std::vector<Model> m;
-        for (const ModelRow& r : rows()) m.push_back(r.traits.model);
+        for (const ModelRow& r : model_rows()) m.push_back(r.traits.model);
         return m;
     }();
     return models;
@@ -130,7 +34,7 @@ const std::vector<Model>& all_models() {
 const std::vector<Model>& everyday_models() {
     static const std::vector<Model> models = [] {
         std::vector<Model> m;
-        for (const ModelRow& r : rows())
+        for (const ModelRow& r : model_rows())
             if (r.traits.everyday) m.push_back(r.traits.model);
         return m;
     }();
@@ -198,7 +102,7 @@ const ModelTraits& model_traits(Model model) { return row(model).traits; }
 
 std::unique_ptr<ModelRun> start_run(const Scene& scene) {
     // auto is a rule over the rows, not a row: it never appears in all_models() (compare, bench).
-    if (scene.run.model == Model::automatic) return std::make_unique<AutoRun>(scene);
+    if (scene.run.model == Model::automatic) return start_auto_run(scene);
     return row(scene.run.model).start(scene);
 }
 
@@ -214,10 +118,6 @@ std::unique_ptr<ModelRun> start_run_while_valid(const Scene& scene) {
     if (!r.start_while_valid)
         throw InputError(fmt::format("the {} model has no run that ends where it stops holding", to_string(scene.run.model)));
     return r.start_while_valid(scene);
-}
-
-std::unique_ptr<models::FreeBodyRun> continue_as_free_body(const Scene& scene, const HandOver& from) {
-    return std::make_unique<models::FreeBodyRun>(scene, from);
 }
 
 RunResult run_scene(const Scene& scene) {

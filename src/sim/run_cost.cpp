@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/assets.h"
-#include "sim/dem3d/dem3d_input.h"
 #include "sim/errors.h"
+#include "sim/geometry/fill_spheres.h"
 #include "sim/model_registry.h"
 #include "sim/scene/scene_validate.h"
 
@@ -45,7 +45,7 @@ double model_run_seconds(const Scene& s, Model model, double simulated_s, const 
         case RunCost::yade_grains: {
             const double steps = (s.run.settle_time_s + simulated_s) /
                                  (s.dem3d.contact_time_s * s.dem3d.time_step_share);
-            return c.dem3d_start_s + (dem3d::grain_count(s) + 1.0) * steps * c.dem3d_grain_step_s;
+            return c.dem3d_start_s + (fill_sphere_count(s) + 1.0) * steps * c.dem3d_grain_step_s;
         }
         case RunCost::engine_bodies: break;
     }

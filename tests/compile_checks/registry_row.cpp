@@ -1,10 +1,11 @@
-// A registry row as model_registry.cpp writes one. Compiled twice by ctest: as it is (it must
-// compile), and with OMIT_TRAIT defined, a row that leaves a trait out (it must not: every trait is
-// Required, model_registry.h).
-#include "sim/model_registry.h"
+// A registry row as sim/registry/model_rows.cpp writes one. Compiled twice by ctest: as it is (it
+// must compile), and with OMIT_TRAIT defined, a row that leaves a trait out (it must not: every trait
+// is Required, model_row.h).
+#include "sim/model_row.h"
 
 polyroll::ModelTraits row() {
     return {.model = polyroll::Model::grains,
+            .name = "grains",
             .description = "a model",
             .engine = true,
             .has_grains = true,

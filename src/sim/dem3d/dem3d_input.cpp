@@ -5,6 +5,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "sim/geometry/fill_spheres.h"
 #include "sim/geometry/shell_outline.h"
 #include "sim/geometry/geometry.h"
 #include "sim/scene/scene_names.h"
@@ -14,15 +15,6 @@
 namespace polyroll::dem3d {
 
 using json = nlohmann::ordered_json;
-
-int grain_count(const Scene& s) {
-    if (s.fill.ratio <= 0.0) return 0;
-    const MaterialParams& m = s.fill.material;
-    // Diameters uniform in d (1 +- spread): the mean of d^3 is d^3 (1 + spread^2).
-    const double mean_volume_m3 = geom::kPi / 6.0 * std::pow(m.diameter_m, 3) * (1.0 + m.diameter_spread * m.diameter_spread);
-    const double grains_volume_m3 = s.fill.ratio * shell_properties(s.shell).inside_volume_m3 * m.packing_fraction;
-    return std::max(1, static_cast<int>(std::lround(grains_volume_m3 / mean_volume_m3)));
-}
 
 namespace {
 
@@ -77,7 +69,7 @@ json script_input(const Scene& s, double frames_hz) {
     j["pivot_vertex"] = 1;  // release_pose stands the shell on vertex 1, the downhill end of face (0, 1)
     j["end_centre_x_m"] = end_centre_x_m(s, p);
     const MaterialParams& m = s.fill.material;
-    j["fill"] = {{"grain_count", grain_count(s)},
+    j["fill"] = {{"grain_count", fill_sphere_count(s)},
                  {"grain_diameter_m", m.diameter_m},
                  {"diameter_spread", m.diameter_spread},
                  {"grain_density_kg_m3", m.bulk_density_kg_m3 / m.packing_fraction},

@@ -10,9 +10,6 @@
 
 namespace polyroll::dem3d {
 
-// How many of the fill's grains the box holds: r x inside volume x packing fraction / grain volume.
-int grain_count(const Scene& scene);
-
 // The radius of the spheres along the box's outer edges: the shell's vertex rounding
 // (shell.vertex_radius_m), at least the 0.1 mm this engine can make.
 double edge_sphere_radius_m(const Scene& scene);

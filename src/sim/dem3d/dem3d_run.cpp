@@ -18,9 +18,9 @@
 #include "sim/dem3d/dem3d_input.h"
 #include "sim/dem3d/yade_process.h"
 #include "sim/geometry/shell_outline.h"
-#include "sim/reduced/reveal.h"
 #include "sim/geometry/shell_properties.h"
 #include "sim/geometry/vertex_rounding.h"
+#include "sim/reveal_steps.h"
 
 namespace polyroll::dem3d {
 
@@ -126,23 +126,27 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
     r.settle_time_s = setup.value("settle_time_s", 0.0);
     r.settled = setup.value("settled", true);
     r.balance_correction_deg = setup.value("balance_correction_deg", 0.0);
-    RunResult::Dem3dEngine engine;
-    engine.yade_version = setup.value("yade_version", "");
-    engine.time_step_s = setup.value("time_step_s", 0.0);
-    engine.cpu_time_s = setup.value("cpu_time_s", 0.0);
+    // summary.json's "dem3d_engine" block (RunResult::model_blocks); Dem3dRun sets the threads it ran.
+    nlohmann::ordered_json engine;
+    engine["yade_version"] = setup.value("yade_version", "");
+    engine["time_step_s"] = setup.value("time_step_s", 0.0);
+    engine["cpu_time_s"] = setup.value("cpu_time_s", 0.0);
+    engine["threads"] = 1;
     if (setup.contains("channel")) {
+        // How far the box moved out of its plane (across the track from where it was released; its roll
+        // axis turned about the ramp's normal, down the ramp), and how often and how hard its ends
+        // touched the channel's sides (one reading per tracker step).
         const auto& c = setup["channel"];
-        RunResult::Dem3dEngine::ChannelMotion m;
-        m.max_offset_m = c.value("max_offset_m", 0.0);
-        m.max_yaw_deg = c.value("max_yaw_deg", 0.0);
-        m.max_tilt_deg = c.value("max_tilt_deg", 0.0);
-        m.steps = c.value("rows", 0L);
-        m.steps_touching = c.value("rows_touching", 0L);
-        m.max_side_force_N = c.value("max_side_force_N", 0.0);
-        m.side_impulse_N_s = c.value("side_impulse_N_s", 0.0);
-        engine.channel = m;
+        engine["channel"] = {{"max_offset_m", c.value("max_offset_m", 0.0)},
+                             {"max_yaw_deg", c.value("max_yaw_deg", 0.0)},
+                             {"max_tilt_deg", c.value("max_tilt_deg", 0.0)},
+                             {"steps", c.value("rows", 0L)},
+                             {"steps_touching", c.value("rows_touching", 0L)},
+                             {"max_side_force_N", c.value("max_side_force_N", 0.0)},
+                             {"side_impulse_N_s", c.value("side_impulse_N_s", 0.0)}};
     }
-    r.dem3d = engine;
+    const double time_step_s = engine["time_step_s"].get<double>();
+    r.model_blocks["dem3d_engine"] = engine;
 
     TrackRules rules;
     rules.grains = r.grains;
@@ -151,7 +155,7 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
     edges.vertex_radius_m = edge_sphere_radius_m(scene);
     rules.contact_tolerance_m = kContactMargin_m + vertex_rounding_lift_max_m(edges);
     r.measured = measure_states(scene, out.rows, rules);
-    if (engine.time_step_s > 0.0) r.steps = std::lround(r.measured.end_time_s / engine.time_step_s);
+    if (time_step_s > 0.0) r.steps = std::lround(r.measured.end_time_s / time_step_s);
     return out;
 }
 
@@ -160,7 +164,7 @@ Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
     const int threads = run_script(script_input(scene, scene.run.sample_hz), dir.path());
     Dem3dOutput out = read_output(scene, dir.path());
     full_ = std::move(out.result);
-    full_.dem3d->threads = threads;
+    full_.model_blocks["dem3d_engine"]["threads"] = threads;
     rows_ = std::move(out.rows);
     frames_ = std::move(out.frames);
     outer_ = shell_outer_polygon_m(scene.shell);
@@ -179,7 +183,7 @@ bool Dem3dRun::step() {
 }
 
 void Dem3dRun::run_to_end() {
-    steps_ = models::first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
+    steps_ = first_step_at_end(full_.measured.end_time_s, scene_.fidelity.step_hz, steps_);
     reveal();
 }
 
@@ -192,7 +196,7 @@ std::unique_ptr<ModelRun> Dem3dRun::replay() const {
     return again;
 }
 
-void Dem3dRun::reveal() { models::reveal_up_to(shown_, full_.measured, time_s(), finished()); }
+void Dem3dRun::reveal() { reveal_up_to(shown_, full_.measured, time_s(), finished()); }
 
 StateRow Dem3dRun::state_now() const {
     // The rows are one a tracker step, so the step count indexes them.

@@ -6,7 +6,6 @@
 #include <fmt/core.h>
 
 #include "sim/files/atomic_file.h"
-#include "sim/model_registry.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/shell_label.h"
 
@@ -69,11 +68,6 @@ json summary_json(const RunResult& r) {
     shell["lid_mass_fraction"] = r.shell.lid_mass_fraction;
     shell["lid_inertia_share"] = r.shell.lid_inertia_share;
 
-    json engine;
-    engine["length_unit_m"] = 1.0 / r.units.units_per_m;
-    engine["engine_step_s"] = 1.0 / (r.scene.fidelity.step_hz * r.scene.fidelity.substeps);
-    engine["speed_cap_m_s"] = r.units.speed_cap_m_s(r.scene.fidelity);
-
     json out;
     out["polyroll"] = "0.1.0";
     // The headline first, where a reader looks (summary["behaviour"] in Python, .behaviour with jq):
@@ -82,22 +76,7 @@ json summary_json(const RunResult& r) {
     out["scene"] = scene_to_json(r.scene);
     out["results"] = results;
     out["shell"] = shell;
-    // Box2D's units and step mean nothing to the reduced models, which integrate their own equations.
-    if (model_traits(model_that_ran(r)).engine) out["engine"] = engine;
-    if (r.dem3d) {
-        json yade;
-        yade["yade_version"] = r.dem3d->yade_version;
-        yade["time_step_s"] = r.dem3d->time_step_s;
-        yade["cpu_time_s"] = r.dem3d->cpu_time_s;
-        yade["threads"] = r.dem3d->threads;
-        if (const auto& c = r.dem3d->channel) {
-            yade["channel"] = {{"max_offset_m", c->max_offset_m},       {"max_yaw_deg", c->max_yaw_deg},
-                               {"max_tilt_deg", c->max_tilt_deg},       {"steps", c->steps},
-                               {"steps_touching", c->steps_touching},   {"max_side_force_N", c->max_side_force_N},
-                               {"side_impulse_N_s", c->side_impulse_N_s}};
-        }
-        out["dem3d_engine"] = yade;
-    }
+    for (const auto& [key, block] : r.model_blocks.items()) out[key] = block;
     return out;
 }
 

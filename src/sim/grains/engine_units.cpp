@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "sim/geometry/geometry.h"
 
 namespace polyroll {
@@ -36,6 +36,14 @@ EngineUnits choose_engine_units(const Scene& s) {
     // Margin of 2 over the bound: grains inside a spinning shell move faster than its centre.
     if (mm.speed_cap_m_s(s.fidelity) >= 2.0 * speed_bound_m_s(s)) return mm;
     return cm;
+}
+
+nlohmann::ordered_json engine_block(const EngineUnits& units, const FidelityParams& f) {
+    nlohmann::ordered_json engine;
+    engine["length_unit_m"] = 1.0 / units.units_per_m;
+    engine["engine_step_s"] = 1.0 / (f.step_hz * f.substeps);
+    engine["speed_cap_m_s"] = units.speed_cap_m_s(f);
+    return engine;
 }
 
 }  // namespace polyroll

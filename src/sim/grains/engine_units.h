@@ -5,6 +5,8 @@
 // back to SI (m, kg, s) at the boundary. Mass and time keep their SI units inside the engine.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "sim/scene/scene.h"
 
 namespace polyroll {
@@ -23,6 +25,10 @@ struct EngineUnits {
 // or the shell is empty (Box2D's polygon skin, 0.2 mm between shell and ramp at 1 cm, biases a
 // hopping shell; 0.02 mm at 1 mm). The standard step (1 kHz) caps 1 mm at 2 m/s, so it keeps 1 cm.
 EngineUnits choose_engine_units(const Scene& scene);
+
+// summary.json's "engine" block of a Box2D run (RunResult::model_blocks): the length unit, the
+// engine's own step (the tracker's step over the substeps) and the speed cap.
+nlohmann::ordered_json engine_block(const EngineUnits& units, const FidelityParams& f);
 
 // An upper bound on the speed the shell can reach: sliding without loss down the whole ramp.
 double speed_bound_m_s(const Scene& scene);

@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "sim/errors.h"
 #include "sim/grains/grain_deposition.h"
 #include "sim/rng.h"

@@ -37,7 +37,6 @@ RunResult Simulation::result() const {
     RunResult r;
     r.scene = world_->scene;
     r.shell = world_->shell_props;
-    r.units = world_->units;
     r.measured = tracker_->measurements();
     r.grains = static_cast<int>(world_->grains.size());
     for (const PlannedGrain& g : world_->fill.grains) r.fill_mass_kg += g.mass_kg;
@@ -45,6 +44,7 @@ RunResult Simulation::result() const {
     r.settled = world_->settled;
     r.balance_correction_deg = world_->balance_correction_deg;
     r.steps = steps_;
+    r.model_blocks["engine"] = engine_block(world_->units, r.scene.fidelity);
     return r;
 }
 

@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-#include "sim/grains/fill_plan.h"
+#include "sim/geometry/shell_outline.h"
 #include "sim/geometry/shell_properties.h"
 
 namespace polyroll::models {
@@ -17,7 +17,7 @@ RollingBody rolling_body(const Scene& scene) {
     b.shell.inertia_cm_kg_m2 = sp.inertia_kg_m2;  // centre of mass at the polygon's centre
     b.fill_ratio = scene.fill.ratio;
     // Mass per unit cross-section: the bulk fills the inside's depth, so r x area x this is
-    // FillPlan::target_mass_kg (r x inside volume x bulk density).
+    // the grain model's fill mass (r x inside volume x bulk density).
     b.fill_areal_density_kg_m2 = scene.fill.material.bulk_density_kg_m3 * scene.shell.depth_m;
     return b;
 }

@@ -1,5 +1,5 @@
 // A run computed whole at once (the reduced models, the free rigid body), shown in the tracker's
-// steps: what has happened by a time, and the first step at which the run has ended.
+// steps (sim/reveal_steps.h, which the 3D reference shares).
 #pragma once
 
 #include <optional>
@@ -8,17 +8,9 @@
 #include "sim/geometry/geometry.h"
 #include "sim/measurements.h"
 #include "sim/model_run.h"
+#include "sim/reveal_steps.h"
 
 namespace polyroll::models {
-
-// Moves the rows and impacts of `whole` up to `time_s` into `shown`; once `finished`, `shown` is all
-// of `whole` (the behaviour, distance and terminal velocity are known only then).
-void reveal_up_to(Measurements& shown, const Measurements& whole, double time_s, bool finished);
-
-// The first tracker step, not before `from_step`, at or after `end_time_s`: computed rather than
-// counted up to (counting ten thousand steps one by one cost about a third of a segment-model run on
-// the default scene). `from_step` if there is no end to jump to.
-long first_step_at_end(double end_time_s, double step_hz, long from_step);
 
 // The common part of a run computed whole at once and revealed step by step: the steps, the records
 // shown so far, and the end (the whole run's end, or the step at which it hands the shell on). The

@@ -39,7 +39,7 @@ struct MaterialParams {
     // opposing its sliding relative to the shell, with the lateral pressure of the pile above it
     // (sim/grains/lid_friction.h). 0 leaves the term out.
     double lid_friction = 0.0;
-    // What one 2D disc stands for (sim/grains/disc_size.h). Unset: a column of grains through the box's
+    // What one 2D disc stands for (sim/geometry/disc_size.h). Unset: a column of grains through the box's
     // depth, so a disc is the grain's size. A number k: k of the 3D fill's grains, so the discs are
     // as many as the fill's grains divided by k, sized to fit the cross-section (k = 1: one disc per
     // grain, each with a grain's mass). A material's value: how fine its 2D pile must be to flow as
@@ -93,6 +93,8 @@ struct FidelityParams {
 // `automatic` ("auto"): the model registry picks per scene (model_choice.h).
 // `dem3d` is the 3D reference: the box and every grain of the fill in Yade's discrete element method
 // (src/sim/dem3d/), run as a subprocess: a check on the 2D cross-section, never picked by auto.
+// Each value but automatic has one row in the model registry (sim/registry/model_rows.cpp), which
+// names it and says everything else about it; automatic stays last.
 enum class Model { grains, segments, rigid, dem3d, automatic };
 
 // What only the 3D reference (--model dem3d) uses: its soft contacts and the track's channel.

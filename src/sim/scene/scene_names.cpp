@@ -4,6 +4,8 @@
 #include <array>
 #include <utility>
 
+#include "sim/model_row.h"
+
 namespace polyroll {
 namespace {
 
@@ -13,13 +15,9 @@ constexpr std::array<std::pair<ReleasePose, std::string_view>, 3> kPoses = {{
     {ReleasePose::face, "face"},
     {ReleasePose::tipped, "tipped"},
 }};
-constexpr std::array<std::pair<Model, std::string_view>, 5> kModels = {{
-    {Model::grains, "grains"},
-    {Model::segments, "segments"},
-    {Model::rigid, "rigid"},
-    {Model::dem3d, "dem3d"},
-    {Model::automatic, "auto"},
-}};
+// A model's name is its registry row's (model_row.h); auto is a rule over the rows, not a row, and
+// is named here.
+constexpr std::string_view kAutoName = "auto";
 
 constexpr std::array<std::pair<EngineFrame, std::string_view>, 2> kFrames = {{
     {EngineFrame::ramp, "ramp"},
@@ -51,7 +49,12 @@ std::optional<E> value_named(const std::array<std::pair<E, std::string_view>, N>
 }  // namespace
 
 std::string to_string(ReleasePose pose) { return name_of(kPoses, pose); }
-std::string to_string(Model model) { return name_of(kModels, model); }
+std::string to_string(Model model) {
+    if (model == Model::automatic) return std::string(kAutoName);
+    for (const ModelRow& r : model_rows())
+        if (r.traits.model == model) return r.traits.name;
+    return "unknown";
+}
 std::string to_string(EngineFrame frame) { return name_of(kFrames, frame); }
 
 const std::vector<std::string>& release_pose_names() {
@@ -59,12 +62,22 @@ const std::vector<std::string>& release_pose_names() {
     return names;
 }
 const std::vector<std::string>& model_names() {
-    static const std::vector<std::string> names = names_of(kModels);
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const ModelRow& r : model_rows()) n.push_back(r.traits.name);
+        n.emplace_back(kAutoName);
+        return n;
+    }();
     return names;
 }
 
 std::optional<ReleasePose> release_pose_named(std::string_view name) { return value_named(kPoses, name); }
-std::optional<Model> model_named(std::string_view name) { return value_named(kModels, name); }
+std::optional<Model> model_named(std::string_view name) {
+    if (name == kAutoName) return Model::automatic;
+    for (const ModelRow& r : model_rows())
+        if (r.traits.name.get() == name) return r.traits.model.get();
+    return std::nullopt;
+}
 const std::vector<std::string>& engine_frame_names() {
     static const std::vector<std::string> names = names_of(kFrames);
     return names;

@@ -11,7 +11,7 @@
 
 #include <fmt/core.h>
 
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 #include "sim/errors.h"
 #include "sim/geometry/geometry.h"
 #include "sim/model_registry.h"

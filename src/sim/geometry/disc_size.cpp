@@ -1,5 +1,5 @@
 // Disc size from what a disc stands for: see disc_size.h.
-#include "sim/grains/disc_size.h"
+#include "sim/geometry/disc_size.h"
 
 #include <cmath>
 
