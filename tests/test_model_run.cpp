@@ -3,6 +3,7 @@
 // records carrying on; the per-step force hook is called before every engine step and its forces act.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <box2d/box2d.h>
@@ -32,10 +33,13 @@ json summary_without_wall_time(const RunResult& r) {
 
 TEST_CASE("every registered model steps to the end run_scene gives, with a snapshot at each step", "[runs][models]") {
     const Scene base = test::scene_with({{"fill", {{"ratio", 0.25}}}, {"run", {{"time_limit_s", 0.4}}}});
-    REQUIRE(all_models().size() == 4);
+    // The models this file was written against are registered (a new row adds to them; it does not
+    // change this test), the reference first.
+    for (Model m : {Model::grains, Model::segments, Model::rigid, Model::dem3d})
+        CHECK(std::find(all_models().begin(), all_models().end(), m) != all_models().end());
     CHECK(all_models().front() == reference_model());
     // The 3D reference (a minute of Yade a run) has its own tests: tests/test_dem3d.cpp.
-    REQUIRE(everyday_models().size() == 3);
+    REQUIRE(everyday_models().size() >= 3);
     for (Model m : everyday_models()) {
         INFO("model " << to_string(m));
         const Scene s = with_model(base, m);

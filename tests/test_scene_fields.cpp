@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/errors.h"
+#include "sim/model_registry.h"
 #include "sim/scene/scene_fields.h"
 #include "sim/scene/scene_json.h"
 #include "sim/scene/scene_names.h"
@@ -105,7 +106,18 @@ TEST_CASE("flags are unique and the sweep's axes are numbered 1, 2, ...", "[scen
 }
 
 TEST_CASE("the enumerations' names, one list each", "[scene][fields]") {
-    CHECK(model_names() == std::vector<std::string>{"grains", "segments", "rigid", "dem3d", "auto"});
+    // A model's name is its registry row's: the rows' names in their order, then auto (a rule, not a row).
+    std::vector<std::string> row_names;
+    for (Model m : all_models()) row_names.push_back(model_traits(m).name);
+    row_names.emplace_back("auto");
+    CHECK(model_names() == row_names);
+    for (const char* known : {"grains", "segments", "rigid", "dem3d", "auto"}) CHECK(model_named(known));
+    // Every value of the Model enum but automatic has its row (scene.h's enum and the registry agree).
+    for (int i = 0; i < static_cast<int>(Model::automatic); ++i) {
+        INFO("Model value " << i);
+        CHECK_NOTHROW(model_traits(static_cast<Model>(i)));
+        CHECK(to_string(static_cast<Model>(i)) != "unknown");
+    }
     CHECK(release_pose_names() == std::vector<std::string>{"vertex", "face", "tipped"});
     for (const std::string& n : model_names()) CHECK(to_string(*model_named(n)) == n);
     for (const std::string& n : release_pose_names()) CHECK(to_string(*release_pose_named(n)) == n);
