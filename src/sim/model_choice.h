@@ -1,4 +1,4 @@
-// What `--model auto` chose for a scene, and why (the rule is choose_model in auto_run.cpp; its
+// What `--model auto` chose for a scene, and why (the rule is choose_model in auto_rule.cpp; its
 // reasons rest on the trade study, docs/tradeoff/tradeoff.md). Box2D-free: a RunResult carries it
 // into summary.json ("model_choice"), the run printout and the panel.
 #pragma once
@@ -32,7 +32,7 @@ struct ModelChoice {
 // in their packing's gaps at every impact (docs/studies/full-shells.md).
 bool fill_is_solid(const Scene& scene);
 
-// The cheapest model the scene requires (scene.run.model is ignored): see auto_run.cpp.
+// The cheapest model the scene requires (scene.run.model is ignored): see auto_rule.cpp.
 ModelChoice choose_model(const Scene& scene);
 // choose_model's rule in a line, for --model's help and the window's tooltip (model_help).
 const char* auto_rule_description();

@@ -79,7 +79,7 @@ struct ModelTraits {
     // slope refuses such a scene.
     Required<bool> follows_curved_track;
     Required<RunCost> cost;
-    // auto's rule (choose_model, auto_run.cpp) may start a run with it or hand a run over to it: the
+    // auto's rule (choose_model, auto_rule.cpp) may start a run with it or hand a run over to it: the
     // rule refuses to pick a model without it.
     Required<bool> auto_may_pick;
     // Its runs take minutes, so a run on a terminal says how far it has got (sim/run_progress.h).

@@ -1,6 +1,6 @@
-// The model registry's table: one row per model, each naming its run's start (model_row.h). Above
-// the model wings (sim/grains/, sim/reduced/, sim/dem3d/): the one file of the simulation that
-// includes them all. A new model is a row here, its folder, and its value in scene.h's Model enum.
+// The model registry's table: one row per model, each naming its run's start (model_row.h). In
+// sim/registry/, above the model wings (sim/grains/, sim/reduced/, sim/dem3d/), because it includes
+// them all. A new model is a row here, its folder, and its value in scene.h's Model enum.
 #include "sim/model_row.h"
 
 #ifndef __EMSCRIPTEN__
