@@ -31,10 +31,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using polyroll::test::kPolyrollExe;
-
-using polyroll::test::read_file;
-using polyroll::test::table_without_wall_time;
+using namespace polyroll::test;  // kPolyrollExe, read_file, table_without_wall_time
 
 const polyroll::test::Scratch crash_scratch("crash-");
 

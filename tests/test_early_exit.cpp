@@ -12,6 +12,7 @@
 #include "sim/model_registry.h"
 #include "sim/shell_tracker.h"
 #include "sweep/observations.h"
+#include "hand_landing.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -21,34 +22,14 @@ using json = nlohmann::ordered_json;
 namespace {
 
 // Vertex 2 of an empty shell landing on the ramp (pointing straight down, approaching, then stopped),
-// then three more steps at rest on it: the tracker's first face impact at step 3.
+// then three more steps at rest on it, turning so never at rest: the tracker's first face impact at step 3.
 Measurements land_once(const Scene& s, long* steps_observed) {
-    const double tol_m = 0.0005;
-    const int n = s.shell.sides;
-    const double angle = -3.0 * geom::kPi / n;
-    const geom::Vec2 arm = geom::rotate(shell_outer_polygon_m(s.shell)[2], angle);
-    TrackRules rules;
-    rules.energy_scale_J = 1.0;
-    rules.contact_tolerance_m = tol_m;
-    ShellPose release;
-    release.angle_rad = angle;
-    ShellTracker tracker(s, release, rules);
-    const double heights[] = {3.0, 2.0, 0.5, 0.0, 0.0, 0.0, 0.0};
-    const double approach[] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0};
-    long k = 0;
-    for (; k < 7; ++k) {
-        ObservedState o;
-        o.time_s = static_cast<double>(k) / s.fidelity.step_hz;
-        o.shell.pose.angle_rad = angle;
-        o.shell.pose.centre_m = {0.1, heights[k] * tol_m - arm.y};
-        o.shell.velocity_m_s = {0.0, -approach[k]};
-        o.shell.angular_velocity_rad_s = 1.0;  // turning: never at rest
-        o.kinetic_J = 1.0;
-        o.potential_J = -2.0;
-        if (!tracker.observe(k, o)) break;
-    }
-    *steps_observed = k;
-    return tracker.measurements();
+    std::vector<test::LandingRow> rows;
+    for (const double h : {3.0, 2.0, 0.5}) rows.push_back({h, 1.0, 1.0, 1.0});
+    for (int k = 0; k < 4; ++k) rows.push_back({0.0, 0.0, 1.0, 1.0});
+    const test::Landing landing = test::measure_landing(s, rows);
+    *steps_observed = landing.steps_observed;
+    return landing.measured;
 }
 
 }  // namespace

@@ -16,11 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using polyroll::test::read_file;
-using polyroll::test::have_matplotlib;
-using polyroll::test::run_command;
-
-using polyroll::test::kPolyrollExe;
+using namespace polyroll::test;  // read_file, have_matplotlib, run_command, kPolyrollExe
 // A short scene at draft fidelity: fast and deterministic.
 const std::string kScene = " --polygon octagon-small --fill 0.125 --angle 10 --fidelity draft --time-limit 1.5";
 

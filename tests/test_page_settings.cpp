@@ -28,11 +28,11 @@ std::string refusal(const std::string& query) {
 TEST_CASE("page address: preset and scene controls are read and applied to the selected lane", "[app][web]") {
     const PageSettings p = parse_page_query("?sides=8&fill=0.375&material=rice&angle=14");
     CHECK_FALSE(p.preset);
-    REQUIRE(p.sides);
-    CHECK(*p.sides == 8);
-    CHECK(*p.fill_ratio == 0.375);
-    CHECK(*p.material == "rice");
-    CHECK(*p.angle_deg == 14.0);
+    REQUIRE(p.field("shell.sides"));
+    CHECK(*p.field("shell.sides") == 8);
+    CHECK(*p.field("fill.ratio") == 0.375);
+    CHECK(*p.field("fill.material.preset") == "rice");
+    CHECK(*p.field("ramp.angle_deg") == 14.0);
     CHECK_FALSE(p.frames);
     CHECK_FALSE(p.paused);
     CHECK_FALSE(p.bench);
@@ -62,21 +62,25 @@ TEST_CASE("page address: preset and scene controls are read and applied to the s
 TEST_CASE("page address: empty, percent-encoded and '+' forms", "[app][web]") {
     const PageSettings none = parse_page_query("");
     CHECK_FALSE(none.preset);
-    CHECK_FALSE(none.sides);
+    CHECK_FALSE(none.field("shell.sides"));
     CHECK(parse_page_query("?").frames == std::nullopt);
-    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").fill_ratio == 0.5);
-    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").angle_deg == 10.0);
+    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").field("fill.ratio") == 0.5);
+    CHECK(*parse_page_query("fill=0%2E5&&angle=%31%30").field("ramp.angle_deg") == 10.0);
     CHECK(*parse_page_query("preset=hexagon%2Drice").preset == "hexagon-rice");
 }
 
 TEST_CASE("page address: bad values are refused naming the value and what is allowed", "[app][web]") {
-    CHECK(refusal("sides=2") == "sides=2: out of range (allowed: 3 to 64)");
-    CHECK(refusal("sides=65") == "sides=65: out of range (allowed: 3 to 64)");
+    // A value out of the field's range in the command line's words, named as Python names a keyword.
+    CHECK(refusal("sides=2") == "shell.sides = 2 (from sides=2) is out of range (allowed: 3 to 64)");
+    CHECK(refusal("sides=65") == "shell.sides = 65 (from sides=65) is out of range (allowed: 3 to 64)");
     CHECK(refusal("sides=6.5") == "sides=6.5: not a whole number (allowed: 3 to 64)");
-    CHECK(refusal("sides=six").rfind("sides=six: not a number (allowed: 3 to 64)", 0) == 0);
-    CHECK(refusal("fill=1.5").rfind("fill=1.5: out of range (allowed: ", 0) == 0);
-    CHECK(refusal("fill=nan").rfind("fill=nan: not a number", 0) == 0);
-    CHECK(refusal("angle=95").rfind("angle=95: out of range (allowed: ", 0) == 0);
+    CHECK(refusal("sides=six") == "sides=six: not a whole number (allowed: 3 to 64)");
+    CHECK(refusal("fill=1.5") == "fill.ratio = 1.5 (from fill=1.5) is out of range (allowed: from 0 to 1)");
+    CHECK(refusal("fill=nan") == "fill=nan: not a number (allowed: from 0 to 1)");
+    CHECK(refusal("angle=95").rfind("ramp.angle_deg = 95 (from angle=95) is out of range (allowed: ", 0) == 0);
+    CHECK(refusal("seed=-1") == "seed=-1: not a whole number (allowed: 0 to 2^64-1)");
+    CHECK(refusal("model=dem3d").rfind("run.model = dem3d (from model=dem3d) is not one the window runs (allowed: ",
+                                       0) == 0);
     // A key without a value, or a value without a key, is said as such.
     CHECK(refusal("angle=").rfind("angle=: no value (allowed: ", 0) == 0);
     CHECK(refusal("sides") == "sides=: no value (allowed: 3 to 64)");
@@ -92,10 +96,10 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(preset.rfind("preset=nonagon: unknown (allowed: default, ", 0) == 0);
     CHECK(preset.find("race") != std::string::npos);
     const std::string material = refusal("material=sand");
-    CHECK(material.rfind("material=sand: unknown (allowed: ", 0) == 0);
+    CHECK(material.rfind("material=sand: unknown material preset 'sand' (allowed: ", 0) == 0);
     CHECK(material.find("rice") != std::string::npos);
     CHECK(refusal("colour=red") == "colour: unknown setting in the address (allowed: " + page_query_keys() + ")");
-    CHECK(page_query_keys().rfind("preset, sides, fill, material, angle, ", 0) == 0);
+    CHECK(page_query_keys().rfind("preset, polygon, sides, fill, material, ramp, angle, ", 0) == 0);
     // A key given twice is refused naming it, whichever value came second (the page would show one of them).
     CHECK(refusal("fill=0.5&fill=0.3") == "fill=0.3: fill is given twice in the address (allowed: each setting once)");
     CHECK(refusal("paused&sides=6&paused=0") ==
@@ -109,22 +113,25 @@ TEST_CASE("page address: bad values are refused naming the value and what is all
     CHECK(refusal("preset=race&sides=8").empty());
 }
 
-// polyroll-sandbox's flags of the page's names go through the page's checks, the flag named as typed.
+// polyroll-sandbox's flags of the page's names go through the page's checks, the flag named as the
+// command line names it.
 TEST_CASE("window flags: the page's keys with the page's checks and the flag's own name", "[app][web]") {
     const PageSettings p = parse_window_flags({{"sides", "8"}, {"fill", "0.375"}, {"material", "rice"},
                                                {"angle", "14"}, {"seed", "3"}});
-    CHECK(*p.sides == 8);
-    CHECK(*p.fill_ratio == 0.375);
-    CHECK(*p.material == "rice");
-    CHECK(*p.angle_deg == 14.0);
-    CHECK(*p.seed == 3);
+    CHECK(*p.field("shell.sides") == 8);
+    CHECK(*p.field("fill.ratio") == 0.375);
+    CHECK(*p.field("fill.material.preset") == "rice");
+    CHECK(*p.field("ramp.angle_deg") == 14.0);
+    CHECK(*p.field("run.seed") == 3);
     SandboxState s = state_for_preset("default");
     apply_page_settings(p, s);
     const Scene scene = scenes_for(s).front();
     CHECK(scene.shell.sides == 8);
     CHECK(scene.run.seed == 3);
-    CHECK_THROWS_WITH(parse_window_flags({{"sides", "99"}}), "--sides 99: out of range (allowed: 3 to 64)");
-    CHECK_THROWS_WITH(parse_window_flags({{"material", "sand"}}), Catch::StartsWith("--material sand: unknown (allowed: "));
+    CHECK_THROWS_WITH(parse_window_flags({{"sides", "99"}}),
+                      "shell.sides = 99 (from --sides) is out of range (allowed: 3 to 64)");
+    CHECK_THROWS_WITH(parse_window_flags({{"material", "sand"}}),
+                      Catch::StartsWith("--material: unknown material preset 'sand' (allowed: "));
     CHECK_THROWS_WITH(parse_window_flags({{"seed", "1e3"}}), Catch::StartsWith("--seed 1e3: not a whole number"));
     // A value holding the address's own separators is one value, not more of the address.
     CHECK_THROWS_WITH(parse_window_flags({{"fill", "0.5&sides=9"}}), Catch::StartsWith("--fill 0.5&sides=9: not a number"));

@@ -362,7 +362,7 @@ TEST_CASE("the sandbox refuses bad flags with one line and exit code 2", "[app][
                           Case{"--ui-scal 2", "polyroll-sandbox: unknown flag '--ui-scal'; did you mean '--ui-scale'? "
                                               "(see polyroll-sandbox --help)\n"},
                           // The page's keys as flags: the page's checks, the flag named as typed.
-                          Case{"--sides 99", "polyroll-sandbox: --sides 99: out of range (allowed: 3 to 64)\n"},
+                          Case{"--sides 99", "polyroll-sandbox: shell.sides = 99 (from --sides) is out of range (allowed: 3 to 64)\n"},
                           Case{"--fill abc", "polyroll-sandbox: --fill abc: not a number (allowed: from 0 to 1)\n"},
                           Case{"--seed -1", "polyroll-sandbox: --seed -1: not a whole number (allowed: 0 to 2^64-1)\n"}})
         CHECK(expect_refused(sandbox + c.args, {}, written).out == c.line);

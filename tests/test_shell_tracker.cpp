@@ -4,16 +4,19 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "sim/dem3d/state_tracker.h"
+#include "sim/files/result_columns.h"
 #include "sim/geometry/shell_properties.h"
 #include "sim/shell_tracker.h"
 #include "sim/grains/tracker.h"
 #include "sim/grains/world_builder.h"
+#include "hand_landing.h"
 #include "test_helpers.h"
 
 using namespace polyroll;
@@ -55,16 +58,14 @@ RecordedRun record_grain_run(const Scene& scene) {
     return r;
 }
 
-void check_same_sample(const TrajectorySample& a, const TrajectorySample& b) {
-    CHECK(a.time_s == b.time_s);
-    CHECK(a.position_m == b.position_m);
-    CHECK(a.speed_m_s == b.speed_m_s);
-    CHECK(a.angle_deg == b.angle_deg);
-    CHECK(a.kinetic_J == b.kinetic_J);
-    CHECK(a.potential_J == b.potential_J);
-    CHECK(a.dissipated_J == b.dissipated_J);
-    CHECK(a.fill_ahead_m == b.fill_ahead_m);
-    CHECK(a.fill_up_m == b.fill_up_m);
+// Two rows the same in every column of their file (sim/files/result_columns.h), the column named where
+// they differ.
+template <class Row>
+void check_same_row(std::span<const ResultColumn<Row>> columns, const Row& a, const Row& b) {
+    for (const ResultColumn<Row>& c : columns) {
+        INFO(c.name);
+        CHECK(c.value(a) == c.value(b));
+    }
 }
 
 void check_same_measurements(const Measurements& a, const Measurements& b) {
@@ -80,17 +81,12 @@ void check_same_measurements(const Measurements& a, const Measurements& b) {
     REQUIRE(a.impacts.size() == b.impacts.size());
     for (size_t i = 0; i < a.impacts.size(); ++i) {
         INFO("impact " << i + 1);
-        CHECK(a.impacts[i].index == b.impacts[i].index);
-        CHECK(a.impacts[i].time_s == b.impacts[i].time_s);
-        CHECK(a.impacts[i].position_m == b.impacts[i].position_m);
-        CHECK(a.impacts[i].kinetic_before_J == b.impacts[i].kinetic_before_J);
-        CHECK(a.impacts[i].kinetic_after_J == b.impacts[i].kinetic_after_J);
-        CHECK(a.impacts[i].kinetic_delayed_J == b.impacts[i].kinetic_delayed_J);
+        check_same_row(impact_columns(), a.impacts[i], b.impacts[i]);
     }
     REQUIRE(a.trajectory.size() == b.trajectory.size());
     for (size_t i = 0; i < a.trajectory.size(); ++i) {
         INFO("trajectory row " << i);
-        check_same_sample(a.trajectory[i], b.trajectory[i]);
+        check_same_row(trajectory_columns(), a.trajectory[i], b.trajectory[i]);
     }
 }
 
@@ -184,38 +180,10 @@ TEST_CASE("the rest window is held at the rest time even when the times carry a 
 
 namespace {
 
-// A hand-made landing of vertex 2 (tracker.cpp's numbering), pointing straight down: rows at the
-// given heights above the ramp (in contact tolerances) and approach speeds, each with its own
+// A hand-made landing (hand_landing.h): rows of height (in contact tolerances), approach speed and
 // kinetic energy.
-struct LandingRow {
-    double height_tol = 0.0;
-    double approach_m_s = 0.0;
-    double kinetic_J = 0.0;
-};
-
-Measurements measure_landing(const Scene& s, const std::vector<LandingRow>& landing) {
-    const double tol_m = 0.0005;
-    const int n = s.shell.sides;
-    const double angle = -3.0 * geom::kPi / n;  // vertex j points down at pi/n - 2 pi j/n
-    const geom::Vec2 arm = geom::rotate(shell_outer_polygon_m(s.shell)[2], angle);
-    REQUIRE(std::fabs(arm.x) < 1e-12);
-    TrackRules rules;
-    rules.energy_scale_J = 1.0;
-    rules.contact_tolerance_m = tol_m;
-    ShellPose release;
-    release.angle_rad = angle;
-    ShellTracker tracker(s, release, rules);
-    for (size_t k = 0; k < landing.size(); ++k) {
-        ObservedState o;
-        o.time_s = static_cast<double>(k) / s.fidelity.step_hz;
-        o.shell.pose.angle_rad = angle;
-        o.shell.pose.centre_m = {0.1, landing[k].height_tol * tol_m - arm.y};
-        o.shell.velocity_m_s = {0.0, -landing[k].approach_m_s};
-        o.kinetic_J = landing[k].kinetic_J;
-        o.potential_J = -2.0;
-        if (!tracker.observe(static_cast<long>(k), o)) break;
-    }
-    return tracker.measurements();
+Measurements measure_landing(const Scene& s, const std::vector<test::LandingRow>& rows) {
+    return test::measure_landing(s, rows).measured;
 }
 
 }  // namespace

@@ -31,22 +31,22 @@ WINDOWS = [(800, 600), (1920, 1080)]
 # Address -> a text the visible status box must hold (the program's refusal, without its name;
 # the program's own line from its error stream must be there too, whatever it says).
 ALWAYS_CHECKED = [
-    ("sides=99", "sides=99: out of range (allowed: 3 to 64)"),
+    ("sides=99", "shell.sides = 99 (from sides=99) is out of range (allowed: 3 to 64)"),
     ("fill=abc", "fill=abc: not a number (allowed: "),
-    ("foo=1", "foo: unknown setting in the address (allowed: preset, sides, fill, material, angle, "),
+    ("foo=1", "foo: unknown setting in the address (allowed: preset, polygon, sides, fill, material, ramp, angle, "),
 ]
 # More of the mistakes a hand-typed or truncated link holds, at the small window only.
 SMALL_WINDOW_ONLY = [
     ("sides=2.5", "sides=2.5: "),
-    ("fill=1.5", "fill=1.5: out of range (allowed: "),
+    ("fill=1.5", "fill.ratio = 1.5 (from fill=1.5) is out of range (allowed: "),
     ("angle=", "angle="),
-    ("material=sand", "material=sand: unknown (allowed: "),
+    ("material=sand", "material=sand: unknown material preset 'sand' (allowed: "),
     ("preset=nonagon", "preset=nonagon: unknown (allowed: default, "),
     ("sides=8&sides=9", "sides=9: sides is given twice in the address"),
     ("Sides=8", "Sides: unknown setting in the address"),
     ("=5", "=5: no setting name before the '=' (allowed: preset, "),
     ("paused=yes", "paused=yes: unknown (allowed: 1, 0, or no value)"),
-    ("sides=99&fill=abc", "sides=99: out of range (allowed: 3 to 64); fill=abc: not a number (allowed: "),
+    ("sides=99&fill=abc", "shell.sides = 99 (from sides=99) is out of range (allowed: 3 to 64); fill=abc: not a number (allowed: "),
 ]
 
 # The visible state of the status box and the canvas, as a JSON string.

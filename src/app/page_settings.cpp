@@ -1,27 +1,25 @@
-// The web page's scene from its address: see page_settings.h.
+// The web page's scene from its address, and the window's flags of the same names: see page_settings.h.
 #include "app/page_settings.h"
 
 #include <algorithm>
-#include <charconv>
-#include <cerrno>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <system_error>
-#include <vector>
 
 #include <fmt/core.h>
 
 #include "app/controls.h"
 #include "app/sandbox_presets.h"
-#include "sim/assets.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
-#include "sim/scene/scene_fields.h"
+#include "sim/scene/field_text.h"
+#include "sim/scene/json_path.h"
 
 namespace polyroll::app {
 
 namespace {
+
+using json = nlohmann::ordered_json;
 
 // As polyroll-sandbox --frames allows (sandbox_main.cpp): 1 to ten million.
 constexpr long kMaxPageFrames = 10'000'000;
@@ -49,81 +47,74 @@ std::string url_decode(std::string_view s) {
     return out;
 }
 
-// The whole text as a finite number, or nullopt.
-std::optional<double> number_from(const std::string& text) {
-    if (text.empty()) return std::nullopt;
-    errno = 0;
+const SceneField* window_field_of_key(const std::string& key) {
+    for (const SceneField* f : window_scene_fields())
+        if (field_key(*f) == key) return f;
+    return nullptr;
+}
+
+// A choice the panel offers fewer of than the field has (the model: not the 3D reference) refused as
+// the panel would not offer it, in the resolver's words.
+void check_offered(const SceneField& f, const json& value, const std::string& said) {
+    const ControlRow& row = control_row(f.path);
+    if (!row.offered || !value.is_string()) return;
+    const std::vector<std::string>& names = row.offered();
+    if (std::find(names.begin(), names.end(), value.get<std::string>()) == names.end())
+        throw InputError(fmt::format("{} = {} (from {}) is not one the window runs (allowed: {})", f.path,
+                                     value.get<std::string>(), said, comma_list(names)));
+}
+
+// One scene field, typed as `text`, into the layer; `name` says how it was given for a text that is not
+// of the field's type ("sides=six", "--sides six"), `label` for a value the scene refuses ("sides=2",
+// "--sides"), as the command line and Python name them. Checked alone over the defaults, so that every bad setting is named at once; the
+// combination is checked when applied.
+void read_field(const SceneField& f, const std::string& text, const std::string& name, const std::string& label,
+                SceneLayer& layer) {
+    const json value = field_json_from_text(f, text, name);
+    SceneLayer alone{json::object(), layer.origin, {{std::string(f.path), label}}};
+    node_at(alone.doc, f.path) = value;
+    resolve_scene({alone});
+    check_offered(f, value, label);  // a name the scene takes, but not one the window runs
+    node_at(layer.doc, f.path) = value;
+    layer.field_labels.emplace_back(std::string(f.path), label);
+}
+
+// The page's frame count: "frames=240".
+long read_frames(const std::string& value, const std::string& name) {
     char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
-    return v;
+    const double v = value.empty() ? NAN : std::strtod(value.c_str(), &end);
+    const std::string allowed = fmt::format("(allowed: 1 to {})", kMaxPageFrames);
+    if (value.empty()) throw InputError(fmt::format("{}: no value {}", name, allowed));
+    if (end != value.c_str() + value.size() || !std::isfinite(v) || v != std::floor(v))
+        throw InputError(fmt::format("{}: not a whole number {}", name, allowed));
+    if (v < 1 || v > static_cast<double>(kMaxPageFrames))
+        throw InputError(fmt::format("{}: out of range {}", name, allowed));
+    return static_cast<long>(v);
 }
 
-// The value checked against the scene field's fixed limits, with the field's own allowed text.
-double field_number(const std::string& key, const std::string& text, std::string_view path) {
-    const SceneField& f = scene_field(path);
-    const std::optional<double> v = number_from(text);
-    const std::string allowed = field_allowed(f);
-    if (text.empty()) throw InputError(fmt::format("{}=: no value (allowed: {})", key, allowed));
-    if (!v) throw InputError(fmt::format("{}={}: not a number (allowed: {})", key, text, allowed));
-    const bool below = f.min_open ? *v <= f.min : *v < f.min;
-    const bool above = f.max_open ? *v >= f.max : *v > f.max;
-    if (below || above) throw InputError(fmt::format("{}={}: out of range (allowed: {})", key, text, allowed));
-    if (f.type == FieldType::integer && *v != std::floor(*v))
-        throw InputError(fmt::format("{}={}: not a whole number (allowed: {})", key, text, allowed));
-    return *v;
+bool read_switch(const std::string& key, const std::string& value) {
+    if (!value.empty() && value != "1" && value != "0")
+        throw InputError(fmt::format("{}={}: unknown (allowed: 1, 0, or no value)", key, value));
+    return value != "0";
 }
-
-}  // namespace
-
-std::string page_query_keys() { return "preset, sides, fill, material, angle, seed, frames, paused, bench"; }
-
-namespace {
 
 // One setting of the address into p; throws InputError naming it.
 void read_setting(const std::string& key, const std::string& value, PageSettings& p) {
+    const std::string said = key + "=" + value;
     if (key == "preset") {
         const std::vector<std::string> names = sandbox_preset_names();
         if (std::find(names.begin(), names.end(), value) == names.end())
-            throw InputError(fmt::format("preset={}: unknown (allowed: {})", value, comma_list(names)));
+            throw InputError(fmt::format("{}: unknown (allowed: {})", said, comma_list(names)));
         p.preset = value;
-    } else if (key == "sides") {
-        p.sides = static_cast<int>(field_number(key, value, "shell.sides"));
-    } else if (key == "fill") {
-        p.fill_ratio = field_number(key, value, "fill.ratio");
-    } else if (key == "angle") {
-        p.angle_deg = field_number(key, value, "ramp.angle_deg");
-    } else if (key == "seed") {
-        // Digits only, as polyroll run --seed takes them: "-1" or "1e3" would not be this seed.
-        std::uint64_t seed = 0;
-        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seed);
-        if (value.empty() || error != std::errc() || end != value.data() + value.size())
-            throw InputError(fmt::format("seed={}: not a whole number (allowed: {})", value,
-                                         field_allowed(scene_field("run.seed"))));
-        p.seed = seed;
-    } else if (key == "material") {
-        const std::vector<std::string> names = assets::preset_names(assets::Kind::material);
-        if (std::find(names.begin(), names.end(), value) == names.end())
-            throw InputError(fmt::format("material={}: unknown (allowed: {})", value, comma_list(names)));
-        p.material = value;
+    } else if (const SceneField* f = window_field_of_key(key)) {
+        if (value.empty()) throw InputError(fmt::format("{}: no value (allowed: {})", said, field_allowed(*f)));
+        read_field(*f, value, said, said, p.scene);
     } else if (key == "frames") {
-        if (value.empty())
-            throw InputError(fmt::format("frames=: no value (allowed: 1 to {})", kMaxPageFrames));
-        const std::optional<double> v = number_from(value);
-        if (!v || *v != std::floor(*v))
-            throw InputError(
-                fmt::format("frames={}: not a whole number (allowed: 1 to {})", value, kMaxPageFrames));
-        if (*v < 1 || *v > static_cast<double>(kMaxPageFrames))
-            throw InputError(fmt::format("frames={}: out of range (allowed: 1 to {})", value, kMaxPageFrames));
-        p.frames = static_cast<long>(*v);
+        p.frames = read_frames(value, said);
     } else if (key == "paused") {
-        if (!value.empty() && value != "1" && value != "0")
-            throw InputError(fmt::format("paused={}: unknown (allowed: 1, 0, or no value)", value));
-        p.paused = value != "0";
+        p.paused = read_switch(key, value);
     } else if (key == "bench") {
-        if (!value.empty() && value != "1" && value != "0")
-            throw InputError(fmt::format("bench={}: unknown (allowed: 1, 0, or no value)", value));
-        p.bench = value != "0";
+        p.bench = read_switch(key, value);
     } else if (key.empty()) {
         // "?=5" or "?&=&": a value with no name before it (a link cut or mistyped).
         throw InputError(fmt::format("={}: no setting name before the '=' (allowed: {})", value, page_query_keys()));
@@ -134,9 +125,31 @@ void read_setting(const std::string& key, const std::string& value, PageSettings
 
 }  // namespace
 
+const std::vector<const SceneField*>& window_scene_fields() {
+    static const std::vector<const SceneField*> fields = [] {
+        std::vector<const SceneField*> out;
+        for (const SceneField& f : scene_fields()) {
+            const bool has_control = std::any_of(control_rows().begin(), control_rows().end(),
+                                                 [&f](const ControlRow& r) { return r.path == f.path; });
+            if (!f.flag.empty() && has_control) out.push_back(&f);
+        }
+        return out;
+    }();
+    return fields;
+}
+
+const json* PageSettings::field(std::string_view path) const { return find_at(scene.doc, path); }
+
+std::string page_query_keys() {
+    std::string keys = "preset";
+    for (const SceneField* f : window_scene_fields()) keys += ", " + field_key(*f);
+    return keys + ", frames, paused, bench";
+}
+
 PageSettings parse_page_query(std::string_view query) {
     if (!query.empty() && query.front() == '?') query.remove_prefix(1);
     PageSettings p;
+    p.scene.origin = "the page's address";
     std::vector<std::string> seen;      // the keys read so far
     std::vector<std::string> problems;  // every bad setting, so that one look at the page fixes the address
     while (!query.empty()) {
@@ -170,41 +183,37 @@ PageSettings parse_page_query(std::string_view query) {
 
 PageSettings parse_window_flags(const std::vector<std::pair<std::string, std::string>>& flags) {
     PageSettings p;
+    p.scene.origin = "command line";
     for (const auto& [key, value] : flags) {
-        // Each flag through the address's own checks, its value percent-encoded so that no '&', '='
-        // or '%' in it reads as more of the address.
-        std::string encoded;
-        for (const char c : value) {
-            if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') encoded += c;
-            else encoded += fmt::format("%{:02X}", static_cast<unsigned char>(c));
+        const std::string flag = "--" + key;
+        if (key == "preset") {
+            const std::vector<std::string> names = sandbox_preset_names();
+            if (std::find(names.begin(), names.end(), value) == names.end())
+                throw InputError(fmt::format("{} {}: unknown (allowed: {})", flag, value, comma_list(names)));
+            p.preset = value;
+        } else if (const SceneField* f = window_field_of_key(key)) {
+            read_field(*f, value, flag + " " + value, flag, p.scene);
+        } else {
+            throw std::logic_error(fmt::format("'{}' is not one of the window's scene flags", flag));
         }
-        PageSettings one;
-        try {
-            one = parse_page_query(key + "=" + encoded);
-        } catch (const InputError& e) {
-            // "sides=99: out of range ..." -> "--sides 99: out of range ...".
-            const std::string said = e.what(), as_page = key + "=" + value;
-            const std::string rest = said.rfind(as_page, 0) == 0 ? said.substr(as_page.size()) : ": " + said;
-            throw InputError(fmt::format("--{} {}{}", key, value, rest));
-        }
-        if (one.preset) p.preset = one.preset;
-        if (one.sides) p.sides = one.sides;
-        if (one.fill_ratio) p.fill_ratio = one.fill_ratio;
-        if (one.material) p.material = one.material;
-        if (one.angle_deg) p.angle_deg = one.angle_deg;
-        if (one.seed) p.seed = one.seed;
     }
     return p;
 }
 
 void apply_page_settings(const PageSettings& page, SandboxState& state) {
     if (page.preset) load_preset(state, *page.preset);
-    LaneControls& lane = state.lanes.at(static_cast<size_t>(state.selected_lane)).controls;
-    if (page.sides) set_control(lane, "shell.sides", *page.sides);
-    if (page.fill_ratio) set_control(lane, "fill.ratio", *page.fill_ratio);
-    if (page.material) set_control(lane, "fill.material.preset", *page.material);
-    if (page.angle_deg) set_control(state.shared, "ramp.angle_deg", *page.angle_deg);
-    if (page.seed) set_control(state.shared, "run.seed", *page.seed);
+    if (!page.scene.field_labels.empty()) {
+        // The selected lane's scene with the settings as one more layer, as the command line's flags are
+        // over a scene file: a combination the scene refuses is named as given, and each setting's value
+        // is taken as resolved (a preset's name before the values over it, in the table's order).
+        LaneChoice& lane = state.lanes.at(static_cast<size_t>(state.selected_lane));
+        const Scene resolved = resolve_scene({SceneLayer{lane.base, "sandbox preset", {}},
+                                              SceneLayer{controls_layer(lane.controls, state.shared), "panel", {}},
+                                              page.scene});
+        for (const SceneField* f : window_scene_fields())
+            if (page.field(f->path) != nullptr)
+                set_control(lane.controls, state.shared, f->path, f->access.get(resolved));
+    }
     if (page.paused) state.playing = false;
     scenes_for(state);  // a combination out of range (too many grains) is refused here, named
 }

@@ -17,6 +17,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/controls.h"
 #include "app/divergence.h"
 #include "flags/parse_errors.h"
 #include "app/export_files.h"
@@ -40,6 +41,7 @@
 #include "sim/build_info.h"
 #include "sim/errors.h"
 #include "sim/message_text.h"
+#include "sim/scene/field_text.h"
 #include "sim/scene/scene_json.h"
 
 namespace polyroll::app {
@@ -585,9 +587,22 @@ namespace {
 // The words the flags' help and errors use, and the page's address keys as flags with their values.
 struct FlagTexts {
     std::string presets_list, levels_list;
-    std::vector<std::pair<std::string, std::string>> page_flags;  // key, help
+    std::vector<std::string> page_flags;                           // their keys, without the dashes
     std::map<std::string, std::string> values;                     // key -> as typed
 };
+
+// What --help shows after a scene flag, as the command line's typed flags show it.
+std::string flag_type_name(const SceneField& f) {
+    switch (f.type) {
+        case FieldType::integer: return "INT";
+        case FieldType::seed: return "UINT";
+        case FieldType::number:
+        case FieldType::optional_number: return "FLOAT";
+        case FieldType::preset:
+        case FieldType::choice: break;
+    }
+    return "TEXT";
+}
 
 void add_flags(CLI::App& cli, Options& o, FlagTexts& t) {
     for (const std::string& n : sandbox_preset_names()) t.presets_list += (t.presets_list.empty() ? "" : ", ") + n;
@@ -619,14 +634,17 @@ void add_flags(CLI::App& cli, Options& o, FlagTexts& t) {
         },
         "the same as --color-by");
     cli.add_flag("--paused", o.paused, "start paused");
-    // The page's address keys as flags of the same names, checked by the same code (page_settings.h).
-    t.page_flags = {
-        {"sides", "n: the selected lane's number of sides, 3 to 64"},
-        {"fill", "r: the selected lane's fill ratio, 0 to 1"},
-        {"material", "the selected lane's grains: bb, rice or peas"},
-        {"angle", "theta: the ramp's angle, 0 to 89 degrees (all lanes)"},
-        {"seed", "the grain packing's seed, all lanes (the same seed, the same run)"}};
-    for (const auto& [key, help] : t.page_flags) cli.add_option("--" + key, t.values[key], help)->group("Scene");
+    // The scene fields the page's address takes, as flags of the same names from the field table
+    // (page_settings.h: every field with a flag and a panel control), checked by the same code.
+    for (const SceneField* f : window_scene_fields()) {
+        const std::string key = field_key(*f);
+        t.page_flags.push_back(key);
+        std::string help = field_help(*f);
+        // The model's list offers what the window runs (not the 3D reference, a minute a run).
+        if (const ControlRow& row = control_row(f->path); row.offered)
+            help += "; the window runs " + comma_list(row.offered());
+        cli.add_option("--" + key, t.values[key], help)->group("Scene")->type_name(flag_type_name(*f));
+    }
     cli.add_option("--scene", o.scene_file, "a scene file (JSON, as polyroll run --scene reads it): one lane; the flags "
                                             "above apply over it")
         ->group("Scene");
@@ -650,7 +668,7 @@ std::optional<int> parse_flags(CLI::App& cli, int argc, char** argv, Options& o,
         cli.parse(argc, argv);
         o.frames_given = cli.count("--frames") > 0;
         o.out_given = cli.count("--out") > 0;
-        for (const auto& [key, help] : t.page_flags)
+        for (const std::string& key : t.page_flags)
             if (cli.count("--" + key) > 0) o.scene_flags.emplace_back(key, t.values[key]);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

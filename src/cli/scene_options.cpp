@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "sim/errors.h"
+#include "sim/scene/field_text.h"
 #include "sim/scene/json_path.h"
 #include "sim/scene/scene_fields.h"
 #include "sim/scene/scene_json.h"
@@ -36,20 +37,18 @@ std::string default_note(const SceneField& f) {
 }
 
 template <class T>
-void SceneOptions::add_flag(flags::Command& app, const std::string& name, const std::string& field,
-                            const std::string& help) {
+void SceneOptions::add_flag(flags::Command& app, const SceneField& f, const std::string& help) {
     // The value lives on the heap so the flag's reader stays valid however flags_ grows.
     auto value = std::make_shared<T>();
+    const std::string name(f.flag), field(f.path);
     flags::Flag o = app.add_option(name, *value, help).group("Scene");
-    // CLI11 converts "-1" to an unsigned type by wrapping it (--seed -1 became 2^64-1) and clamps a
-    // number past 2^64-1 to 2^64-1: only digits that fit are a value.
-    if constexpr (std::is_unsigned_v<T>)
-        o.check([](const std::string& text) {
-            T parsed = 0;
-            const char* end = text.data() + text.size();
-            const auto [ptr, error] = std::from_chars(text.data(), end, parsed);
-            return error == std::errc() && ptr == end ? std::string()
-                                                      : "must be a whole number from 0 to 2^64-1, got " + text;
+    // The typed text read as every surface reads it (sim/scene/field_text.h), before CLI11 converts it:
+    // CLI11 would wrap "-1" into a seed of 2^64-1 and clamp digits past 2^64-1 to it. The refusal is
+    // "TEXT: PROBLEM"; flags::flag_error_text says it as "--seed -1: not a whole number (allowed: ...)".
+    if constexpr (!std::is_same_v<T, std::string>)
+        o.check([&f](const std::string& text) {
+            const std::string problem = field_text_problem(f, text);
+            return problem.empty() ? std::string() : text + ": " + problem;
         });
     flags_.push_back({o, field, [value] { return json(*value); }});
 }
@@ -68,14 +67,14 @@ void SceneOptions::add_to(flags::Command& app, const std::vector<std::string>& w
         if (!f.flag.empty() && std::find(without.begin(), without.end(), f.path) == without.end())
             fields.push_back(&f);
     for (const SceneField* f : fields) {
-        const std::string name(f->flag), field(f->path), help = field_help(*f) + default_note(*f);
+        const std::string help = field_help(*f) + default_note(*f);
         switch (f->type) {
-            case FieldType::integer: add_flag<int>(app, name, field, help); break;
+            case FieldType::integer: add_flag<int>(app, *f, help); break;
             case FieldType::number:
-            case FieldType::optional_number: add_flag<double>(app, name, field, help); break;
-            case FieldType::seed: add_flag<std::uint64_t>(app, name, field, help); break;
+            case FieldType::optional_number: add_flag<double>(app, *f, help); break;
+            case FieldType::seed: add_flag<std::uint64_t>(app, *f, help); break;
             case FieldType::preset:
-            case FieldType::choice: add_flag<std::string>(app, name, field, help); break;
+            case FieldType::choice: add_flag<std::string>(app, *f, help); break;
         }
     }
 }

@@ -55,7 +55,7 @@ private:
         std::function<nlohmann::ordered_json()> value;  // the parsed value, as JSON
     };
     template <class T>
-    void add_flag(flags::Command& app, const std::string& name, const std::string& field, const std::string& help);
+    void add_flag(flags::Command& app, const SceneField& f, const std::string& help);
 
     // --set FIELD=VALUE: any field of a scene file, as sweep, validate and calibrate take it.
     std::vector<std::pair<std::string, nlohmann::ordered_json>> parsed_sets() const;

@@ -113,6 +113,8 @@ std::string reworded(const std::string& what, const CLI::App& sub, const Allowed
     static const std::regex missing(R"(^(\S+): (\d+) required (\S+) missing$)");
     static const std::regex extras(R"(^The following arguments? (?:was|were) not expected: (.*)$)");
     static const std::regex range(R"(^(\S+): Value (.*) not in range (.*) to (.*)$)");
+    // A scene flag's text refused by the core's reading of typed text (cli/scene_options.cpp).
+    static const std::regex field_text(R"(^(--\S+): (.*): ((?:not a|out of range).*)$)");
     if (std::regex_match(what, m, convert)) {
         const std::string name = m[1], value = m[2];
         const CLI::Option* o = sub.get_option_no_throw(name);
@@ -122,6 +124,7 @@ std::string reworded(const std::string& what, const CLI::App& sub, const Allowed
         return fmt::format("{} {}: {}{}", name, value, digits ? "out of range" : "not " + what_type(type),
                            allowed.empty() ? "" : " (allowed: " + allowed + ")");
     }
+    if (std::regex_match(what, m, field_text)) return fmt::format("{} {}: {}", m[1].str(), m[2].str(), m[3].str());
     if (std::regex_match(what, m, at_most)) {
         if (m[2] == "1") return fmt::format("{} is given {} times (allowed: once)", m[1].str(), m[3].str());
         return fmt::format("{} takes at most {} values, got {}", m[1].str(), m[2].str(), m[3].str());
