@@ -15,7 +15,8 @@ std::string to_string(ReleasePose pose);
 std::string to_string(Model model);
 std::string to_string(EngineFrame frame);
 
-// Every value's name, in the enum's order: "vertex", "face", "tipped" / "grains", "segments", "rigid", "dem3d", "auto".
+// Every value's name: the poses in the enum's order ("vertex", "face", "tipped"); the models' names
+// from their registry rows in the rows' order, then "auto" (model_row.h).
 const std::vector<std::string>& release_pose_names();
 const std::vector<std::string>& model_names();
 
