@@ -2,10 +2,14 @@
 // experiment's fill ratios, and after settling in the release pose.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <filesystem>
 
 #include "sim/grains/contact_values.h"
+#include "sim/grains/fill_plan.h"
+#include "sim/geometry/shell_properties.h"
 #include "sim/geometry/disc_size.h"
 #include "sim/scene/scene_json.h"
 #include "sim/grains/world_builder.h"
@@ -234,4 +238,41 @@ TEST_CASE("the closure scales the discs' friction and restitution in the 2D engi
     CHECK(disc_friction(none) == none.fill.material.friction);
     CHECK(disc_wall_friction(none) == none.fill.material.wall_friction);
     CHECK(disc_restitution(none) == none.fill.material.restitution);
+}
+
+TEST_CASE("the closure's size spread sizes the 2D discs instead of the material's, and unset changes nothing",
+          "[fill][closure]") {
+    const Scene none = test::scene_with(json::object());
+    REQUIRE_FALSE(none.closure.disc_size_spread);  // the bundled default: the material's own spread
+    CHECK(disc_size_spread(none) == none.fill.material.diameter_spread);
+    const Scene wide = test::scene_with({{"closure", {{"disc_size_spread", 0.3}}}});
+    const ShellProperties p = shell_properties(none.shell);
+    const geom::Vec2 up{0.0, 1.0};
+    // Radii of each plan over the mean disc's: the material's 1% against the closure's 30%.
+    auto radius_range = [&](const Scene& s) {
+        const FillPlan plan = plan_fill(s, p, up);
+        REQUIRE(plan.grains.size() > 50);
+        double lo = 1e9, hi = 0.0;
+        for (const auto& g : plan.grains) {
+            lo = std::min(lo, g.radius_m);
+            hi = std::max(hi, g.radius_m);
+        }
+        const double mean_radius_m = 0.5 * disc_diameter_m(s);
+        return std::pair{lo / mean_radius_m, hi / mean_radius_m};
+    };
+    const auto [none_lo, none_hi] = radius_range(none);
+    CHECK(none_lo >= 1.0 - none.fill.material.diameter_spread - 1e-12);
+    CHECK(none_hi <= 1.0 + none.fill.material.diameter_spread + 1e-12);
+    const auto [wide_lo, wide_hi] = radius_range(wide);
+    CHECK(wide_lo >= 0.7 - 1e-12);
+    CHECK(wide_hi <= 1.3 + 1e-12);
+    CHECK(wide_hi - wide_lo > 0.4);  // uniform over +-30%: a few hundred discs span most of it
+    // The same fill mass either way: the deposition stops at the mass, not at a count.
+    CHECK(plan_fill(wide, p, up).target_mass_kg == plan_fill(none, p, up).target_mass_kg);
+    // null is the material's spread exactly: the same discs, bit for bit.
+    Scene spelled = none;
+    spelled.closure.disc_size_spread = none.fill.material.diameter_spread;
+    const FillPlan a = plan_fill(none, p, up), b = plan_fill(spelled, p, up);
+    REQUIRE(a.grains.size() == b.grains.size());
+    for (size_t i = 0; i < a.grains.size(); ++i) CHECK(a.grains[i].radius_m == b.grains[i].radius_m);
 }

@@ -45,6 +45,7 @@ const std::vector<std::string> kSceneFileFields = {
     "run.rest_speed_m_s", "run.rest_time_s", "run.end_at_impact",
     "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.channel_width_m",
     "closure.preset", "closure.disc_friction_factor", "closure.wall_friction_factor", "closure.restitution_factor",
+    "closure.disc_size_spread",
 };
 
 }  // namespace

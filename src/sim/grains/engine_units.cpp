@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sim/geometry/disc_size.h"
+#include "sim/grains/contact_values.h"
 #include "sim/geometry/geometry.h"
 
 namespace polyroll {
@@ -31,7 +32,7 @@ EngineUnits choose_engine_units(const Scene& s) {
         // margin of 1.25.
         return mm.speed_cap_m_s(s.fidelity) >= 1.25 * speed_bound_m_s(s) ? mm : cm;
     }
-    const double min_radius_m = 0.5 * disc_diameter_m(s) * (1.0 - s.fill.material.diameter_spread);
+    const double min_radius_m = 0.5 * disc_diameter_m(s) * (1.0 - disc_size_spread(s));
     if (min_radius_m >= 0.001) return cm;
     // Margin of 2 over the bound: grains inside a spinning shell move faster than its centre.
     if (mm.speed_cap_m_s(s.fidelity) >= 2.0 * speed_bound_m_s(s)) return mm;

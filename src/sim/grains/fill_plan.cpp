@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "sim/geometry/disc_size.h"
+#include "sim/grains/contact_values.h"
 #include "sim/errors.h"
 #include "sim/grains/grain_deposition.h"
 #include "sim/rng.h"
@@ -27,9 +28,10 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     if (r <= 0.0) return plan;
 
     const double disc_m = disc_diameter_m(scene);
-    const double r_max = 0.5 * disc_m * (1.0 + m.diameter_spread);
+    const double spread = disc_size_spread(scene);
+    const double r_max = 0.5 * disc_m * (1.0 + spread);
     Rng rng(scene.run.seed);
-    auto next_radius = [&] { return 0.5 * disc_m * (1.0 + m.diameter_spread * rng.uniform(-1.0, 1.0)); };
+    auto next_radius = [&] { return 0.5 * disc_m * (1.0 + spread * rng.uniform(-1.0, 1.0)); };
     // Bounded by the validation's grain limit with room for packings denser than its estimate.
     const size_t max_count = static_cast<size_t>(2.0 * kMaxGrains);
     const std::vector<Disc> discs =

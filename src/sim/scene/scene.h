@@ -115,6 +115,9 @@ struct ClosureParams {
     double disc_friction_factor = 1.0;  // disc on disc: the material's friction times this
     double wall_friction_factor = 1.0;  // disc on the shell's walls: the material's wall friction times this
     double restitution_factor = 1.0;    // disc on disc and on walls: the material's restitution times this, at most 1
+    // The discs' diameters uniform in d (1 +- this) instead of the material's spread: a 3D pile of equal
+    // spheres is disordered, while equal discs in a plane lock into a crystal. Unset: the material's.
+    std::optional<double> disc_size_spread;
 };
 
 struct RunParams {

@@ -79,10 +79,11 @@ double max_wall_thickness_m(const Scene& s) { return 0.5 * s.shell.inner_circumr
 // wall's thickness from each at a radius of half the wall; and 5 mm is already a shell with round
 // corners, not a polygon's.
 double max_vertex_radius_m(const Scene& s) { return std::min(0.005, 0.5 * s.shell.wall_thickness_m); }
-// The largest grain must fit across the inside with room to move.
+// The largest grain must fit across the inside with room to move, in either model (the 2D discs may be
+// spread wider by the closure).
 double max_grain_diameter_m(const Scene& s) {
-    return geom::regular_polygon_apothem(s.shell.sides, s.shell.inner_circumradius_m) /
-           (1.0 + s.fill.material.diameter_spread);
+    const double spread = std::max(s.fill.material.diameter_spread, s.closure.disc_size_spread.value_or(0.0));
+    return geom::regular_polygon_apothem(s.shell.sides, s.shell.inner_circumradius_m) / (1.0 + spread);
 }
 // The ramp must be at least two outer diameters long.
 double min_ramp_length_m(const Scene& s) { return 4.0 * shell_properties(s.shell).outer_circumradius_m; }
@@ -147,7 +148,8 @@ std::vector<SceneField> make_table() {
         Row("fill.material.diameter_m", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::diameter_m>())
             .range(0.0005, 0.0)
-            .max_of(max_grain_diameter_m, {"shell.sides", "shell.inner_circumradius_m", "fill.material.diameter_spread"})
+            .max_of(max_grain_diameter_m, {"shell.sides", "shell.inner_circumradius_m", "fill.material.diameter_spread",
+                                             "closure.disc_size_spread"})
             .unit("m", "(at most the inside apothem over 1 + fill.material.diameter_spread)").help("mean grain diameter"),
         Row("fill.material.diameter_spread", T::number,
             member<&Scene::fill, &FillParams::material, &MaterialParams::diameter_spread>())
@@ -286,6 +288,11 @@ std::vector<SceneField> make_table() {
             .range(0.0, 5.0)
             .help("2D grain model: the discs' restitution as a share of fill.material.restitution (at most 1 "
                   "in all), no unit"),
+        Row("closure.disc_size_spread", T::optional_number, member<&Scene::closure, &ClosureParams::disc_size_spread>())
+            .range(0.0, 0.5)
+            .help("2D grain model: the discs' diameters uniform in d (1 +- this) instead of "
+                  "fill.material.diameter_spread (a 3D pile's disorder: equal discs in a plane lock into a "
+                  "crystal, equal spheres in a box do not); null: the material's, no unit"),
     };
 }
 
