@@ -66,8 +66,8 @@ void check_offered(const SceneField& f, const json& value, const std::string& sa
 
 // One scene field, typed as `text`, into the layer; `name` says how it was given for a text that is not
 // of the field's type ("sides=six", "--sides six"), `label` for a value the scene refuses ("sides=2",
-// "--sides"), as the command line and Python name them. Checked alone over the defaults, so that every bad setting is named at once; the
-// combination is checked when applied.
+// "--sides"), as the command line and Python name them. Checked alone over the defaults, so that every
+// bad setting of an address is named at once; the combination is checked when applied.
 void read_field(const SceneField& f, const std::string& text, const std::string& name, const std::string& label,
                 SceneLayer& layer) {
     const json value = field_json_from_text(f, text, name);
