@@ -2,10 +2,8 @@
 #include "cli/scene_options.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <exception>
-#include <system_error>
 #include <type_traits>
 
 #include <fmt/core.h>
