@@ -112,11 +112,11 @@ void ShellTracker::continue_from(const HandOver& from, const ObservedState& now)
     m_.behaviour = Behaviour::running;
     m_.grains_inside = rules_.grains;
     release_ = from.release;
-    landed_vertex_ = from.landed_vertex;
+    landing_.vertex = from.landed_vertex;
     samples_taken_ = static_cast<long>(m_.trajectory.size());
     next_sample_step_ = first_step_at(samples_taken_, scene_.fidelity.step_hz, scene_.run.sample_hz);
     now_ = trajectory_sample(now, release_);
-    previous_kinetic_J_ = now_.kinetic_J;
+    landing_.previous_kinetic_J = now_.kinetic_J;
 }
 
 bool ShellTracker::observe(long step, const ObservedState& s) {
@@ -142,7 +142,7 @@ bool ShellTracker::observe(long step, const ObservedState& s) {
     }
 
     if (step > 0) check_impact(s);
-    previous_kinetic_J_ = now_.kinetic_J;
+    landing_.previous_kinetic_J = now_.kinetic_J;
     record_delayed_kinetic(m_, t, step_s_, now_.kinetic_J);
     // The caller's early exit: at this face impact the run has told it all it needs.
     const int end_at = scene_.run.end_at_impact;
@@ -200,15 +200,15 @@ void ShellTracker::check_impact(const ObservedState& s) {
     // The lowest vertex, unwrapped: vertex j points straight down when a = pi/n - 2 pi j/n, so
     // j = 1/2 - a n / (2 pi). Vertex 1 is the pivot at release.
     const long lowest = static_cast<long>(std::floor(1.0 - a * n / (2.0 * geom::kPi)));
-    if (lowest <= landed_vertex_) {
-        impact_pending_ = false;
+    if (lowest <= landing_.vertex) {
+        landing_.pending = false;
         return;
     }
     const int j = static_cast<int>(((lowest % n) + n) % n);
     const geom::Vec2 arm_m = geom::rotate(outer_local_m_[static_cast<size_t>(j)], a);
     const double height_m = s.shell.pose.centre_m.y + arm_m.y;
     if (height_m >= rules_.contact_tolerance_m) {
-        impact_pending_ = false;
+        landing_.pending = false;
         return;
     }
     // The vertex's velocity along the ramp's normal: the centre's plus omega x arm.
@@ -224,19 +224,20 @@ void ShellTracker::check_impact(const ObservedState& s) {
         // the touch misses that step's gravity work (1-2% of the energy at 1000 Hz). A soft contact
         // (the 3D reference's springs) takes energy from the first step it touches: the last reading
         // before the vertex stops would already be short of what the springs hold.
-        kinetic_before_J_ = std::max(impact_pending_ ? kinetic_before_J_ : previous_kinetic_J_, now_.kinetic_J);
-        impact_pending_ = true;
+        const double before_J = landing_.pending ? landing_.kinetic_before_J : landing_.previous_kinetic_J;
+        landing_.kinetic_before_J = std::max(before_J, now_.kinetic_J);
+        landing_.pending = true;
         return;
     }
     FaceImpact f;
     f.index = static_cast<int>(m_.impacts.size()) + 1;
     f.time_s = s.time_s;
     f.position_m = now_.position_m;
-    f.kinetic_before_J = impact_pending_ ? kinetic_before_J_ : previous_kinetic_J_;
+    f.kinetic_before_J = landing_.pending ? landing_.kinetic_before_J : landing_.previous_kinetic_J;
     f.kinetic_after_J = now_.kinetic_J;
     m_.impacts.push_back(f);
-    landed_vertex_ = lowest;
-    impact_pending_ = false;
+    landing_.vertex = lowest;
+    landing_.pending = false;
 }
 
 bool ShellTracker::check_grains(double time_s, long step) {

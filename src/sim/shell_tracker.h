@@ -79,7 +79,7 @@ public:
     Measurements& measurements() { return m_; }
     // The latest state, for displays.
     const TrajectorySample& current() const { return now_; }
-    long landed_vertex() const { return landed_vertex_; }
+    long landed_vertex() const { return landing_.vertex; }
     const ShellPose& release() const { return release_; }
 
 private:
@@ -101,11 +101,14 @@ private:
     TrajectorySample now_;
     long next_sample_step_ = 0;
     long samples_taken_ = 0;
-    // Faces: the unwrapped index of the highest vertex that has landed (1 = the starting pivot).
-    long landed_vertex_ = 1;
-    bool impact_pending_ = false;
-    double kinetic_before_J_ = 0.0;
-    double previous_kinetic_J_ = 0.0;
+    // The face-impact detector's state (check_impact).
+    struct Landing {
+        long vertex = 1;  // the unwrapped index of the highest vertex that has landed (1: the starting pivot)
+        bool pending = false;  // a vertex is touching and still approaching: its impact ends in a later step
+        double kinetic_before_J = 0.0;    // the pending impact's energy before
+        double previous_kinetic_J = 0.0;  // the last step's kinetic energy
+    };
+    Landing landing_;
     double rest_since_s_ = -1.0;
 };
 
