@@ -347,7 +347,7 @@ private:
         draw_scene(fb_w, fb_h, area, ratio, scale, show_scene, rep ? &boxes : nullptr, split);
         if (rep) write_layout_report(L, *rep, area, ratio, boxes);
         const double u0 = now_s();
-        win_.render_ui();
+        win_.render_ui(panel_background(), area);
         // The benchmark waits for GL after each part so that each is charged its own rasterising
         // (a software GL rasterises when flushed, so otherwise the swap would pay for everything).
         if (o_.bench) win_.finish_gl();

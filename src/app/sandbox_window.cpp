@@ -10,6 +10,7 @@
 
 #include <fmt/core.h>
 
+#include "app/panel_cache.h"
 #include "app/sandbox_settings.h"
 #include "render/font.h"
 #include "render/glsl_version.h"
@@ -93,10 +94,12 @@ std::unique_ptr<Window> Window::open(int width_px, int height_px, bool vsync, st
     ImGui::GetIO().IniFilename = nullptr;  // the layout is computed each frame; nothing to remember
     ImGui_ImplGlfw_InitForOpenGL(w, true);
     ImGui_ImplOpenGL3_Init(render::kGlslVersion);
+    win->panels_ = std::make_unique<PanelCache>();
     return win;
 }
 
 Window::~Window() {
+    panels_.reset();  // its GL objects go while the context is current
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -132,6 +135,7 @@ void Window::build_fonts() {
     io.Fonts->Build();
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
+    if (panels_) panels_->invalidate();  // the copy was drawn with the old atlas
     built_scale_ = scale_;
 }
 
@@ -159,9 +163,9 @@ void Window::begin_frame() {
     ImGui::NewFrame();
 }
 
-void Window::render_ui() {
+void Window::render_ui(render::Rgba panel_background, const render::PxRect& scene) {
     ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    panels_->render(ImGui::GetDrawData(), panel_background, scene);
 }
 
 void Window::swap() { glfwSwapBuffers(window_); }

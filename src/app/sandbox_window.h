@@ -8,10 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "render/colour.h"
+#include "render/camera.h"
+
 struct GLFWwindow;
 struct ImFont;
 
 namespace polyroll::app {
+
+class PanelCache;
 
 class Window {
 public:
@@ -24,8 +29,10 @@ public:
     bool should_close() const;
     // Polls events, rebuilds the fonts if the scale changed, starts an ImGui frame.
     void begin_frame();
-    // Renders ImGui's draw data over whatever was drawn (the scene).
-    void render_ui();
+    // Renders ImGui's draw data over the frame, where outside `scene` (framebuffer pixels) the frame
+    // holds `panel_background` alone; the windows that did not change since the last frame come from a
+    // copy (panel_cache.h).
+    void render_ui(render::Rgba panel_background, const render::PxRect& scene);
     void swap();
     // Waits until GL has drawn everything asked of it so far (the benchmark's split of a frame).
     void finish_gl() const;
@@ -55,6 +62,7 @@ private:
     bool high_contrast_ = true, style_dirty_ = true;
     ImFont* large_ = nullptr;
     std::string font_dir_;
+    std::unique_ptr<PanelCache> panels_;
 };
 
 }  // namespace polyroll::app

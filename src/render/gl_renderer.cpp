@@ -6,12 +6,10 @@
 #include <GL/glext.h>
 
 #include <cstddef>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "render/font.h"
-#include "render/glsl_version.h"
+#include "render/gl_program.h"
 
 namespace polyroll::render {
 
@@ -158,42 +156,6 @@ out vec4 frag;
 void main() { frag = vec4(v_colour.rgb, v_colour.a * texture(atlas, v_uv).r); }
 )";
 
-GLuint compile(GLenum type, const std::string& body) {
-    const std::string src = std::string(kGlslVersion) + "\n" + kGlslPreamble + kToClip + body;
-    const GLuint s = glCreateShader(type);
-    const char* text = src.c_str();
-    glShaderSource(s, 1, &text, nullptr);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        glDeleteShader(s);
-        throw std::runtime_error(std::string("GL shader does not compile: ") + log);
-    }
-    return s;
-}
-
-GLuint link(const char* vertex, const char* fragment) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
-    const GLuint p = glCreateProgram();
-    glAttachShader(p, vs);
-    glAttachShader(p, fs);
-    glLinkProgram(p);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetProgramInfoLog(p, sizeof log, nullptr, log);
-        glDeleteProgram(p);
-        throw std::runtime_error(std::string("GL program does not link: ") + log);
-    }
-    return p;
-}
-
 // The per-instance layout of a shape: a.xy b.xy | kind radius outline 0 | fill | outline.
 struct ShapeInstance {
     float ab[4];
@@ -232,14 +194,14 @@ void put(float* dst, const Rgba& c) {
 }  // namespace
 
 GlRenderer::GlRenderer() {
-    tri_program_ = link(kTriVertex, kTriFragment);
-    shape_program_ = link(kShapeVertex, kShapeFragment);
-    glyph_program_ = link(kGlyphVertex, kGlyphFragment);
+    tri_program_ = link_program(kTriVertex, kTriFragment, kToClip);
+    shape_program_ = link_program(kShapeVertex, kShapeFragment, kToClip);
+    glyph_program_ = link_program(kGlyphVertex, kGlyphFragment, kToClip);
     tri_viewport_ = glGetUniformLocation(tri_program_, "viewport");
     shape_viewport_ = glGetUniformLocation(shape_program_, "viewport");
     glyph_viewport_ = glGetUniformLocation(glyph_program_, "viewport");
     glyph_sampler_ = glGetUniformLocation(glyph_program_, "atlas");
-    disc_program_ = link(kDiscVertex, kDiscFragment);
+    disc_program_ = link_program(kDiscVertex, kDiscFragment, kToClip);
     disc_viewport_ = glGetUniformLocation(disc_program_, "viewport");
     float point_sizes[2] = {1.0f, 1.0f};
     glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, point_sizes);
