@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Writes assets/reference-3d.json, the 3D reference's measurements in the observations format, from the
 3D runs: the sweep folders of `polyroll sweep --model dem3d` (one folder a scene) and, for the cross-section
-study's six scenes, the 3D rows of docs/tradeoff/cross-section.csv (the same script and physics; the rows
-were made by `polyroll tradeoff --dem3d` on 2026-11-29).
+study's six scenes, the 3D rows of cross-section-3d-rows-2026-11-29.csv beside this script (the same
+script and physics; made by `polyroll tradeoff --dem3d` on 2026-11-29, commit ee7018f, and kept here as
+they were: docs/tradeoff/cross-section.csv is remade by later studies, whose 3D runs differ from these by
+the pile's chaos, so the reference's source stays fixed).
 
     python3 docs/studies/closure-from-3d/reference_from_sweeps.py SWEEPS_DIR [--check | --table] [--partial OUT]
 
@@ -24,7 +26,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, '..', '..', '..'))
-CROSS_SECTION = os.path.join(ROOT, 'docs', 'tradeoff', 'cross-section.csv')
+CROSS_SECTION = os.path.join(HERE, 'cross-section-3d-rows-2026-11-29.csv')
 OUT = os.path.join(ROOT, 'assets', 'reference-3d.json')
 
 # id, sweep folder, scene (as in a scene file), the sweep's scene flags, cross-section rows (shell, fill) or None.
