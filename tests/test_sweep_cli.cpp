@@ -200,6 +200,25 @@ TEST_CASE("sweep: the grid and its time echoed first, lists out of order run asc
     fs::remove_all(out);
 }
 
+TEST_CASE("sweep: a plan that sets a field on some runs only runs from its folder", "[sweep][cli]") {
+    // As the cross-section study's plan sets closure.preset on its closure column only: the others run
+    // the base scene's value, and the grid's echo says so.
+    using namespace polyroll::sweep;
+    const fs::path out = sweep_cli_scratch("field-on-some-runs");
+    SweepPlan plan;
+    plan.base = {{"fill", {{"ratio", 0}}}, {"fidelity", {{"preset", "draft"}}}, {"run", {{"time_limit_s", 0.1}}}};
+    plan.fields = plan.flags = {"ramp.angle_deg", "run.seed"};
+    add_run(plan, {{"ramp.angle_deg", 5}});
+    add_run(plan, {{"ramp.angle_deg", 5}, {"run.seed", 2}});
+    fs::create_directories(out);
+    write_plan(out, plan);
+    const Result r = shell(kPolyrollExe + " sweep -q --jobs 1 --from " + out.string());
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("polyroll sweep: 2 runs: ramp.angle_deg 5 x run.seed (base), 2"));
+    fs::remove_all(out);
+}
+
 TEST_CASE("sweep: results.csv names the model each run used and no preset polygon for another n", "[sweep][cli]") {
     const fs::path out = sweep_cli_scratch("model-used");
     const Result r = shell(kPolyrollExe + " sweep --sides 6,7 --fill 0,0.25 --fidelity draft --time-limit 0.1 -q --jobs 2 "

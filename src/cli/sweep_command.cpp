@@ -69,7 +69,10 @@ void print_grid(const sweep::SweepPlan& plan, const sweep::GridCheck& c, int job
     for (std::size_t i = 0; i < plan.fields.size(); ++i) {
         std::vector<std::string> values;
         for (const sweep::PlannedRun& run : plan.runs) {
-            const std::string v = sweep::value_text(run.point.at(plan.fields[i]));
+            // A study's plan may set a field on some runs only (the cross-section sets closure.preset on
+            // its closure column's): the others run the base scene's value.
+            const std::string v =
+                run.point.contains(plan.fields[i]) ? sweep::value_text(run.point.at(plan.fields[i])) : "(base)";
             if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
         }
         std::string listed;

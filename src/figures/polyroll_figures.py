@@ -155,15 +155,30 @@ def tradeoff_figure(args):
     print(args.out)
 
 
+def cross_section_models(rows):
+    """The panels, left to right: the 2D grain model, then each closure column ("grains+<closure preset>"),
+    then the 3D reference; only those the csv holds (an older csv has no closure column)."""
+    present = {r["model"] for r in rows}
+    closures = sorted(m for m in present if m.startswith("grains+"))
+    models = [("grains", "2D grain model (standard)")]
+    models += [(m, f"2D grain model, closure {m.split('+', 1)[1]}") for m in closures]
+    models.append(("dem3d", "3D reference (Yade)"))
+    return [(m, title) for m, title in models if m in present]
+
+
 def cross_section_figure(args):
-    """The 2D and 3D behaviour maps side by side: one row per scene (n, r), one cell per angle, split
-    into a half per seed, coloured by behaviour and labelled with the distance rolled."""
+    """The behaviour maps of the 2D grain model, the same with a closure and the 3D reference side by
+    side: one row per scene (n, r), one cell per angle, split into a part per seed, coloured by
+    behaviour and labelled with the distance rolled."""
     rows = read_rows(args.maps)
     scenes = sorted({(int(r["sides"]), float(r["fill_ratio"])) for r in rows})
-    models = [("grains", "2D grain model (standard)"), ("dem3d", "3D reference (Yade)")]
+    models = cross_section_models(rows)
     seeds = sorted({int(r["seed"]) for r in rows})
     angles = sorted({float(r["angle_deg"]) for r in rows})
-    fig, axes = plt.subplots(1, 2, figsize=(15, 1.0 + 0.75 * len(scenes)), layout="constrained", sharey=True)
+    # About 6 inches a panel of seven angles, and room for the scene names and the legend.
+    fig, axes = plt.subplots(1, len(models), figsize=(2.5 + 6.0 * len(models), 1.0 + 0.75 * len(scenes)),
+                             layout="constrained", sharey=True, squeeze=False)
+    axes = axes[0]
     for ax, (model, title) in zip(axes, models):
         for y, (n, fill) in enumerate(scenes):
             for r in rows:
@@ -172,7 +187,8 @@ def cross_section_figure(args):
                 a, k = float(r["angle_deg"]), seeds.index(int(r["seed"]))
                 h = 0.9 / len(seeds)
                 y0 = y - 0.45 + k * h
-                ax.add_patch(plt.Rectangle((a - 0.45, y0), 0.9, h, color=BEHAVIOUR_COLOURS.get(r["behaviour"], "#bbbbbb")))
+                colour = BEHAVIOUR_COLOURS.get(r["behaviour"], "#bbbbbb")
+                ax.add_patch(plt.Rectangle((a - 0.45, y0), 0.9, h, color=colour))
                 d = num(r["distance_m"])
                 if math.isfinite(d) and r["behaviour"] != "rolled_to_end":
                     ax.text(a, y0 + h / 2, f"{d:.2f}", ha="center", va="center", fontsize=6, color="white")
@@ -188,8 +204,8 @@ def cross_section_figure(args):
     handles = [plt.Rectangle((0, 0), 1, 1, color=BEHAVIOUR_COLOURS[b]) for b in present]
     # Beside the right panel: constrained layout makes room for an axes' legend outside it (Debian 12's
     # matplotlib 3.6 has no "outside" figure legends).
-    axes[1].legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="upper left", bbox_to_anchor=(1.02, 1.0),
-                   fontsize=8)
+    axes[-1].legend(handles, [BEHAVIOUR_LABELS[b] for b in present], loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                    fontsize=8)
     fig.suptitle("Behaviour on the 2.54 m air track, BBs: each cell one angle, its lower half seed 1 and upper "
                  "half seed 2; numbers: distance rolled (m)", fontsize=10)
     fig.savefig(args.out, dpi=110)
