@@ -223,7 +223,9 @@ def main(argv):
     if '--table' in argv:
         table(sweeps)
         return 0
-    made = os.environ.get('REFERENCE_DATE', '2026-12-01')
+    # The day each scene's 3D runs were finished: 2026-12-01 for all but the large hexagon's, bracketed
+    # the next day (REFERENCE_DATE sets one date for every scene).
+    made_on = {'h6L-0.125': '2026-12-02'}
     all_obs, halves, pending = [], {'fit': [], 'held_back': []}, []
     for half, scenes in (('fit', FIT), ('held_back', HELD_BACK)):
         for sid, folder, scene, _, cross in scenes:
@@ -236,6 +238,7 @@ def main(argv):
             if not (b1 and b2):
                 pending.append('%s (%s half)' % (sid, half.replace('_', ' ')))
                 continue
+            made = os.environ.get('REFERENCE_DATE', made_on.get(folder, '2026-12-01'))
             obs = observations_of(sid, scene, runs, sources, made)
             all_obs += obs
             halves[half] += [o['id'] for o in obs]
