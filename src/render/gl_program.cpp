@@ -14,20 +14,25 @@ namespace polyroll::render {
 
 namespace {
 
+// Throws with GL's log unless `object`'s `status` (a shader's compile, a program's link) is true, deleting it.
+void require(GLuint object, GLenum status, void (*get_iv)(GLuint, GLenum, GLint*),
+             void (*get_log)(GLuint, GLsizei, GLsizei*, GLchar*), void (*destroy)(GLuint), const char* what) {
+    GLint ok = 0;
+    get_iv(object, status, &ok);
+    if (ok) return;
+    char log[2048] = {};
+    get_log(object, sizeof log, nullptr, log);
+    destroy(object);
+    throw std::runtime_error(std::string(what) + log);
+}
+
 GLuint compile(GLenum type, const char* body, const char* shared_prefix) {
     const std::string src = std::string(kGlslVersion) + "\n" + kGlslPreamble + shared_prefix + body;
     const GLuint s = glCreateShader(type);
     const char* text = src.c_str();
     glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        glDeleteShader(s);
-        throw std::runtime_error(std::string("GL shader does not compile: ") + log);
-    }
+    require(s, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, "GL shader does not compile: ");
     return s;
 }
 
@@ -42,14 +47,7 @@ unsigned link_program(const char* vertex_body, const char* fragment_body, const 
     glLinkProgram(p);
     glDeleteShader(vs);
     glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetProgramInfoLog(p, sizeof log, nullptr, log);
-        glDeleteProgram(p);
-        throw std::runtime_error(std::string("GL program does not link: ") + log);
-    }
+    require(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram, "GL program does not link: ");
     return p;
 }
 
