@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 #include "sim/model_choice.h"
@@ -166,13 +167,29 @@ std::pair<RunResult, RunResult> auto_and_grains(const Scene& s) {
 
 TEST_CASE("curved track: auto runs empty and full shells with the reduced models as the grain engine runs them",
           "[ramp_profile][curved][auto][slow]") {
-    // A full hexagon rolling down without lifting off: one run each.
+    // A full hexagon rolling down without lifting off: the rigid model once, the grain engine at seeds
+    // 1 to 3, compared with their mean. A full shell's Box2D discs rattle in their packing at every
+    // impact (docs/studies/full-shells.md), which the rigid polygon leaves out, and how much depends on
+    // the packing: measured 2026-12-02, the rigid model 0.222 m/s, the grain engine 0.191-0.210 m/s
+    // over seeds 1 to 5 (mean 0.201; the same spread in the ramp's frame and the pile's), so its
+    // three-seed mean is about 10% slower, and 15% is allowed. One seed alone may lie 14% below.
     {
-        const Scene s = shell_on_track("hexagon-small", 1.0, 12.0, 1.7, Model::automatic);
+        Scene s = shell_on_track("hexagon-small", 1.0, 12.0, 1.7, Model::automatic);
         const auto [a, g] = auto_and_grains(s);
-        // A full shell's Box2D discs rattle in their packing at every impact
-        // (docs/studies/full-shells.md), which the rigid polygon leaves out: measured 10% slower here, so 15% for it.
-        check_alike(outcome_of(a), outcome_of(g), a.shell.outer_side_m, 0.15);
+        Outcome grains_mean = outcome_of(g);
+        const int seeds = 3;
+        grains_mean.terminal_m_s = grains_mean.terminal_m_s.value_or(0.0) / seeds;
+        grains_mean.dissipated_J /= seeds;
+        for (std::uint64_t seed = 2; seed <= seeds; ++seed) {
+            s.run.seed = seed;
+            INFO("full hexagon, grain engine seed " << seed);
+            const Outcome e = outcome_of(run_scene(test::with_model(s, Model::grains)));
+            REQUIRE(e.behaviour == grains_mean.behaviour);
+            REQUIRE(e.terminal_m_s);
+            *grains_mean.terminal_m_s += *e.terminal_m_s / seeds;
+            grains_mean.dissipated_J += e.dissipated_J / seeds;
+        }
+        check_alike(outcome_of(a), grains_mean, a.shell.outer_side_m, 0.15);
     }
     // An empty octagon at 25 deg hops down the lower track (the rigid model goes on as a free body):
     // a bouncing run is chaotic, and a twentieth of a degree moves the energy it loses by 10-35% in
