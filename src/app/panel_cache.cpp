@@ -121,10 +121,11 @@ void PanelCache::resize(int width_px, int height_px) {
     lists_.clear();
 }
 
-void PanelCache::render(ImDrawData* data, render::Rgba background, const render::PxRect& scene) {
+std::vector<Rect> PanelCache::render(ImDrawData* data, render::Rgba background, const render::PxRect& scene,
+                                     bool kept) {
     const int w = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
     const int h = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
-    if (w <= 0 || h <= 0) return;  // minimised
+    if (w <= 0 || h <= 0) return {};  // minimised
     if (w != width_px_ || h != height_px_) resize(w, h);
     if (background.r != background_.r || background.g != background_.g || background.b != background_.b) {
         background_ = background;
@@ -158,12 +159,15 @@ void PanelCache::render(ImDrawData* data, render::Rgba background, const render:
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
-    // The scene's pixels, widened to whole ones: the copy goes everywhere else, the lists' own pixels
-    // inside it are drawn over the scene.
-    const Rect inside = intersect({static_cast<int>(std::floor(scene.x)), static_cast<int>(std::floor(scene.y)),
-                                   static_cast<int>(std::ceil(scene.x + scene.width)),
-                                   static_cast<int>(std::ceil(scene.y + scene.height))},
-                                  frame);
+    // The scene's pixels (render::covering_pixels, as the scene's own drawing clips them): the copy
+    // goes everywhere else, the lists' own pixels inside it are drawn over the scene.
+    const render::ClipRect c = render::covering_pixels(scene);
+    const Rect inside = intersect({c.x, c.y, c.x + c.width, c.y + c.height}, frame);
+    // A framebuffer that kept the last frame outside the scene needs only what changed there, unless
+    // the scene moved (the strips around it are others).
+    const Rect copied = kept && same(inside, inside_) && !copied_all_pending_ ? dirty : frame;
+    copied_all_pending_ = false;
+    inside_ = inside;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
@@ -171,15 +175,19 @@ void PanelCache::render(ImDrawData* data, render::Rgba background, const render:
                             {0, inside.y1, w, h},
                             {0, inside.y0, inside.x0, inside.y1},
                             {inside.x1, inside.y0, w, inside.y1}};
-    for (const Rect& s : inside.empty() ? std::vector<Rect>{frame} : std::vector<Rect>(strips, strips + 4)) {
+    std::vector<Rect> drawn;
+    for (const Rect& strip : inside.empty() ? std::vector<Rect>{frame} : std::vector<Rect>(strips, strips + 4)) {
+        const Rect s = intersect(strip, copied);
         if (s.empty()) continue;
         // GL counts rows from the bottom.
         glBlitFramebuffer(s.x0, h - s.y1, s.x1, h - s.y0, s.x0, h - s.y1, s.x1, h - s.y0, GL_COLOR_BUFFER_BIT,
                           GL_NEAREST);
+        drawn.push_back(s);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!inside.empty()) draw_clipped(data, now, inside);
     lists_ = std::move(now);
+    return drawn;
 }
 
 void PanelCache::draw_clipped(ImDrawData* data, const std::vector<ListState>& now, const Rect& clip) const {

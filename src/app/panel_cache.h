@@ -11,6 +11,9 @@
 // the lists draw inside the scene (a border's edge, an open combo or tooltip) is drawn over it
 // directly, as before. Measured (--bench, hexagon-large-bb, 1280x800, llvmpipe, the 3D runs paused):
 // the panels' GL 7.0 ms a frame drawn directly, 4.3 ms from the copy, of which the copy's blit is 3.3.
+// Where the window shows its frame by copying parts of a back buffer it never swaps (Window::swap),
+// `kept` says the framebuffer still holds what the last render left, and only the changed
+// rectangles are copied: the panels' GL fell from about 6 to 1.8 ms (docs/sandbox.md).
 #pragma once
 
 #include <cstdint>
@@ -31,17 +34,22 @@ public:
     PanelCache(const PanelCache&) = delete;
     PanelCache& operator=(const PanelCache&) = delete;
 
-    // Draws `data` over the bound default framebuffer, as ImGui_ImplOpenGL3_RenderDrawData would,
-    // where the frame outside `scene` (framebuffer pixels) is `background` and nothing else.
-    void render(ImDrawData* data, render::Rgba background, const render::PxRect& scene);
-    // Redraws everything at the next render (the font texture was rebuilt).
-    void invalidate() { lists_.clear(); }
-
     // A rectangle in framebuffer pixels, rows from the top; empty when x1 <= x0 or y1 <= y0.
     struct Rect {
         int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
         bool empty() const { return x1 <= x0 || y1 <= y0; }
     };
+
+    // Draws `data` over the bound default framebuffer, as ImGui_ImplOpenGL3_RenderDrawData would,
+    // where the frame outside `scene` (framebuffer pixels) is `background` and nothing else.
+    // `kept`: the framebuffer still holds, outside the scene, what the last render left there (a back
+    // buffer shown by copying parts of it, never swapped: Window::present); then only what changed is
+    // copied. Returns the rectangles copied outside the scene.
+    std::vector<Rect> render(ImDrawData* data, render::Rgba background, const render::PxRect& scene, bool kept);
+    // Redraws everything at the next render (the font texture was rebuilt).
+    void invalidate() { lists_.clear(); }
+    // Copies everything at the next render (the framebuffer lost what it kept: a new size).
+    void copy_all() { copied_all_pending_ = true; }
 
 private:
     struct ListState {
@@ -54,6 +62,8 @@ private:
     void draw_clipped(ImDrawData* data, const std::vector<ListState>& now, const Rect& clip) const;
 
     std::vector<ListState> lists_;  // the last frame's
+    Rect inside_;                   // the last frame's scene pixels
+    bool copied_all_pending_ = true;
     render::Rgba background_{};
     int width_px_ = 0, height_px_ = 0;
     unsigned texture_ = 0, framebuffer_ = 0;

@@ -8,6 +8,9 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "app/panel_cache.h"
 
 namespace polyroll::app {
 
@@ -36,6 +39,17 @@ std::string deliver_export(const std::filesystem::path& folder);
 // The page's query string (after '?', e.g. "preset=race&angle=14"); nullopt on the desktop,
 // where the command line says the same.
 std::optional<std::string> page_query();
+
+// Showing a frame by copying parts of the back buffer to the window, which leaves the back buffer
+// as it is: the next frame redraws only the scene and what changed in the panels, and copies only
+// those, instead of the whole window. True only where the platform can and should: the desktop on a
+// software GL (llvmpipe under Xvfb or in a virtual machine; GLX_MESA_copy_sub_buffer), where every
+// pixel drawn or copied costs CPU. Not on the page, nor on a hardware GL, which swaps in step with
+// the display and draws a frame for next to nothing. POLYROLL_PRESENT=swap turns it off.
+bool can_present_parts(const std::string& gl_renderer);
+// Copies `rects` (framebuffer pixels, rows from the top, of a framebuffer `height_px` tall) of the
+// current context's back buffer to its window.
+void present_parts(const std::vector<PanelCache::Rect>& rects, int height_px);
 
 // After a --frames capture (the page's ?frames=N): the page prints each lane's behaviour and
 // distance so far for its test (tests/web_checks.sh); the desktop prints nothing more.

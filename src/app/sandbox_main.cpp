@@ -259,6 +259,10 @@ public:
                 bench.print(lanes(), last_.time_s, now_s(),
                             s_.scene_file.empty() ? "preset " + s_.preset : "scene file " + s_.scene_file,
                             win_.gl_renderer(), build_s);
+                fmt::print("  shown by     {}\n", win_.keeps_panels()
+                                                ? "copying the scene and what the panels changed (a software GL: "
+                                                  "GLX_MESA_copy_sub_buffer; POLYROLL_PRESENT=swap swaps instead)"
+                                                : "swapping the whole frame");
                 fmt::print("  model        {}\n", budget_statement(physics_.budget_choice(), physics_.budget_offer(),
                                                                    budget_figures()));
             }
@@ -427,7 +431,7 @@ private:
         vo.colour_speed_max_m_s = kDefaultColourSpeedMax_m_s;
         vo.view = view_;
         vo.close_up_lane = s_.selected_lane;
-        vo.surround = panel_background();
+        vo.area_only = win_.keeps_panels();
         const std::vector<render::Snapshot> none;
         const double t0 = now_s();
         const render::DrawList list = build_scene_view(show_scene ? shown_ : none, vo, *atlas_, boxes);

@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "app/panel_cache.h"
+#include "app/platform.h"
 #include "app/sandbox_settings.h"
 #include "render/font.h"
 #include "render/glsl_version.h"
@@ -95,6 +96,13 @@ std::unique_ptr<Window> Window::open(int width_px, int height_px, bool vsync, st
     ImGui_ImplGlfw_InitForOpenGL(w, true);
     ImGui_ImplOpenGL3_Init(render::kGlslVersion);
     win->panels_ = std::make_unique<PanelCache>();
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    win->present_parts_ = can_present_parts(renderer ? renderer : "");
+    // Uncovered or restored, the window lost its pixels; the back buffer still holds them.
+    glfwSetWindowUserPointer(w, win.get());
+    glfwSetWindowRefreshCallback(w, [](GLFWwindow* gw) {
+        static_cast<Window*>(glfwGetWindowUserPointer(gw))->show_all_ = true;
+    });
     return win;
 }
 
@@ -165,10 +173,28 @@ void Window::begin_frame() {
 
 void Window::render_ui(render::Rgba panel_background, const render::PxRect& scene) {
     ImGui::Render();
-    panels_->render(ImGui::GetDrawData(), panel_background, scene);
+    int w = 0, h = 0;
+    framebuffer_size(w, h);
+    if (w != kept_w_ || h != kept_h_) kept_ = false;  // a new size is a new back buffer
+    changed_ = panels_->render(ImGui::GetDrawData(), panel_background, scene, present_parts_ && kept_);
+    const render::ClipRect c = render::covering_pixels(scene);
+    changed_.push_back({c.x, c.y, c.x + c.width, c.y + c.height});
 }
 
-void Window::swap() { glfwSwapBuffers(window_); }
+void Window::swap() {
+    if (!present_parts_) {
+        glfwSwapBuffers(window_);
+        return;
+    }
+    int w = 0, h = 0;
+    framebuffer_size(w, h);
+    if (show_all_ || !kept_) changed_ = {{0, 0, w, h}};
+    present_parts(changed_, h);
+    kept_ = true;
+    show_all_ = false;
+    kept_w_ = w;
+    kept_h_ = h;
+}
 
 void Window::finish_gl() const { glFinish(); }
 

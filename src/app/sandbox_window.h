@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/panel_cache.h"
 #include "render/colour.h"
 #include "render/camera.h"
 
@@ -15,8 +16,6 @@ struct GLFWwindow;
 struct ImFont;
 
 namespace polyroll::app {
-
-class PanelCache;
 
 class Window {
 public:
@@ -33,7 +32,12 @@ public:
     // holds `panel_background` alone; the windows that did not change since the last frame come from a
     // copy (panel_cache.h).
     void render_ui(render::Rgba panel_background, const render::PxRect& scene);
+    // Shows the frame: swaps, or where the window shows parts of its back buffer (keeps_panels()),
+    // copies the scene and what the panels changed.
     void swap();
+    // True when the back buffer keeps the panels' pixels from frame to frame (platform.h,
+    // can_present_parts): the scene then draws nothing outside its area, not even the clear.
+    bool keeps_panels() const { return present_parts_; }
     // Waits until GL has drawn everything asked of it so far (the benchmark's split of a frame).
     void finish_gl() const;
     // Sleeps until an input event arrives or `timeout_s` passes: the loop calls it when nothing
@@ -63,6 +67,11 @@ private:
     ImFont* large_ = nullptr;
     std::string font_dir_;
     std::unique_ptr<PanelCache> panels_;
+    bool present_parts_ = false;  // show parts of the back buffer instead of swapping
+    bool kept_ = false;           // the back buffer holds the last frame (false: new, resized, or swapped)
+    bool show_all_ = true;        // the next present copies the whole frame (the window lost its pixels)
+    std::vector<PanelCache::Rect> changed_;  // this frame's: the scene's pixels and what the panels copied
+    int kept_w_ = 0, kept_h_ = 0;
 };
 
 }  // namespace polyroll::app

@@ -6,6 +6,11 @@
 
 namespace polyroll::render {
 
+ClipRect covering_pixels(const PxRect& r) {
+    const int x0 = static_cast<int>(std::floor(r.x)), y0 = static_cast<int>(std::floor(r.y));
+    return {x0, y0, static_cast<int>(std::ceil(r.x + r.width)) - x0, static_cast<int>(std::ceil(r.y + r.height)) - y0};
+}
+
 geom::Vec2 ramp_to_world(geom::Vec2 ramp_m, double angle_deg) {
     // Down the slope is down and to the right: a clockwise turn by the ramp angle.
     return geom::rotate(ramp_m, -angle_deg * geom::kPi / 180.0);

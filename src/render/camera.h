@@ -14,6 +14,9 @@ struct PxRect {
     float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
 };
 
+// The whole pixels a rectangle touches (its edges widened outwards to pixel boundaries).
+ClipRect covering_pixels(const PxRect& r);
+
 // The ramp frame (x down the slope, y normal to it) turned into the lab frame for a ramp at angle_deg.
 geom::Vec2 ramp_to_world(geom::Vec2 ramp_m, double angle_deg);
 

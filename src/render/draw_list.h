@@ -82,6 +82,9 @@ struct DrawList {
     int width_px = 0;
     int height_px = 0;
     Rgba background;
+    // Draws nothing outside these pixels, not even the clear: the window's scene area, whose
+    // surroundings (the panels) are kept from frame to frame. None: the whole frame.
+    std::optional<ClipRect> bounds;
     const FontAtlas* atlas = nullptr;  // the texture the glyphs refer to
     std::vector<Layer> layers;
 

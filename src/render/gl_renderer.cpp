@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -332,7 +333,21 @@ void GlRenderer::draw(const DrawList& list) {
     const int w = list.width_px, h = list.height_px;
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_SCISSOR_TEST);
+    // GL counts rows from the bottom.
+    const auto scissor = [h](const ClipRect& c) { glScissor(c.x, h - c.y - c.height, c.width, c.height); };
+    const auto within_bounds = [&list](const ClipRect& c) {
+        if (!list.bounds) return c;
+        const ClipRect& b = *list.bounds;
+        const int x0 = std::max(c.x, b.x), y0 = std::max(c.y, b.y);
+        const int x1 = std::min(c.x + c.width, b.x + b.width), y1 = std::min(c.y + c.height, b.y + b.height);
+        return ClipRect{x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+    };
+    if (list.bounds) {
+        glEnable(GL_SCISSOR_TEST);
+        scissor(*list.bounds);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
     glClearColor(list.background.r, list.background.g, list.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glEnable(GL_BLEND);
@@ -347,10 +362,9 @@ void GlRenderer::draw(const DrawList& list) {
     std::vector<GlyphInstance> glyphs;
     const float fw = static_cast<float>(w), fh = static_cast<float>(h);
     for (const Layer& layer : list.layers) {
-        if (layer.clip) {
+        if (layer.clip || list.bounds) {
             glEnable(GL_SCISSOR_TEST);
-            // GL counts rows from the bottom.
-            glScissor(layer.clip->x, h - layer.clip->y - layer.clip->height, layer.clip->width, layer.clip->height);
+            scissor(within_bounds(layer.clip ? *layer.clip : *list.bounds));
         } else {
             glDisable(GL_SCISSOR_TEST);
         }

@@ -60,15 +60,7 @@ DrawList build_scene_view(const std::vector<Snapshot>& lanes, const SceneViewOpt
     dl.height_px = o.height_px;
     dl.background = palette::background;
     dl.atlas = &font;
-    if (o.surround) {
-        // The frame is cleared to the panels' colour and the area filled with the scene's: one
-        // opaque rectangle, drawn without blending, in place of the panels' own rectangles.
-        dl.background = *o.surround;
-        const Px tl{o.area.x, o.area.y}, br{o.area.x + o.area.width, o.area.y + o.area.height};
-        Layer& ground = dl.new_layer();
-        ground.triangles.push_back({tl, {br.x, tl.y}, br, palette::background, Tag::none});
-        ground.triangles.push_back({tl, br, {tl.x, br.y}, palette::background, Tag::none});
-    }
+    if (o.area_only) dl.bounds = covering_pixels(o.area);
     if (lanes.empty()) return dl;
     // When racing, each lane's badge sits left of and just above its ramp's upper end: the ramps are
     // fitted into the view less that room, so no badge is cut at the view's edge.

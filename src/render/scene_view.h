@@ -27,9 +27,9 @@ struct SceneViewOptions {
     // Whole-ramp view: a close-up of this lane's polygon in the free corner under the ramp
     // (-1 for none). The polygon is small on a 2.5 m ramp; the close-up shows its grains.
     int close_up_lane = 0;
-    // The colour of the framebuffer outside the area (the panels' background, which the panels
-    // leave to the clear), or none to clear it all to the scene's background.
-    std::optional<render::Rgba> surround;
+    // Draw nothing outside the area's pixels, not even the clear: the window keeps the panels'
+    // pixels there from frame to frame (app/panel_cache.h). Otherwise the whole frame is cleared.
+    bool area_only = false;
 };
 
 // The font sizes the view uses at a UI scale (the atlas must hold them).

@@ -78,6 +78,10 @@ std::optional<std::string> page_query() {
     return std::string(emscripten_run_script_string("window.location.search"));
 }
 
+bool can_present_parts(const std::string& /*gl_renderer*/) { return false; }  // WebGL shows whole frames
+
+void present_parts(const std::vector<PanelCache::Rect>& /*rects*/, int /*height_px*/) {}
+
 void report_capture(const LaneSet& lanes) {
     // One line a lane, read by tests/web_checks.sh (the page's output shows it).
     for (size_t i = 0; i < lanes.size(); ++i) {
