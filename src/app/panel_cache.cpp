@@ -164,9 +164,9 @@ std::vector<Rect> PanelCache::render(ImDrawData* data, render::Rgba background, 
     const render::ClipRect c = render::covering_pixels(scene);
     const Rect inside = intersect({c.x, c.y, c.x + c.width, c.y + c.height}, frame);
     // A framebuffer that kept the last frame outside the scene needs only what changed there, unless
-    // the scene moved (the strips around it are others).
-    const Rect copied = kept && same(inside, inside_) && !copied_all_pending_ ? dirty : frame;
-    copied_all_pending_ = false;
+    // the scene moved (the strips around it are others). On a first frame or a new size `dirty` is the
+    // whole frame (no lists yet).
+    const Rect copied = kept && same(inside, inside_) ? dirty : frame;
     inside_ = inside;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

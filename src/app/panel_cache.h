@@ -48,8 +48,6 @@ public:
     std::vector<Rect> render(ImDrawData* data, render::Rgba background, const render::PxRect& scene, bool kept);
     // Redraws everything at the next render (the font texture was rebuilt).
     void invalidate() { lists_.clear(); }
-    // Copies everything at the next render (the framebuffer lost what it kept: a new size).
-    void copy_all() { copied_all_pending_ = true; }
 
 private:
     struct ListState {
@@ -63,7 +61,6 @@ private:
 
     std::vector<ListState> lists_;  // the last frame's
     Rect inside_;                   // the last frame's scene pixels
-    bool copied_all_pending_ = true;
     render::Rgba background_{};
     int width_px_ = 0, height_px_ = 0;
     unsigned texture_ = 0, framebuffer_ = 0;
