@@ -43,7 +43,7 @@ public:
     // Draws `data` over the bound default framebuffer, as ImGui_ImplOpenGL3_RenderDrawData would,
     // where the frame outside `scene` (framebuffer pixels) is `background` and nothing else.
     // `kept`: the framebuffer still holds, outside the scene, what the last render left there (a back
-    // buffer shown by copying parts of it, never swapped: Window::present); then only what changed is
+    // buffer shown by copying parts of it, never swapped: Window::swap); then only what changed is
     // copied. Returns the rectangles copied outside the scene.
     std::vector<Rect> render(ImDrawData* data, render::Rgba background, const render::PxRect& scene, bool kept);
     // Redraws everything at the next render (the font texture was rebuilt).

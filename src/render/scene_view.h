@@ -5,7 +5,6 @@
 // frames with it (race_frame.h), so a rendered race shows its lanes as the window does.
 #pragma once
 
-#include <optional>
 #include <vector>
 
 #include "render/view_control.h"
