@@ -301,6 +301,11 @@ TEST_CASE("the engine's load: grains, contacts near and touching, per disc", "[r
     CHECK(a.wall_s > 0.0);
     CHECK(a.touching_per_grain > 0.5);
     CHECK(a.contacts_per_grain > 2.0 * a.touching_per_grain);
+    CHECK(a.shell_speed_m_s == Approx(0.0).margin(1e-3));  // timed from the release, at rest
+    // Stepped untimed to 0.25 s, before the first landing: the shell is then turning down its vertex.
+    const EngineLoad later = measure_engine_load(small, 50, 250);
+    CHECK(later.grains == 124);
+    CHECK(later.shell_speed_m_s > 0.1);
 
     const Scene large = test::scene_with(
         json::parse(R"({"shell": {"preset": "hexagon-large"}, "fill": {"ratio": 0.5}, "run": {"model": "grains"}})"));

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include <fmt/core.h>
@@ -68,55 +69,77 @@ PowerLaw fit_power_law(const std::vector<Row>& rows) {
 
 }  // namespace
 
-void bench_scaling(const std::string& fidelity, double sim_s, int repeats) {
-    fmt::print("\ngrain engine against grains: BBs on the air track at 20 deg, {} fidelity, {:g} s after the release "
-               "stepped bare, best of {}; one core; each scene stepped in the ramp's frame and in the pile's "
-               "(fidelity.frame)\n",
-               fidelity, sim_s, repeats);
-    fmt::print("{:<34} {:>7} {:>6} {:>10} {:>12} {:>10} {:>12} {:>14} {:>10} {:>9}\n", "scene", "grains", "frame",
-               "ms_step", "us_grain_step", "x_first", "x_real_time", "contacts/grain", "touching", "x_faster");
+void bench_scaling(const std::string& fidelity, double from_s, double sim_s, int repeats) {
+    const std::string stretch = from_s > 0.0 ? fmt::format("{:g} s from {:g} s after the release (stepped there untimed)",
+                                                          sim_s, from_s)
+                                             : fmt::format("the first {:g} s after the release", sim_s);
+    fmt::print("\ngrain engine against grains: BBs on the air track at 20 deg, {} fidelity, {} stepped bare, best of "
+               "{}; one core; each scene stepped in the ramp's frame and in the pile's (fidelity.frame)\n",
+               fidelity, stretch, repeats);
+    fmt::print("{:<34} {:>7} {:>6} {:>10} {:>12} {:>10} {:>12} {:>14} {:>10} {:>9} {:>8} {:>9}\n", "scene", "grains",
+               "frame", "ms_step", "us_grain_step", "x_first", "x_real_time", "contacts/grain", "touching", "speed_m_s",
+               "timed_s", "x_faster");
     const Scene defaults = resolve_scene({});
     std::vector<Row> rows;  // in the frame the defaults step in, for the power law
-    std::vector<Row> first_of_frame;
+    std::optional<double> first_us[2];  // us a disc and step of each frame's first row
     for (const ScalingScene& spec : kScenes) {
-        double ramp_s_per_step = 0.0;
+        std::optional<double> ramp_s_per_step;
         for (EngineFrame frame : {EngineFrame::ramp, EngineFrame::pile}) {
             Row row;
             row.scene = scaling_scene(spec, fidelity, frame);
+            const std::string label = fmt::format("{}, r = {:g}", shell_label(row.scene), spec.fill_ratio);
             const long steps = std::lround(sim_s * row.scene.fidelity.step_hz);
+            const long skip = std::lround(from_s * row.scene.fidelity.step_hz);
+            // Per engine step, as the budget counts them; the best of the repeats.
+            const auto per_step = [&](const EngineLoad& l) {
+                return l.wall_s / static_cast<double>(l.timed_steps * row.scene.fidelity.substeps);
+            };
             for (int rep = 0; rep < repeats; ++rep) {
-                const EngineLoad load = measure_engine_load(row.scene, steps);
-                if (rep == 0 || load.wall_s < row.load.wall_s) row.load = load;
+                const EngineLoad load = measure_engine_load(row.scene, steps, skip);
+                if (load.timed_steps == 0) {
+                    row.load = load;
+                    break;
+                }
+                if (rep == 0 || per_step(load) < row.s_per_step) row.load = load, row.s_per_step = per_step(load);
             }
-            // Per engine step, as the budget counts them.
-            row.s_per_step = row.load.wall_s / static_cast<double>(steps * row.scene.fidelity.substeps);
+            if (row.load.timed_steps == 0) {  // the shell passed the run's end before the stretch began
+                fmt::print("{:<34} {:>7} {:>6} the shell was past the ramp's end by {:g} s\n", label,
+                           row.load.grains, to_string(frame), from_s);
+                continue;
+            }
             const double us_per_grain_step = 1e6 * row.s_per_step / std::max(1, row.load.grains);
-            const std::size_t f = static_cast<std::size_t>(frame);
-            if (first_of_frame.size() <= f) first_of_frame.push_back(row);
-            const Row& first = first_of_frame[f];
-            const double first_us = 1e6 * first.s_per_step / std::max(1, first.load.grains);
+            std::optional<double>& first = first_us[static_cast<std::size_t>(frame)];
+            if (!first) first = us_per_grain_step;
             if (frame == EngineFrame::ramp) ramp_s_per_step = row.s_per_step;
-            const std::string faster =
-                frame == EngineFrame::ramp ? "" : fmt::format("{:.2f}", ramp_s_per_step / row.s_per_step);
-            fmt::print("{:<34} {:>7} {:>6} {:>10.3f} {:>12.2f} {:>10.2f} {:>12.3f} {:>14.1f} {:>10.1f} {:>9}\n",
-                       fmt::format("{}, r = {:g}", shell_label(row.scene), spec.fill_ratio), row.load.grains,
-                       to_string(frame), 1e3 * row.s_per_step, us_per_grain_step, us_per_grain_step / first_us,
-                       static_cast<double>(steps) / row.scene.fidelity.step_hz / row.load.wall_s,
-                       row.load.contacts_per_grain, row.load.touching_per_grain, faster);
+            const std::string faster = frame == EngineFrame::pile && ramp_s_per_step
+                                           ? fmt::format("{:.2f}", *ramp_s_per_step / row.s_per_step)
+                                           : "";
+            const double timed_s = static_cast<double>(row.load.timed_steps) / row.scene.fidelity.step_hz;
+            fmt::print("{:<34} {:>7} {:>6} {:>10.3f} {:>12.2f} {:>10.2f} {:>12.3f} {:>14.1f} {:>10.1f} {:>9.3f} {:>8.2f} "
+                       "{:>9}\n",
+                       label, row.load.grains, to_string(frame), 1e3 * row.s_per_step, us_per_grain_step,
+                       us_per_grain_step / *first, timed_s / row.load.wall_s, row.load.contacts_per_grain,
+                       row.load.touching_per_grain, row.load.shell_speed_m_s, timed_s, faster);
             std::fflush(stdout);
             if (frame == defaults.fidelity.frame) rows.push_back(row);
         }
     }
-    const PowerLaw fit = fit_power_law(rows);
     const RunCostFigures& model = run_cost_figures();
-    fmt::print("fitted, in the defaults' frame ({}): cost per step = {:.3g} s x (grains + 1)^{:.2f}; the cost model every estimate uses "
+    if (rows.size() >= 2) {  // a fit needs two grain counts
+        const PowerLaw fit = fit_power_law(rows);
+        fmt::print("fitted, in the defaults' frame ({}): cost per step = {:.3g} s x (grains + 1)^{:.2f}; the cost model every estimate uses "
                "(assets/run-cost.json: engine_step_s, engine_exponent, at {:g} iterations) says {:.3g} s x "
                "(grains + 1)^{:.2f}\n",
                to_string(defaults.fidelity.frame), fit.s_per_grain_step, fit.exponent, model.engine_reference_iterations, model.engine_step_s,
                model.engine_exponent);
+    }
     fmt::print("us_grain_step: engine time per disc and step; x_first: that against the first row; contacts/grain: "
                "Box2D's contacts (pairs of fixtures whose boxes, enlarged by 0.1 engine units and four steps' travel, "
-               "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch; x_faster: the ramp's frame's time a step over the pile's.\n");
+               "overlap) per disc, sampled every 100 steps; touching: of those, the ones whose shapes touch; speed_m_s: the "
+               "shell's speed down the ramp where the timing began (each frame's run is its own, so a shell that has "
+               "stopped in one frame and not the other shows here); timed_s: the simulated seconds timed, fewer where the "
+               "shell reached the ramp's end; x_faster: the ramp's frame's time a step over the "
+               "pile's.\n");
 }
 
 }  // namespace polyroll::cli

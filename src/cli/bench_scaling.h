@@ -8,8 +8,8 @@
 
 namespace polyroll::cli {
 
-// Each scene built and settled, then `sim_s` simulated seconds after the release stepped bare (no
-// tracker), best of `repeats`, at the fidelity preset `fidelity`, one core.
-void bench_scaling(const std::string& fidelity, double sim_s, int repeats);
+// Each scene built and settled, stepped bare (no tracker) to `from_s` after the release untimed, then
+// `sim_s` simulated seconds timed; best of `repeats`, at the fidelity preset `fidelity`, one core.
+void bench_scaling(const std::string& fidelity, double from_s, double sim_s, int repeats);
 
 }  // namespace polyroll::cli

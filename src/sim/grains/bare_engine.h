@@ -19,7 +19,12 @@ struct EngineLoad {
     double wall_s = 0.0;              // the stepping alone, building not included
     double contacts_per_grain = 0.0;  // Box2D's contacts (box pairs), mean over the steps sampled
     double touching_per_grain = 0.0;  // of those, the ones whose shapes touch
+    double shell_speed_m_s = 0.0;     // the shell's speed along the ramp where the timing began
+    long timed_steps = 0;             // `steps`, or fewer where the shell reached the ramp's end first
 };
-EngineLoad measure_engine_load(const Scene& scene, long steps);
+// `skip_steps` tracker steps are stepped first, untimed: a stretch later in the roll, where the pile
+// moves fast, costs differently from the first second after the release. The timing ends early where
+// the shell's centre passes the run's end (beyond it the shell leaves the ramp).
+EngineLoad measure_engine_load(const Scene& scene, long steps, long skip_steps = 0);
 
 }  // namespace polyroll
