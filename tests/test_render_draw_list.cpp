@@ -6,7 +6,10 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <optional>
+#include <vector>
 
+#include "render/changed_regions.h"
 #include "render/close_up.h"
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
@@ -389,4 +392,88 @@ TEST_CASE("a frame says the run's outcome at the end and marks slow motion", "[r
     FrameOptions slow = o;
     slow.slow_motion = 4;
     CHECK(glyph_count(build_frame(s, slow, font)) > plain);
+}
+
+// The window draws the scene only where its list changed since the last frame (changed_regions.h):
+// the regions must hold every pixel a changed primitive touched, before and after, and nothing
+// changed must give no region; a change of frame (size, layers, clips) asks for the whole list.
+TEST_CASE("the regions where a draw list changed hold every primitive that moved, before and after", "[render]") {
+    DrawList a;
+    a.width_px = 800;
+    a.height_px = 600;
+    a.bounds = ClipRect{100, 50, 700, 500};
+    Layer& ramp = a.new_layer(ClipRect{100, 50, 700, 500});
+    ramp.triangles.push_back({{120, 500}, {780, 520}, {120, 540}, rgb8(90, 90, 90)});
+    for (int i = 0; i < 50; ++i)
+        ramp.shapes.push_back(disc({200.0f + 2.0f * static_cast<float>(i), 150.0f}, 1.5f, rgb8(200, 50, 50)));
+    a.new_layer(ClipRect{110, 300, 300, 240}).shapes.push_back(disc({250, 400}, 60.0f, rgb8(30, 60, 160)));
+
+    const std::optional<std::vector<ClipRect>> same = changed_regions(a, a);
+    REQUIRE(same);
+    CHECK(same->empty());
+
+    // One grain moves 10 px: one small region holding both of its places, inside the layer's clip.
+    DrawList b = a;
+    b.layers[0].shapes[7].a = b.layers[0].shapes[7].b = {224.0f, 160.0f};
+    const std::optional<std::vector<ClipRect>> moved = changed_regions(a, b);
+    REQUIRE(moved);
+    REQUIRE(moved->size() == 1);
+    const ClipRect r = moved->front();
+    for (const Shape& s : {a.layers[0].shapes[7], b.layers[0].shapes[7]}) {
+        const ClipRect px = pixels_touched(s);
+        CHECK(intersection(r, px) == px);
+    }
+    CHECK(r.width * r.height < 30 * 30);
+    CHECK(!overlap(r, pixels_touched(a.layers[1].shapes[0])));  // the close-up's disc is not redrawn
+
+    // A change in the second layer adds a region inside its clip; a disc leaving the frame is cut.
+    DrawList c = b;
+    c.layers[1].shapes[0].a = c.layers[1].shapes[0].b = {250.0f, 420.0f};
+    const std::optional<std::vector<ClipRect>> two = changed_regions(a, c);
+    REQUIRE(two);
+    CHECK(two->size() == 2);
+    for (const ClipRect& x : *two) CHECK(intersection(x, *c.bounds) == x);
+
+    // A grain added at the end of a layer is a change where it is drawn.
+    DrawList d = a;
+    d.layers[0].shapes.push_back(disc({600, 200}, 3.0f, rgb8(0, 0, 0)));
+    const std::optional<std::vector<ClipRect>> added = changed_regions(a, d);
+    REQUIRE(added);
+    REQUIRE(added->size() == 1);
+    CHECK(overlap(added->front(), pixels_touched(d.layers[0].shapes.back())));
+
+    // Another frame: the whole list.
+    DrawList e = a;
+    e.width_px = 801;
+    CHECK(!changed_regions(a, e));
+    DrawList f = a;
+    f.new_layer();
+    CHECK(!changed_regions(a, f));
+    DrawList g = a;
+    g.layers[1].clip = ClipRect{110, 300, 310, 240};
+    CHECK(!changed_regions(a, g));
+}
+
+TEST_CASE("regions close together merge, far apart stay apart, and many become one", "[render]") {
+    std::vector<ClipRect> regions;
+    add_region(regions, {10, 10, 20, 20});
+    add_region(regions, {300, 300, 20, 20});
+    CHECK(regions.size() == 2);
+    add_region(regions, {12, 12, 20, 20});  // mostly the first: one rectangle around both
+    REQUIRE(regions.size() == 2);
+    CHECK(std::count(regions.begin(), regions.end(), ClipRect{10, 10, 22, 22}) == 1);
+    // Two thin strips crossing at a corner stay apart: one rectangle around both would be the frame.
+    std::vector<ClipRect> strips;
+    add_region(strips, {0, 0, 800, 3});
+    add_region(strips, {0, 0, 3, 600});
+    CHECK(strips.size() == 2);
+    add_region(strips, {});  // nothing to add
+    CHECK(strips.size() == 2);
+    std::vector<ClipRect> many;
+    for (int i = 0; i < 10; ++i) add_region(many, {100 * i, 0, 5, 5});
+    REQUIRE(many.size() <= 6);
+    for (int i = 0; i < 10; ++i) {
+        const ClipRect r{100 * i, 0, 5, 5};
+        CHECK(std::any_of(many.begin(), many.end(), [&](const ClipRect& m) { return intersection(m, r) == r; }));
+    }
 }

@@ -185,7 +185,12 @@ std::vector<Rect> PanelCache::render(ImDrawData* data, render::Rgba background, 
         drawn.push_back(s);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (!inside.empty()) draw_clipped(data, now, inside);
+    drawn_in_scene_.clear();
+    if (!inside.empty()) {
+        draw_clipped(data, now, inside);
+        for (const ListState& l : now)
+            if (const Rect r = intersect(l.bounds, inside); !r.empty()) drawn_in_scene_.push_back(r);
+    }
     lists_ = std::move(now);
     return drawn;
 }

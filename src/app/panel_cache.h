@@ -48,6 +48,9 @@ public:
     std::vector<Rect> render(ImDrawData* data, render::Rgba background, const render::PxRect& scene, bool kept);
     // Redraws everything at the next render (the font texture was rebuilt).
     void invalidate() { lists_.clear(); }
+    // Where the last render drew lists over the scene (a border's edge, an open combo): the scene's
+    // pixels there were blended over, so a scene drawn only where it changed draws these again too.
+    const std::vector<Rect>& drawn_in_scene() const { return drawn_in_scene_; }
 
 private:
     struct ListState {
@@ -61,6 +64,7 @@ private:
 
     std::vector<ListState> lists_;  // the last frame's
     Rect inside_;                   // the last frame's scene pixels
+    std::vector<Rect> drawn_in_scene_;
     render::Rgba background_{};
     int width_px_ = 0, height_px_ = 0;
     unsigned texture_ = 0, framebuffer_ = 0;

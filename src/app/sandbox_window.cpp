@@ -13,6 +13,7 @@
 #include "app/panel_cache.h"
 #include "app/platform.h"
 #include "app/sandbox_settings.h"
+#include "render/changed_regions.h"
 #include "render/font.h"
 #include "render/glsl_version.h"
 
@@ -171,14 +172,36 @@ void Window::begin_frame() {
     ImGui::NewFrame();
 }
 
-void Window::render_ui(render::Rgba panel_background, const render::PxRect& scene) {
+void Window::render_ui(render::Rgba panel_background, const render::PxRect& scene,
+                       const std::vector<render::ClipRect>* scene_changed) {
     ImGui::Render();
     int w = 0, h = 0;
     framebuffer_size(w, h);
     if (w != kept_w_ || h != kept_h_) kept_ = false;  // a new size is a new back buffer
     changed_ = panels_->render(ImGui::GetDrawData(), panel_background, scene, present_parts_ && kept_);
     const render::ClipRect c = render::covering_pixels(scene);
-    changed_.push_back({c.x, c.y, c.x + c.width, c.y + c.height});
+    if (!scene_changed) {
+        changed_.push_back({c.x, c.y, c.x + c.width, c.y + c.height});
+        return;
+    }
+    for (const render::ClipRect& r : *scene_changed) {
+        const render::ClipRect in = render::intersection(r, c);
+        if (!in.empty()) changed_.push_back({in.x, in.y, in.x + in.width, in.y + in.height});
+    }
+    // What the panels drew over the scene this frame (an open combo may have appeared there).
+    for (const PanelCache::Rect& r : panels_->drawn_in_scene()) changed_.push_back(r);
+}
+
+bool Window::holds_last_frame() const {
+    int w = 0, h = 0;
+    framebuffer_size(w, h);
+    return present_parts_ && kept_ && w == kept_w_ && h == kept_h_;
+}
+
+std::vector<render::ClipRect> Window::panels_in_scene() const {
+    std::vector<render::ClipRect> out;
+    for (const PanelCache::Rect& r : panels_->drawn_in_scene()) out.push_back({r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0});
+    return out;
 }
 
 void Window::swap() {

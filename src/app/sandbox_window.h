@@ -11,6 +11,7 @@
 #include "app/panel_cache.h"
 #include "render/colour.h"
 #include "render/camera.h"
+#include "render/draw_list.h"
 
 struct GLFWwindow;
 struct ImFont;
@@ -31,13 +32,21 @@ public:
     // Renders ImGui's draw data over the frame, where outside `scene` (framebuffer pixels) the frame
     // holds `panel_background` alone; the windows that did not change since the last frame come from a
     // copy (panel_cache.h).
-    void render_ui(render::Rgba panel_background, const render::PxRect& scene);
+    // `scene_changed`: the scene was drawn only there (the rest of it is the last frame's), so only
+    // there, and where the panels draw over the scene, is it shown again; none: the whole scene.
+    void render_ui(render::Rgba panel_background, const render::PxRect& scene,
+                   const std::vector<render::ClipRect>* scene_changed = nullptr);
     // Shows the frame: swaps, or where the window shows parts of its back buffer (keeps_panels()),
     // copies the scene and what the panels changed.
     void swap();
     // True when the back buffer keeps the panels' pixels from frame to frame (platform.h,
     // can_present_parts): the scene then draws nothing outside its area, not even the clear.
     bool keeps_panels() const { return present_parts_; }
+    // True when the back buffer holds the last frame as it was shown (shown in parts, the same size):
+    // the scene may then be drawn only where it changed (render/changed_regions.h).
+    bool holds_last_frame() const;
+    // Where the last frame's panels drew over the scene (PanelCache::drawn_in_scene).
+    std::vector<render::ClipRect> panels_in_scene() const;
     // Waits until GL has drawn everything asked of it so far (the benchmark's split of a frame).
     void finish_gl() const;
     // Sleeps until an input event arrives or `timeout_s` passes: the loop calls it when nothing

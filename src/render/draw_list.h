@@ -16,6 +16,7 @@ class FontAtlas;
 struct Px {
     float x = 0.0f;
     float y = 0.0f;
+    bool operator==(const Px&) const = default;
 };
 
 // What an item depicts, so tests (and later picking in the window) can find it.
@@ -41,6 +42,7 @@ struct Triangle {
     Px a, b, c;
     Rgba colour;
     Tag tag = Tag::none;
+    bool operator==(const Triangle&) const = default;
 };
 
 // Shapes drawn by their distance function in the fragment shader, so their edges are antialiased.
@@ -57,6 +59,7 @@ struct Shape {
     Rgba fill;
     Rgba outline;
     Tag tag = Tag::none;
+    bool operator==(const Shape&) const = default;
 };
 
 // One glyph: a pixel rectangle textured from the font atlas's coverage.
@@ -64,10 +67,13 @@ struct GlyphQuad {
     Px p0, p1;             // top-left and bottom-right, whole pixels
     float u0, v0, u1, v1;  // atlas texture coordinates
     Rgba colour;
+    bool operator==(const GlyphQuad&) const = default;
 };
 
 struct ClipRect {
     int x = 0, y = 0, width = 0, height = 0;  // pixels, top-left origin
+    bool operator==(const ClipRect&) const = default;
+    bool empty() const { return width <= 0 || height <= 0; }
 };
 
 // A layer draws its triangles, then its shapes in order, then its glyphs; layers draw in order.

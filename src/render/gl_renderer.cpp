@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "render/changed_regions.h"
 #include "render/font.h"
 #include "render/gl_program.h"
 
@@ -329,27 +330,15 @@ void GlRenderer::draw_shapes(const std::vector<Shape>& shapes, size_t begin, siz
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
 }
 
-void GlRenderer::draw(const DrawList& list) {
+void GlRenderer::draw(const DrawList& list) { draw_in(list, nullptr); }
+
+void GlRenderer::draw(const DrawList& list, const std::vector<ClipRect>& regions) { draw_in(list, &regions); }
+
+void GlRenderer::draw_in(const DrawList& list, const std::vector<ClipRect>* regions) {
     const int w = list.width_px, h = list.height_px;
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
-    // GL counts rows from the bottom.
-    const auto scissor = [h](const ClipRect& c) { glScissor(c.x, h - c.y - c.height, c.width, c.height); };
-    const auto within_bounds = [&list](const ClipRect& c) {
-        if (!list.bounds) return c;
-        const ClipRect& b = *list.bounds;
-        const int x0 = std::max(c.x, b.x), y0 = std::max(c.y, b.y);
-        const int x1 = std::min(c.x + c.width, b.x + b.width), y1 = std::min(c.y + c.height, b.y + b.height);
-        return ClipRect{x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
-    };
-    if (list.bounds) {
-        glEnable(GL_SCISSOR_TEST);
-        scissor(*list.bounds);
-    } else {
-        glDisable(GL_SCISSOR_TEST);
-    }
     glClearColor(list.background.r, list.background.g, list.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
     glEnable(GL_BLEND);
     // Alpha kept at 1 over the opaque background, so the read-back RGB is the picture.
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -357,28 +346,63 @@ void GlRenderer::draw(const DrawList& list) {
     glEnable(GL_PROGRAM_POINT_SIZE);  // the point sprites' size from the shader (always so in GLES and WebGL)
 #endif
     if (list.atlas && list.atlas->id() != uploaded_atlas_) upload_atlas(*list.atlas);
+    const ClipRect frame = list.bounds ? *list.bounds : ClipRect{0, 0, w, h};
+    if (!regions) {
+        // The whole list: the clear scissored to its bounds (where it has them), each layer to its clip.
+        draw_region(list, frame, !list.bounds);
+    } else {
+        for (const ClipRect& r : *regions) {
+            const ClipRect region = intersection(r, frame);
+            if (!region.empty()) draw_region(list, region, false);
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
+}
 
+void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool whole_frame) {
+    const int h = list.height_px;
+    // GL counts rows from the bottom.
+    const auto scissor = [h](const ClipRect& c) { glScissor(c.x, h - c.y - c.height, c.width, c.height); };
+    if (whole_frame) {
+        glDisable(GL_SCISSOR_TEST);
+    } else {
+        glEnable(GL_SCISSOR_TEST);
+        scissor(region);
+    }
+    glClear(GL_COLOR_BUFFER_BIT);
+    // Inside a region smaller than the frame only the primitives that reach it are sent (culled by
+    // the same pixels changed_regions counts); the scissor keeps each to the region's pixels.
+    const ClipRect frame{0, 0, list.width_px, h};
+    const bool cull = !(region == frame);
     std::vector<TriVertex> tris;
     std::vector<GlyphInstance> glyphs;
-    const float fw = static_cast<float>(w), fh = static_cast<float>(h);
+    std::vector<Shape> shown;
+    const float fw = static_cast<float>(list.width_px), fh = static_cast<float>(h);
     for (const Layer& layer : list.layers) {
-        if (layer.clip || list.bounds) {
-            glEnable(GL_SCISSOR_TEST);
-            scissor(within_bounds(layer.clip ? *layer.clip : *list.bounds));
-        } else {
+        const ClipRect clip = layer.clip ? intersection(*layer.clip, region) : region;
+        if (clip.empty()) continue;
+        if (whole_frame && !layer.clip) {
             glDisable(GL_SCISSOR_TEST);
+        } else {
+            glEnable(GL_SCISSOR_TEST);
+            scissor(clip);
         }
-        if (!layer.triangles.empty()) {
-            tris.clear();
-            bool opaque = true;
-            for (const Triangle& t : layer.triangles) {
-                opaque = opaque && t.colour.a >= 1.0f;
-                for (const Px& p : {t.a, t.b, t.c}) {
-                    TriVertex v{p.x, p.y, {}};
-                    put(v.colour, t.colour);
-                    tris.push_back(v);
-                }
+        const auto reaches = [&](const auto& item) { return !cull || overlap(pixels_touched(item), clip); };
+        tris.clear();
+        bool opaque = true;
+        for (const Triangle& t : layer.triangles) {
+            if (!reaches(t)) continue;
+            opaque = opaque && t.colour.a >= 1.0f;
+            for (const Px& p : {t.a, t.b, t.c}) {
+                TriVertex v{p.x, p.y, {}};
+                put(v.colour, t.colour);
+                tris.push_back(v);
             }
+        }
+        if (!tris.empty()) {
             // Opaque triangles replace what is under them, blended or not; unblended, a software GL
             // fills them about three times faster.
             if (opaque) glDisable(GL_BLEND);
@@ -391,22 +415,31 @@ void GlRenderer::draw(const DrawList& list) {
             glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(tris.size()));
             glEnable(GL_BLEND);
         }
+        const std::vector<Shape>* shapes = &layer.shapes;
+        if (cull) {
+            shown.clear();
+            for (const Shape& sh : layer.shapes)
+                if (reaches(sh)) shown.push_back(sh);
+            shapes = &shown;
+        }
         // The shapes in order, each run of discs that fit a point sprite as points, the rest as quads.
-        for (size_t i = 0; i < layer.shapes.size();) {
-            const bool points = as_point(layer.shapes[i], fw, fh);
+        for (size_t i = 0; i < shapes->size();) {
+            const bool points = as_point((*shapes)[i], fw, fh);
             size_t end = i + 1;
-            while (end < layer.shapes.size() && as_point(layer.shapes[end], fw, fh) == points) ++end;
-            if (points) draw_discs(layer.shapes, i, end, fw, fh);
-            else draw_shapes(layer.shapes, i, end, fw, fh);
+            while (end < shapes->size() && as_point((*shapes)[end], fw, fh) == points) ++end;
+            if (points) draw_discs(*shapes, i, end, fw, fh);
+            else draw_shapes(*shapes, i, end, fw, fh);
             i = end;
         }
-        if (!layer.glyphs.empty() && list.atlas) {
-            glyphs.clear();
+        glyphs.clear();
+        if (list.atlas)
             for (const GlyphQuad& g : layer.glyphs) {
+                if (!reaches(g)) continue;
                 GlyphInstance in{{g.p0.x, g.p0.y, g.p1.x, g.p1.y}, {g.u0, g.v0, g.u1, g.v1}, {}};
                 put(in.colour, g.colour);
                 glyphs.push_back(in);
             }
+        if (!glyphs.empty()) {
             glUseProgram(glyph_program_);
             glUniform2f(glyph_viewport_, fw, fh);
             glUniform1i(glyph_sampler_, 0);
@@ -419,10 +452,6 @@ void GlRenderer::draw(const DrawList& list) {
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(glyphs.size()));
         }
     }
-    glDisable(GL_SCISSOR_TEST);
-    glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glUseProgram(0);
 }
 
 }  // namespace polyroll::render

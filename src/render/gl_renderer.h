@@ -22,8 +22,16 @@ public:
 
     // Clears to the list's background and draws it. The viewport is the list's size.
     void draw(const DrawList& list);
+    // The same, only inside `regions` (cut to the list's bounds): the framebuffer holds the last
+    // frame elsewhere, and these are where this list differs from it (changed_regions.h). Each region
+    // is cleared and gets, in the list's order, every primitive that reaches it.
+    void draw(const DrawList& list, const std::vector<ClipRect>& regions);
 
 private:
+    void draw_in(const DrawList& list, const std::vector<ClipRect>* regions);
+    // Clears `region` and draws the layers there; `whole_frame`: no scissor for the clear or for
+    // layers without a clip (the list has no bounds and the region is the frame).
+    void draw_region(const DrawList& list, const ClipRect& region, bool whole_frame);
     void upload_atlas(const FontAtlas& atlas);
     // Whether a shape is drawn as a point sprite: a disc no wider than GL's largest point, centred in the frame.
     bool as_point(const Shape& s, float width_px, float height_px) const;
