@@ -477,3 +477,22 @@ TEST_CASE("regions close together merge, far apart stay apart, and many become o
         CHECK(std::any_of(many.begin(), many.end(), [&](const ClipRect& m) { return intersection(m, r) == r; }));
     }
 }
+
+// A region's edge never crosses a disc (llvmpipe scissors point sprites block by block): the regions
+// grow to hold each disc they reach whole, and the discs that disc reaches in turn.
+TEST_CASE("regions grow to hold every disc they reach, whole", "[render]") {
+    DrawList l;
+    l.width_px = 400;
+    l.height_px = 300;
+    Layer& layer = l.new_layer();
+    for (int i = 0; i < 5; ++i) layer.shapes.push_back(disc({100.0f + 6.0f * static_cast<float>(i), 100.0f}, 3.0f, rgb8(1, 2, 3)));
+    layer.shapes.push_back(disc({300, 250}, 3.0f, rgb8(1, 2, 3)));  // far away: not taken in
+    std::vector<ClipRect> regions{{99, 99, 3, 3}};
+    hold_whole_discs(l, regions);
+    REQUIRE(regions.size() == 1);
+    for (int i = 0; i < 5; ++i) {
+        const ClipRect px = pixels_touched(layer.shapes[static_cast<std::size_t>(i)]);
+        CHECK(intersection(regions[0], px) == px);
+    }
+    CHECK(!overlap(regions[0], pixels_touched(layer.shapes[5])));
+}

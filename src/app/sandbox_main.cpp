@@ -448,8 +448,10 @@ private:
         scene_changed_.reset();
         if (drawn_ && win_.holds_last_frame()) {
             scene_changed_ = render::changed_regions(*drawn_, list);
-            if (scene_changed_)
+            if (scene_changed_) {
                 for (const render::ClipRect& r : win_.panels_in_scene()) render::add_region(*scene_changed_, r);
+                render::hold_whole_discs(list, *scene_changed_);
+            }
         }
         const double t1 = now_s();
         if (scene_changed_) gl_.draw(list, *scene_changed_);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace polyroll::render {
 
@@ -94,6 +95,27 @@ void add_region(std::vector<ClipRect>& regions, const ClipRect& r) {
         for (const ClipRect& x : regions) all = unite(all, x);
         regions = {all};
     }
+}
+
+void hold_whole_discs(const DrawList& list, std::vector<ClipRect>& regions) {
+    const ClipRect frame{0, 0, list.width_px, list.height_px};
+    std::vector<ClipRect> grown;
+    for (ClipRect r : regions) {
+        // Each disc taken in may reach others: repeat until none is added.
+        for (bool more = true; more;) {
+            more = false;
+            for (const Layer& layer : list.layers)
+                for (const Shape& s : layer.shapes) {
+                    if (s.kind != ShapeKind::capsule || !(s.a == s.b)) continue;
+                    const ClipRect px = intersection(pixels_touched(s), frame);
+                    if (px.empty() || !overlap(px, r) || intersection(px, r) == px) continue;
+                    r = unite(r, px);
+                    more = true;
+                }
+        }
+        add_region(grown, r);
+    }
+    regions = std::move(grown);
 }
 
 std::optional<std::vector<ClipRect>> changed_regions(const DrawList& before, const DrawList& now) {
