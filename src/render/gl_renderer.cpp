@@ -392,10 +392,12 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
         }
         const auto reaches = [&](const auto& item) { return !cull || overlap(pixels_touched(item), clip); };
         tris.clear();
-        bool opaque = true;
+        // Decided by all of the layer's triangles, culled or not, so that a region blends as the whole
+        // frame does.
+        const bool opaque = std::all_of(layer.triangles.begin(), layer.triangles.end(),
+                                        [](const Triangle& t) { return t.colour.a >= 1.0f; });
         for (const Triangle& t : layer.triangles) {
             if (!reaches(t)) continue;
-            opaque = opaque && t.colour.a >= 1.0f;
             for (const Px& p : {t.a, t.b, t.c}) {
                 TriVertex v{p.x, p.y, {}};
                 put(v.colour, t.colour);
