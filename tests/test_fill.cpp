@@ -12,6 +12,7 @@
 #include "sim/geometry/shell_properties.h"
 #include "sim/geometry/disc_size.h"
 #include "sim/scene/scene_json.h"
+#include "sim/scene/scene_validate.h"
 #include "sim/grains/world_builder.h"
 #include "test_helpers.h"
 
@@ -275,4 +276,67 @@ TEST_CASE("the closure's size spread sizes the 2D discs instead of the material'
     const FillPlan a = plan_fill(none, p, up), b = plan_fill(spelled, p, up);
     REQUIRE(a.grains.size() == b.grains.size());
     for (size_t i = 0; i < a.grains.size(); ++i) CHECK(a.grains[i].radius_m == b.grains[i].radius_m);
+}
+
+TEST_CASE("the closure's bulk factor raises the 2D pile's level, not its mass, and a full shell stays full",
+          "[fill][closure]") {
+    const geom::Vec2 up{0.0, 1.0};
+    for (const double r : {0.25, 0.5}) {
+        const Scene none = test::scene_with({{"fill", {{"ratio", r}}}});
+        CHECK(none.closure.bulk_factor == 1.0);  // the bundled default: the level holds exactly r
+        const Scene taller = test::scene_with({{"fill", {{"ratio", r}}}, {"closure", {{"bulk_factor", 1.15}}}});
+        const ShellProperties p = shell_properties(none.shell);
+        const FillPlan a = plan_fill(none, p, up), b = plan_fill(taller, p, up);
+        // The same mass, shared by more discs over a taller outline.
+        CHECK(b.target_mass_kg == a.target_mass_kg);
+        double mass_kg = 0.0;
+        for (const auto& g : b.grains) mass_kg += g.mass_kg;
+        CHECK(mass_kg == Approx(a.target_mass_kg).epsilon(1e-9));
+        CHECK(b.surface_level_m > a.surface_level_m);
+        // Discs of the same size pack the 15% larger area about as densely (the deposition's packing
+        // varies by a few percent with the outline).
+        const double more = static_cast<double>(b.grains.size()) / static_cast<double>(a.grains.size());
+        CHECK(more == Approx(1.15).epsilon(0.06));
+        CHECK(estimated_grain_count(taller) == Approx(1.15 * estimated_grain_count(none)).epsilon(1e-12));
+        auto top = [](const FillPlan& f) {
+            double h = -1e9;
+            for (const auto& g : f.grains) h = std::max(h, g.position_m.y);
+            return h;
+        };
+        CHECK(top(b) > top(a));
+    }
+    // Full: the pile cannot stand higher than the lid; the level and the discs are those of no closure.
+    const Scene full = test::scene_with({{"fill", {{"ratio", 1.0}}}});
+    const Scene full_taller = test::scene_with({{"fill", {{"ratio", 1.0}}}, {"closure", {{"bulk_factor", 1.15}}}});
+    const ShellProperties p = shell_properties(full.shell);
+    const FillPlan a = plan_fill(full, p, up), b = plan_fill(full_taller, p, up);
+    CHECK(b.surface_level_m == a.surface_level_m);
+    REQUIRE(a.grains.size() == b.grains.size());
+    for (size_t i = 0; i < a.grains.size(); ++i) CHECK(a.grains[i].position_m.y == b.grains[i].position_m.y);
+}
+
+TEST_CASE("release.pile_tilt_deg leans the 2D pile's top, higher downhill, with the same mass", "[fill]") {
+    const geom::Vec2 up{0.0, 1.0};  // downhill is +x in this frame: (up.y, -up.x)
+    const Scene level = test::scene_with({{"fill", {{"ratio", 0.375}}}});
+    CHECK(level.release.pile_tilt_deg == 0.0);  // the bundled default: a level pile
+    const Scene leaning = test::scene_with({{"fill", {{"ratio", 0.375}}}, {"release", {{"pile_tilt_deg", 10.0}}}});
+    const ShellProperties p = shell_properties(level.shell);
+    const FillPlan a = plan_fill(level, p, up), b = plan_fill(leaning, p, up);
+    CHECK(b.target_mass_kg == a.target_mass_kg);
+    auto centre_of_mass = [](const FillPlan& f) {
+        geom::Vec2 c{0.0, 0.0};
+        double m = 0.0;
+        for (const auto& g : f.grains) {
+            c = c + g.mass_kg * g.position_m;
+            m += g.mass_kg;
+        }
+        return (1.0 / m) * c;
+    };
+    // A level pile in a symmetric hold lies on the centre line; the leaning one a millimetre or more downhill.
+    CHECK(std::abs(centre_of_mass(a).x) < 0.3e-3);
+    CHECK(centre_of_mass(b).x > 1e-3);
+    // Its highest disc stands on the downhill side.
+    const auto top = std::max_element(b.grains.begin(), b.grains.end(),
+                                      [](const auto& g, const auto& h) { return g.position_m.y < h.position_m.y; });
+    CHECK(top->position_m.x > 0.0);
 }

@@ -37,7 +37,7 @@ const std::vector<std::string> kSceneFileFields = {
     "fill.material.grains_per_disc",
     "ramp.preset", "ramp.length_m", "ramp.friction", "ramp.restitution", "ramp.angle_deg",
     "ramp.curvature_deg_per_m",
-    "release.pose", "release.tilt_deg",
+    "release.pose", "release.tilt_deg", "release.pile_tilt_deg",
     "fidelity.preset", "fidelity.step_hz", "fidelity.substeps", "fidelity.velocity_iterations",
     "fidelity.position_iterations",
     "fidelity.frame",
@@ -45,7 +45,7 @@ const std::vector<std::string> kSceneFileFields = {
     "run.rest_speed_m_s", "run.rest_time_s", "run.end_at_impact",
     "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.channel_width_m",
     "closure.preset", "closure.disc_friction_factor", "closure.wall_friction_factor", "closure.restitution_factor",
-    "closure.disc_size_spread",
+    "closure.disc_size_spread", "closure.bulk_factor",
 };
 
 }  // namespace

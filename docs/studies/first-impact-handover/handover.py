@@ -21,6 +21,7 @@ Usage (Debian's python3):
   PYTHONPATH=build/python python3 docs/studies/first-impact-handover/handover.py 2d OUT.csv   (2D: 20 runs)
   PYTHONPATH=build/python python3 docs/studies/first-impact-handover/handover.py fields OUT.csv FIELD=VALUE...
   PYTHONPATH=build/python python3 docs/studies/first-impact-handover/handover.py scenes OUT.csv SCENE_FILE...
+  PYTHONPATH=build/python python3 docs/studies/first-impact-handover/handover.py grid OUT.csv POLYGON FILL A1,A2,.. [FIELD=VALUE...]
   python3 docs/studies/first-impact-handover/handover.py 3d OUT.csv RUN_FOLDER...   (each with out/ and wd/)
 """
 import csv
@@ -31,6 +32,7 @@ import sys
 
 OFFSETS_MS = (-2, 3, 10, 30, 60)
 G = 9.81
+T_END_S = 1.2  # sampled as long as the 3D runs (their --time-limit): an octagon at 10 deg lands near 0.5 s
 
 
 def cross_cw(rx, ry, px, py):
@@ -93,24 +95,25 @@ def handover(times, shell_xy, shell_angle, grains_xy, masses, t_land, shell, ang
     return out
 
 
-def run_2d(angle, fill, seed, variant, scene_file=None):
+def run_2d(angle, fill, seed, variant, scene_file=None, polygon='hexagon-small'):
     import polyroll
     fields = {'fill.material.grains_per_disc': 1.0} if variant == 'one-disc-per-bb' else None
-    if '=' in variant:  # FIELD=VALUE: one scene field moved (the 'fields' mode)
-        name, value = variant.split('=')
-        fields = {name: float(value)}
+    if '=' in variant:  # FIELD=VALUE: one scene field moved (the 'fields' mode); several joined by '&'
+        fields = {name: float(value) for name, value in (part.split('=') for part in variant.split('&'))}
     closure = variant if variant in ('none', 'pile-disorder') else 'none'
     if scene_file:  # a scene file as it stands (its fill), at this angle and seed
         sim = polyroll.Simulation(scene_file, angle=angle, seed=seed, model='grains', fields=fields)
     else:
-        sim = polyroll.Simulation(polygon='hexagon-small', fill=fill, angle=angle, seed=seed, model='grains',
-                                  closure=closure, fields=fields)
+        # a variant that sets fill.ratio itself (with the bulk density, to keep the fill's mass) names no fill
+        named = {} if fields and 'fill.ratio' in fields else {'fill': fill}
+        sim = polyroll.Simulation(polygon=polygon, angle=angle, seed=seed, model='grains', closure=closure,
+                                  fields=fields, **named)
     shell = sim.measured()['shell']
-    shell['sides'] = 6
+    shell['sides'] = sim.measured()['scene']['shell']['sides']
     fill_mass = sim.measured()['results'].get('fill_mass_kg')
     times, sxy, sang, gxy = [], [], [], []
     radii = None
-    while sim.time_s < 0.5 and not sim.finished:
+    while sim.time_s < T_END_S and not sim.finished:
         sim.step(1)
         sh, g = sim.shell(), sim.grains()
         times.append(sim.time_s)
@@ -127,7 +130,8 @@ def run_2d(angle, fill, seed, variant, scene_file=None):
     out = handover(times, sxy, sang, gxy, masses, t_land, shell, angle)
     if scene_file:
         fill, variant = summ['scene']['fill']['ratio'], os.path.basename(scene_file)
-    out.update(model='grains' if variant == 'none' else 'grains, ' + variant, angle_deg=angle, fill_ratio=fill,
+    out.update(model='grains' if variant == 'none' else 'grains, ' + variant, polygon=summ['scene']['shell']['preset'],
+               angle_deg=angle, fill_ratio=fill,
                seed=seed, landing_s=t_land,
                behaviour=summ['results']['behaviour'], faces=summ['results'].get('impacts'))
     return out
@@ -158,9 +162,9 @@ def run_3d(folder):
     w3 = sum(radii[i] ** 3 for i in order)
     masses = [setup['fill_mass_kg'] * radii[i] ** 3 / w3 for i in order]
     shell = dict(summ['shell'])
-    shell['sides'] = 6
+    shell['sides'] = summ['scene']['shell']['sides']
     out = handover(times, sxy, sang, gxy, masses, t_land, shell, IN['angle_deg'])
-    out.update(model='dem3d', angle_deg=IN['angle_deg'], fill_ratio=summ['scene']['fill']['ratio'],
+    out.update(model='dem3d', polygon=summ['scene']['shell']['preset'], angle_deg=IN['angle_deg'], fill_ratio=summ['scene']['fill']['ratio'],
                seed=IN['seed'], landing_s=t_land, behaviour=summ['results']['behaviour'], faces=summ['results'].get('impacts'))
     return out
 
@@ -184,6 +188,14 @@ def main(argv):
             for fill in (0.25, 0.5):
                 for seed in (1, 2):
                     rows.append(run_2d(18, fill, seed, variant))
+                    print(rows[-1], flush=True)
+    elif argv[1] == 'grid':  # grid OUT.csv POLYGON FILL ANGLES [FIELD=VALUE ...]: each variant (none first) at
+        # each angle (comma-separated), seeds 1-2
+        polygon, fill, angles = argv[3], float(argv[4]), [float(a) for a in argv[5].split(',')]
+        for variant in ['none'] + argv[6:]:
+            for angle in angles:
+                for seed in (1, 2):
+                    rows.append(run_2d(angle, fill, seed, variant, polygon=polygon))
                     print(rows[-1], flush=True)
     elif argv[1] == 'scenes':  # each scene file at 18 deg, seeds 1-2
         for scene_file in argv[3:]:

@@ -8,6 +8,8 @@
 // by k, each with k grains' mass, and as large as fits: k = 1 is one disc per grain.
 #pragma once
 
+#include <algorithm>
+
 #include "sim/scene/scene.h"
 
 namespace polyroll {
@@ -15,6 +17,10 @@ namespace polyroll {
 // Share of the fill's area that poured discs cover (sequential deposition, sim/grains/grain_deposition.h;
 // measured on the small hexagon a quarter full: 0.81 with 21 discs of 6 mm, 0.88 with 253 of 1.8 mm).
 inline constexpr double kDiscPackingFraction = 0.85;
+
+// The share of the inside area the 2D pile fills (below its level): r, times the closure's bulk factor
+// (the 3D box's pile stands higher than r), at most all of it. The fill's mass is r's either way.
+inline double pile_bulk_share(const Scene& s) { return std::min(1.0, s.fill.ratio * s.closure.bulk_factor); }
 
 // Grains in the 3D fill: fill volume x packing fraction / one grain's volume (mean diameter).
 double fill_grain_count(const Scene& scene);

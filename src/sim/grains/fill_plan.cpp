@@ -24,7 +24,10 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     const MaterialParams& m = scene.fill.material;
     plan.target_mass_kg = r * shell.inside_volume_m3 * m.bulk_density_kg_m3;
     const std::vector<Vec2> inner = shell_inner_polygon_m(scene.shell);
-    plan.surface_level_m = geom::level_for_area_fraction(inner, up, r);
+    // The mass is r's; the outline it fills may be taller (the closure's bulk factor) and its top turned
+    // from level (release.pile_tilt_deg: counter-clockwise in the shell's frame raises the downhill side).
+    const Vec2 surface_up = geom::rotate(up, scene.release.pile_tilt_deg * geom::kPi / 180.0);
+    plan.surface_level_m = geom::level_for_area_fraction(inner, surface_up, pile_bulk_share(scene));
     if (r <= 0.0) return plan;
 
     const double disc_m = disc_diameter_m(scene);
@@ -35,7 +38,7 @@ FillPlan plan_fill(const Scene& scene, const ShellProperties& shell, Vec2 up) {
     // Bounded by the validation's grain limit with room for packings denser than its estimate.
     const size_t max_count = static_cast<size_t>(2.0 * kMaxGrains);
     const std::vector<Disc> discs =
-        deposit_grains(inner, up, plan.surface_level_m, next_radius, r_max, max_count, [&] { return rng.uniform(); });
+        deposit_grains(inner, surface_up, plan.surface_level_m, next_radius, r_max, max_count, [&] { return rng.uniform(); });
     double area_sum = 0.0;
     for (const Disc& d : discs) {
         plan.grains.push_back({d.centre, d.radius, 0.0});

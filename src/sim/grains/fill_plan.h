@@ -20,7 +20,7 @@ struct PlannedGrain {
 
 struct FillPlan {
     geom::Vec2 up;                    // unit vector against gravity, in the shell's frame
-    double surface_level_m = 0.0;     // free surface: points with dot(p, up) <= level are below it
+    double surface_level_m = 0.0;     // free surface: points with dot(p, up turned by release.pile_tilt_deg) <= level
     double target_mass_kg = 0.0;      // r x inside volume x bulk density
     std::vector<PlannedGrain> grains;
 };

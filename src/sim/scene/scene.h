@@ -72,6 +72,11 @@ struct ReleaseParams {
     // Vertex and tipped releases: rotation past the balance point (centre of the polygon straight above the
     // pivot vertex), downhill. A hand never lets go exactly at balance.
     double tilt_deg = 0.0;
+    // The grain pile's free surface at release, turned from level by this (positive: higher on the
+    // downhill side), the pile poured below it. The experiment does not say how its piles lay; the 3D
+    // reference's pour leaves the octagon's and decagon's leaning downhill, which sets their release
+    // and first landing apart from a level pile's (docs/studies/pile-bulk.md). 2D grain model only.
+    double pile_tilt_deg = 0.0;
 };
 
 // The frame the grain engine steps in (moving_frame.h): the ramp's, or one moving down the track with
@@ -118,6 +123,11 @@ struct ClosureParams {
     // The discs' diameters uniform in d (1 +- this) instead of the material's spread: a 3D pile of equal
     // spheres is disordered, while equal discs in a plane lock into a crystal. Unset: the material's.
     std::optional<double> disc_size_spread;
+    // The pile's level holds min(1, r x this) of the inside, the fill's mass unchanged (r x inside volume
+    // x bulk density): the 3D box's pour packs looser than the 0.60 its grain count assumes, so its pile
+    // stands higher than r (0.47-0.48 of the inside at r = 0.375, docs/studies/first-impact-handover.md),
+    // where the 2D discs fill exactly r. More discs, each lighter, in the 3D pile's outline.
+    double bulk_factor = 1.0;
 };
 
 struct RunParams {

@@ -214,6 +214,10 @@ std::vector<SceneField> make_table() {
         Row("release.tilt_deg", T::number, member<&Scene::release, &ReleaseParams::tilt_deg>())
             .range(0.0, 30.0).unit("degrees").flag("--tilt", 10)
             .help("release tilt past balance"),
+        Row("release.pile_tilt_deg", T::number, member<&Scene::release, &ReleaseParams::pile_tilt_deg>())
+            .range(-30.0, 30.0).unit("degrees")
+            .help("2D grain model: the pile's free surface at release, turned from level by this (positive: "
+                  "higher on the downhill side)"),
 
         // --- fidelity (assets/fidelity.json)
         Row("fidelity.preset", T::preset, member<&Scene::fidelity, &FidelityParams::preset>())
@@ -293,6 +297,11 @@ std::vector<SceneField> make_table() {
             .help("2D grain model: the discs' diameters uniform in d (1 +- this) instead of "
                   "fill.material.diameter_spread (a 3D pile's disorder: equal discs in a plane lock into a "
                   "crystal, equal spheres in a box do not); null: the material's, no unit"),
+        Row("closure.bulk_factor", T::number, member<&Scene::closure, &ClosureParams::bulk_factor>())
+            .range(0.5, 2.0)
+            .help("2D grain model: the pile's level holds r times this of the inside (at most all of it), "
+                  "the fill's mass unchanged (a 3D pour packs looser than the bulk density assumes, so its "
+                  "pile stands higher), no unit"),
     };
 }
 

@@ -124,7 +124,7 @@ double estimated_grain_count(const Scene& s) {
     const ShellProperties p = shell_properties(s.shell);
     const double d = disc_diameter_m(s);
     // Hexagonal packing of discs covers pi / (2 sqrt 3) = 0.907 of the plane.
-    return 0.907 * s.fill.ratio * p.inner_area_m2 / (geom::kPi * d * d / 4.0);
+    return 0.907 * pile_bulk_share(s) * p.inner_area_m2 / (geom::kPi * d * d / 4.0);
 }
 
 void validate_scene(const Scene& s, const Where& where) {
