@@ -5,14 +5,23 @@ its JSON summary in RUN/run.json) and each 2D scene (`import polyroll`, the same
 seed): the grains at t = 0 in the shell's frame, the pile's level along the pour's "up" (the ramp's
 normal tilted by the slope, turned into the shell's frame at the pose the grains were poured in), and
 
-  bulk share   the share of the inside area (3D: of the inside volume) below the level, where the level
-               is the mean height of the top twelfth of the grains' centres plus a mean radius;
-  solid        the solid fraction below the level minus 3 grain diameters (spheres: volume over the
-               bulk volume; discs: area over the bulk area), the grains counted by their centres.
+  bulk_share_of_com  the share of the inside (area in 2D, volume in 3D) below the level of a pile of
+               uniform density whose centre of mass stands as high as the measured pile's: how high
+               the pile stands, robust to a rough top (the number the closure uses);
+  bulk_share   the share below the mean height of the top twelfth of the grains' centres plus a mean
+               radius (biased upwards where the top is rough: a 3D top ten grains deep has its peaks);
+  solid        the solid fraction below that level minus 3 grain diameters (spheres: volume over the
+               bulk volume; discs: area over the bulk area), the grains counted by their centres;
+  com_across_mm, level_pile_across_mm
+               how far downhill (across the pour's "up") the pile's centre of mass lies, and where a
+               level pile's with the same height of centre of mass would;
+  surface_tilt_deg
+               a line through the highest grain of each grain-wide column (noisy in 3D).
 
 The 3D box's grain count is r x inside volume x 0.60 (materials.json's packing_fraction) over a
-grain's volume; the 2D plan fills exactly r of the inside area. So bulk share / r is how much higher
-the 3D pile stands than the 2D one at the same fill mass: the value closure.bulk_factor stands for.
+grain's volume; the 2D plan fills exactly r of the inside area. So the 3D over the 2D bulk_share_of_com,
+scene by scene, is how much higher the 3D pile stands at the same fill mass: the value
+closure.bulk_factor stands for (docs/studies/pile-bulk.md).
 
 Usage (Debian's python3):
   PYTHONPATH=build/python python3 docs/studies/pile-bulk/pile_bulk.py OUT.csv RUN_FOLDER...
@@ -26,21 +35,6 @@ import sys
 
 def rot(x, y, a):
     return x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-
-
-def area_below(poly, up, level):
-    """Area of the polygon's part with dot(p, up) <= level (a half-plane clip)."""
-    out = []
-    for i in range(len(poly)):
-        p, q = poly[i], poly[(i + 1) % len(poly)]
-        hp, hq = p[0] * up[0] + p[1] * up[1] - level, q[0] * up[0] + q[1] * up[1] - level
-        if hp <= 0:
-            out.append(p)
-        if (hp < 0) != (hq < 0) and hp != hq:
-            t = hp / (hp - hq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return abs(sum(out[i][0] * out[(i + 1) % len(out)][1] - out[(i + 1) % len(out)][0] * out[i][1]
-                   for i in range(len(out)))) / 2
 
 
 def clipped(poly, up, level):
@@ -57,8 +51,15 @@ def clipped(poly, up, level):
     return out
 
 
-def centroid_height(poly, up, level):
-    """Height along up of the centroid of the part below level."""
+def area_below(poly, up, level):
+    """Area of the polygon's part with dot(p, up) <= level."""
+    pts = clipped(poly, up, level)
+    return abs(sum(pts[i][0] * pts[(i + 1) % len(pts)][1] - pts[(i + 1) % len(pts)][0] * pts[i][1]
+                   for i in range(len(pts)))) / 2
+
+
+def centroid_below(poly, up, level):
+    """Centroid (x, y) of the polygon's part with dot(p, up) <= level."""
     pts = clipped(poly, up, level)
     a = cx = cy = 0.0
     for i in range(len(pts)):
@@ -67,21 +68,20 @@ def centroid_height(poly, up, level):
         a += c
         cx += (x0 + x1) * c
         cy += (y0 + y1) * c
-    return (cx * up[0] + cy * up[1]) / (3 * a)
+    return cx / (3 * a), cy / (3 * a)
+
+
+def centroid_height(poly, up, level):
+    """Height along up of the centroid of the part below level."""
+    cx, cy = centroid_below(poly, up, level)
+    return cx * up[0] + cy * up[1]
 
 
 def centroid_across(poly, up, level):
     """Position across up (along (up_y, -up_x), downhill for a pile poured on the ramp) of the centroid
     of the part below level."""
-    pts = clipped(poly, up, level)
-    a = cx = cy = 0.0
-    for i in range(len(pts)):
-        (x0, y0), (x1, y1) = pts[i], pts[(i + 1) % len(pts)]
-        c = x0 * y1 - x1 * y0
-        a += c
-        cx += (x0 + x1) * c
-        cy += (y0 + y1) * c
-    return (cx * up[1] - cy * up[0]) / (3 * a)
+    cx, cy = centroid_below(poly, up, level)
+    return cx * up[1] - cy * up[0]
 
 
 def level_of_com(poly, up, com_height):
@@ -185,7 +185,7 @@ def main(argv):
     with open(argv[1], 'w', newline='') as f:
         w = csv.DictWriter(f, fieldnames=keys, extrasaction='ignore')
         w.writeheader()
-        w.writerows(rows)
+        w.writerows({k: ('%.5g' % v if isinstance(v, float) else v) for k, v in r.items()} for r in rows)
 
 
 if __name__ == '__main__':
