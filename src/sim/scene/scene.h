@@ -125,8 +125,9 @@ struct ClosureParams {
     std::optional<double> disc_size_spread;
     // The pile's level holds min(1, r x this) of the inside, the fill's mass unchanged (r x inside volume
     // x bulk density): the 3D box's pour packs looser than the 0.60 its grain count assumes, so its pile
-    // stands higher than r (0.47-0.48 of the inside at r = 0.375, docs/studies/first-impact-handover.md),
-    // where the 2D discs fill exactly r. More discs, each lighter, in the 3D pile's outline.
+    // stands higher than r (1.08-1.20 times the 2D pile's share of the inside in ten 3D pours,
+    // docs/studies/pile-bulk.md), where the 2D discs fill exactly r. More discs, each lighter, in the 3D
+    // pile's outline.
     double bulk_factor = 1.0;
 };
 
