@@ -77,11 +77,13 @@ TEST_CASE("the count follows from r and the packing: close packed, more grains f
             INFO(material << ", r = " << r << ": " << plan.grains.size() << " grains");
             CHECK(plan.grains.size() >= previous);
             previous = plan.grains.size();
-            // Grains cover no more than the bulk region, and, once the region is several grains
-            // across, a good share of it (discs pack at most 0.91 of a plane).
-            CHECK(grain_area <= 0.91 * r * p.inner_area_m2 + geom::kPi * 0.25 * 0.01 * 0.01);
-            if (r * p.inner_area_m2 > 40 * s.fill.material.diameter_m * s.fill.material.diameter_m)
-                CHECK(grain_area >= 0.45 * r * p.inner_area_m2);
+            // Grains cover no more than the bulk region (r of the inside, times the closure's bulk
+            // factor), and, once the region is several grains across, a good share of it (discs
+            // pack at most 0.91 of a plane).
+            const double bulk_area_m2 = pile_bulk_share(s) * p.inner_area_m2;
+            CHECK(grain_area <= 0.91 * bulk_area_m2 + geom::kPi * 0.25 * 0.01 * 0.01);
+            if (bulk_area_m2 > 40 * s.fill.material.diameter_m * s.fill.material.diameter_m)
+                CHECK(grain_area >= 0.45 * bulk_area_m2);
         }
     }
 }
@@ -168,7 +170,7 @@ TEST_CASE("the bundled materials: BBs and peas two grains per disc, rice in colu
     CHECK(test::scene_with(json::object()).fill.material.grains_per_disc == 2.0);
     CHECK(test::scene_with({{"fill", {{"material", "peas"}}}}).fill.material.grains_per_disc == 2.0);
     CHECK(!test::scene_with({{"fill", {{"material", "rice"}}}}).fill.material.grains_per_disc);
-    // The default scene: 124 discs of 2.6 mm where the columns were 21 of 6 mm (docs/physics.md).
+    // The default scene's discs are 2.6 mm where the columns were 6 mm (docs/physics.md).
     const Scene s = test::scene_with(json::object());
     CHECK(disc_diameter_m(s) == Approx(0.00257).epsilon(0.01));
     CHECK(test::scene_error_of(R"({"fill": {"grains_per_disc": 2}})").find("it moved to fill.material.grains_per_disc") !=
@@ -214,8 +216,7 @@ TEST_CASE("the one-layer study's scenes hold the 2D pile in a 3D box one grain d
 
 TEST_CASE("the closure scales the discs' friction and restitution in the 2D engine only", "[fill][closure]") {
     const Scene none = test::scene_with(json::object());
-    CHECK(none.closure.preset == "none");  // the bundled default
-    CHECK(none.closure.disc_friction_factor == 1.0);
+    CHECK(none.closure.disc_friction_factor == 1.0);  // the bundled default (pile-bulk) scales no contact
     const Scene s = test::scene_with({{"closure", {{"disc_friction_factor", 0.5}, {"wall_friction_factor", 0.25},
                                                    {"restitution_factor", 4.0}}}});
     auto w = build_world(s);
@@ -282,8 +283,7 @@ TEST_CASE("the closure's bulk factor raises the 2D pile's level, not its mass, a
           "[fill][closure]") {
     const geom::Vec2 up{0.0, 1.0};
     for (const double r : {0.25, 0.5}) {
-        const Scene none = test::scene_with({{"fill", {{"ratio", r}}}});
-        CHECK(none.closure.bulk_factor == 1.0);  // the bundled default: the level holds exactly r
+        const Scene none = test::scene_with({{"fill", {{"ratio", r}}}, {"closure", {{"bulk_factor", 1.0}}}});
         const Scene taller = test::scene_with({{"fill", {{"ratio", r}}}, {"closure", {{"bulk_factor", 1.15}}}});
         const ShellProperties p = shell_properties(none.shell);
         const FillPlan a = plan_fill(none, p, up), b = plan_fill(taller, p, up);
@@ -306,7 +306,7 @@ TEST_CASE("the closure's bulk factor raises the 2D pile's level, not its mass, a
         CHECK(top(b) > top(a));
     }
     // Full: the pile cannot stand higher than the lid; the level and the discs are those of no closure.
-    const Scene full = test::scene_with({{"fill", {{"ratio", 1.0}}}});
+    const Scene full = test::scene_with({{"fill", {{"ratio", 1.0}}}, {"closure", {{"bulk_factor", 1.0}}}});
     const Scene full_taller = test::scene_with({{"fill", {{"ratio", 1.0}}}, {"closure", {{"bulk_factor", 1.15}}}});
     const ShellProperties p = shell_properties(full.shell);
     const FillPlan a = plan_fill(full, p, up), b = plan_fill(full_taller, p, up);

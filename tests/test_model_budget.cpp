@@ -80,11 +80,13 @@ TEST_CASE("the budget keeps a cheap scene as asked and makes an expensive one ch
                                                      std::lround(grains / 10.0) * 10)));
         CHECK_THAT(said, !Catch::Contains("costs more than real time"));
         // Beside a lane that does step its grains, only that lane's are counted and offered.
-        const Scene half = test::with_model(
-            test::scene_with({{"shell", "hexagon-small"}, {"fill", {{"ratio", 0.5}, {"material", "bb"}}}}),
+        // A quarter-filled hexagon: its grains (about 130) fit the budget on their own (about 250).
+        const Scene quarter = test::with_model(
+            test::scene_with({{"shell", "hexagon-small"}, {"fill", {{"ratio", 0.25}, {"material", "bb"}}}}),
             Model::automatic);
-        const BudgetChoice race = offered_level({full_auto, half}, f, f.cost.engine_step_s, false);
-        CHECK(race.grains_asked == Approx(0.9 * estimated_grain_count(half)));
+        const BudgetChoice race = offered_level({full_auto, quarter}, f, f.cost.engine_step_s, false);
+        CHECK(!race.reduced());
+        CHECK(race.grains_asked == Approx(0.9 * estimated_grain_count(quarter)));
         CHECK(race.grains_on_hand_over == Approx(grains));
     }
     SECTION("a machine fast enough keeps the big scene as asked") {

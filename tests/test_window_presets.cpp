@@ -100,7 +100,7 @@ TEST_CASE("polyroll render --preset --lane and a one-lane preset draw one lane, 
     const fs::path base = presets_scratch("one");
     const std::string frames = " --time-limit 0.2 --size 320x180 --fps 10 --hold 0 --out ";
     REQUIRE(cli("render --preset race --lane 3" + frames + (base / "lane").string()).exit_code == 0);
-    REQUIRE(cli("render --sides 6 --fill 1 --material bb --angle 18" + frames + (base / "flags").string()).exit_code == 0);
+    REQUIRE(cli("render --sides 6 --fill 1 --material bb --angle 17.5" + frames + (base / "flags").string()).exit_code == 0);
     CHECK_FALSE(fs::exists(base / "lane" / "lane-1"));  // one lane: its files beside the frames
     CHECK(summary_of(base / "lane")["results"] == summary_of(base / "flags")["results"]);
     CHECK(test::read_file(base / "lane" / render::frame_file_name(3)) == test::read_file(base / "flags" / render::frame_file_name(3)));
@@ -142,7 +142,7 @@ TEST_CASE("a bad --preset or --lane is refused naming the value and what is allo
 TEST_CASE("polyroll presets lists the window's presets with a race's lanes and which surface takes which", "[presets][cli]") {
     const auto r = cli("presets");
     REQUIRE(r.exit_code == 0);
-    for (const char* words : {"race (3 lanes)", "lane 2: hexagon-small, r = 0.4 bb, 18 deg on air-track",
+    for (const char* words : {"race (3 lanes)", "lane 2: hexagon-small, r = 0.4 bb, 17.5 deg on air-track",
                               "polyroll-sandbox --preset NAME", "polyroll render --preset NAME --out DIR",
                               "polyroll run --preset NAME [--lane K]", "polyroll.run(preset=NAME, lane=K)", "?preset=NAME"})
         CHECK_THAT(r.out, Catch::Contains(words));
