@@ -181,7 +181,7 @@ TEST_CASE("dem3d: a saved Yade output is read and measured as the run that wrote
     CHECK(m.grains_inside == 241);
     CHECK(out.result.grains == 241);
     CHECK(out.result.fill_mass_kg == Approx(0.0481).epsilon(0.01));
-    CHECK(out.result.model_blocks["dem3d_engine"]["yade_version"] == "2023.02a");
+    CHECK(out.result.model_blocks.json()["dem3d_engine"]["yade_version"] == "2023.02a");
     CHECK(m.stop_time_s);
     CHECK(m.trajectory.front().position_m == 0.0);
     // Released on its vertex, the quarter-full pile lies below the shell's centre, near the axis

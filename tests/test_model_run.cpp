@@ -7,8 +7,10 @@
 #include <cmath>
 
 #include <box2d/box2d.h>
+#include <nlohmann/json.hpp>
 
 #include "sim/errors.h"
+#include "sim/model_blocks.h"
 #include "sim/model_registry.h"
 #include "sim/files/results_io.h"
 #include "sim/grains/simulation.h"
@@ -215,4 +217,27 @@ TEST_CASE("a filled shell handed over from the rigid model pours its grains movi
     }
     CHECK(b->measured().behaviour != Behaviour::diverged);
     CHECK(b->measured().grains_inside == b->grains());
+}
+
+// RunResult::model_blocks holds its JSON behind a pointer (model_blocks.h): it must still behave as a
+// value, as the json member it replaced did.
+TEST_CASE("model blocks: copies are independent, a moved-from one reads empty and can be written again") {
+    ModelBlocks a;
+    CHECK(a.json().is_object());
+    CHECK(a.json().empty());
+    a.json()["engine"]["units_per_m"] = 100.0;
+    ModelBlocks b = a;
+    b.json()["engine"]["units_per_m"] = 1000.0;
+    CHECK(a.json()["engine"]["units_per_m"] == 100.0);
+    ModelBlocks c = std::move(a);
+    CHECK(c.json()["engine"]["units_per_m"] == 100.0);
+    const ModelBlocks& moved_from = a;
+    CHECK(moved_from.json().empty());
+    a.json()["dem3d_engine"]["threads"] = 1;
+    CHECK(a.json().size() == 1);
+    c = b;
+    CHECK(c.json()["engine"]["units_per_m"] == 1000.0);
+    CHECK(b.json()["engine"]["units_per_m"] == 1000.0);
+    b = std::move(c);
+    CHECK(b.json()["engine"]["units_per_m"] == 1000.0);
 }

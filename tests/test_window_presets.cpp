@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/colour.h"
+#include "render/frame_encoder.h"
 #include "render/png_writer.h"
 #include "render/render_sequence.h"
 #include "render/scene_view.h"

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include "sim/dem3d/yade_process.h"
 #include "sim/errors.h"
@@ -28,7 +29,7 @@ void bench_dem3d(const Scene& base, std::optional<double> grain_run_s) {
     std::fflush(stdout);
     const RunResult r = run_scene(s);
     const double sim_s = r.measured.end_time_s;
-    const double cpu_s = r.model_blocks.contains("dem3d_engine") ? r.model_blocks.at("dem3d_engine").value("cpu_time_s", 0.0) : 0.0;
+    const double cpu_s = r.model_blocks.json().contains("dem3d_engine") ? r.model_blocks.json().at("dem3d_engine").value("cpu_time_s", 0.0) : 0.0;
     fmt::print("{:>7} {:>8} {:>9} {:>10} {:>14} {:>18} {:>12}  {}\n", "grains", "sim_s", "cpu_s", "wall_s",
                "cpu_per_sim_s", "cpu_ms_per_grain_s", "x_2d_grains", "behaviour");
     const double per_sim = sim_s > 0.0 ? cpu_s / sim_s : 0.0;

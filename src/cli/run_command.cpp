@@ -121,8 +121,8 @@ void print_summary(const RunResult& r, const std::string& out) {
     else
         fmt::print("  grains             none (empty shell)\n");
     // The 3D reference in a channel (its summary block, RunResult::model_blocks).
-    const auto yade = r.model_blocks.find("dem3d_engine");
-    if (yade != r.model_blocks.end() && yade->contains("channel")) {
+    const auto yade = r.model_blocks.json().find("dem3d_engine");
+    if (yade != r.model_blocks.json().end() && yade->contains("channel")) {
         const auto& c = yade->at("channel");
         fmt::print("  in the channel     moved {:.1f} mm across, yawed {:.2f} deg, tilted {:.2f} deg; touched its sides in "
                    "{} of {} steps (at most {:.3g} N)\n",

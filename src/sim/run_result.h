@@ -5,9 +5,8 @@
 
 #include <optional>
 
-#include <nlohmann/json.hpp>
-
 #include "sim/measurements.h"
+#include "sim/model_blocks.h"
 #include "sim/model_choice.h"
 #include "sim/scene/scene.h"
 #include "sim/geometry/shell_properties.h"
@@ -33,8 +32,8 @@ struct RunResult {
     // "shell". Box2D's "engine" (its length unit, step and speed cap; the reduced models integrate
     // their own equations and have none), the 3D reference's "dem3d_engine" (Yade's version, step, CPU
     // time, threads, the motion in a channel). The model's run fills its block; the core writes the
-    // blocks without knowing what they hold.
-    nlohmann::ordered_json model_blocks = nlohmann::ordered_json::object();
+    // blocks without knowing what they hold (model_blocks.h says why they sit behind a pointer).
+    ModelBlocks model_blocks;
     // Set for a run of `--model auto` (scene.run.model == automatic): which model ran, and why.
     std::optional<ModelChoice> model_choice;
 };

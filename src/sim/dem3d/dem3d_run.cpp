@@ -146,7 +146,7 @@ Dem3dOutput read_output(const Scene& scene, const fs::path& dir) {
                              {"side_impulse_N_s", c.value("side_impulse_N_s", 0.0)}};
     }
     const double time_step_s = engine["time_step_s"].get<double>();
-    r.model_blocks["dem3d_engine"] = engine;
+    r.model_blocks.json()["dem3d_engine"] = engine;
 
     TrackRules rules;
     rules.grains = r.grains;
@@ -164,7 +164,7 @@ Dem3dRun::Dem3dRun(const Scene& scene) : scene_(scene) {
     const int threads = run_script(script_input(scene, scene.run.sample_hz), dir.path());
     Dem3dOutput out = read_output(scene, dir.path());
     full_ = std::move(out.result);
-    full_.model_blocks["dem3d_engine"]["threads"] = threads;
+    full_.model_blocks.json()["dem3d_engine"]["threads"] = threads;
     rows_ = std::move(out.rows);
     frames_ = std::move(out.frames);
     outer_ = shell_outer_polygon_m(scene.shell);

@@ -76,7 +76,7 @@ json summary_json(const RunResult& r) {
     out["scene"] = scene_to_json(r.scene);
     out["results"] = results;
     out["shell"] = shell;
-    for (const auto& [key, block] : r.model_blocks.items()) out[key] = block;
+    for (const auto& [key, block] : r.model_blocks.json().items()) out[key] = block;
     return out;
 }
 

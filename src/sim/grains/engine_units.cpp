@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "sim/geometry/disc_size.h"
 #include "sim/grains/contact_values.h"
 #include "sim/geometry/geometry.h"

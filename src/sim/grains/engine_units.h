@@ -5,7 +5,7 @@
 // back to SI (m, kg, s) at the boundary. Mass and time keep their SI units inside the engine.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "sim/scene/scene.h"
 

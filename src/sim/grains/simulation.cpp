@@ -1,6 +1,8 @@
 // The grain model's run: see simulation.h.
 #include "sim/grains/simulation.h"
 
+#include <nlohmann/json.hpp>
+
 #include "sim/grains/tracker.h"
 #include "sim/grains/world_builder.h"
 
@@ -44,7 +46,7 @@ RunResult Simulation::result() const {
     r.settled = world_->settled;
     r.balance_correction_deg = world_->balance_correction_deg;
     r.steps = steps_;
-    r.model_blocks["engine"] = engine_block(world_->units, r.scene.fidelity);
+    r.model_blocks.json()["engine"] = engine_block(world_->units, r.scene.fidelity);
     return r;
 }
 
