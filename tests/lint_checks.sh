@@ -5,8 +5,8 @@
 #   2. clang-tidy with the checked-in .clang-tidy over every .cpp in src/, with that build's compile
 #      commands file by file and without its precompiled header; any finding is an error
 #      (WarningsAsErrors in .clang-tidy). A file costs 1 to 20 CPU-seconds: its checks walk every
-#      header it parses (nlohmann/json adds 3 to 5, CLI11 about 10: hence flags/command_flags.h),
-#      and the static analyser its own functions (docs/testing.md).
+#      header it parses (nlohmann/json adds about 9, CLI11 about 20: hence flags/command_flags.h
+#      and sim/model_blocks.h), and the static analyser its own functions (docs/testing.md).
 set -eu
 cd "$(dirname "$0")/.."
 t0=$(date +%s)

@@ -14,6 +14,9 @@ using namespace polyroll::sweep;
 
 namespace {
 
+// The closure column's runs: a closure other than none.
+bool has_closure(const PlannedRun& run) { return run.point.value("closure.preset", std::string("none")) != "none"; }
+
 // How far below the 2D model's the made-up thresholds of the other columns lie (degrees).
 struct Offsets {
     double closure_deg = 1.0;
@@ -26,8 +29,8 @@ struct Offsets {
 std::string behaviour(const PlannedRun& run, const Offsets& o) {
     const bool hexagon = run.point.at("shell.preset") == "hexagon-small";
     const double offset_deg = run.point.at("run.model") == "dem3d" ? o.reference_deg
-                              : run.point.contains("closure.preset") ? o.closure_deg
-                                                                     : 0.0;
+                              : has_closure(run)                       ? o.closure_deg
+                                                                       : 0.0;
     const double first = (hexagon ? 18.0 : 13.0) - offset_deg;
     const double roll = (hexagon ? 20.0 : 15.0) - offset_deg;
     const double angle = run.point.at("ramp.angle_deg").get<double>();
@@ -40,7 +43,7 @@ TableFile made_up_table(const SweepPlan& plan, const Offsets& o = {}) {
     t.header = {"index", "status", "behaviour", "distance_m", "terminal_velocity_m_s", "wall_time_s"};
     for (const PlannedRun& run : plan.runs) {
         const bool is_3d = run.point.at("run.model") == "dem3d";
-        const bool closure = run.point.contains("closure.preset");
+        const bool closure = has_closure(run);
         const std::string b = behaviour(run, o);
         const std::string distance = b == "stopped_at_first_impact" ? "0.03" : b == "stopped" ? "1" : "2.54";
         const std::string vt = b != "rolled_to_end" ? "" : is_3d ? "0.55" : closure ? "0.52" : "0.5";
@@ -70,25 +73,37 @@ SweepPlan two_column_plan(const nlohmann::ordered_json& base) {
 
 }  // namespace
 
-TEST_CASE("the cross-section plan adds the closure column and keeps the 2D and 3D runs' ids",
+TEST_CASE("the cross-section plan names each 2D column's closure and keeps the 3D runs' ids",
           "[sweep][cross-section]") {
     const SweepPlan plan = cross_section_plan();
     REQUIRE(plan.runs.size() == 2 * 3 * 7 * 3 * 2);  // shells x fills x angles x columns x seeds
     std::set<std::string> ids;
-    int closure_runs = 0;
+    int without = 0, with_closure = 0;
     for (const PlannedRun& run : plan.runs) {
         ids.insert(run.id);
-        if (!run.point.contains("closure.preset")) continue;
-        ++closure_runs;
-        CHECK(run.point.at("closure.preset") == "pile-disorder");
-        CHECK(run.point.at("run.model") == "grains");
+        if (run.point.at("run.model") == "dem3d") {
+            CHECK_FALSE(run.point.contains("closure.preset"));
+            continue;
+        }
+        // Each 2D run names its closure, so a new default changes neither column.
+        REQUIRE(run.point.contains("closure.preset"));
+        const std::string closure = run.point.at("closure.preset");
+        CHECK((closure == "none" || closure == "pile-bulk"));
+        ++(closure == "none" ? without : with_closure);
     }
-    CHECK(closure_runs == 84);
+    CHECK(without == 84);
+    CHECK(with_closure == 84);
     CHECK(ids.size() == plan.runs.size());
-    // The runs made before the column was added are the same runs: a folder of them is still theirs.
+    // The 3D runs made before the closure columns are the same runs: a folder of them is still theirs.
     const SweepPlan old = two_column_plan(plan.base);
     REQUIRE(old.runs.size() == 168);
-    for (const PlannedRun& run : old.runs) CHECK(ids.count(run.id) == 1);
+    int old_3d = 0;
+    for (const PlannedRun& run : old.runs) {
+        if (run.point.at("run.model") != "dem3d") continue;
+        ++old_3d;
+        CHECK(ids.count(run.id) == 1);
+    }
+    CHECK(old_3d == 84);
 }
 
 TEST_CASE("the cross-section analysis reads thresholds, gaps and costs from the table", "[sweep][cross-section]") {
@@ -96,7 +111,8 @@ TEST_CASE("the cross-section analysis reads thresholds, gaps and costs from the 
     const CrossSectionReport rep = analyse_cross_section(plan, made_up_table(plan), "/nonexistent-cross-section");
     INFO(rep.markdown);
     check_contains(rep.markdown, {
-        "**2D+closure**, the same with the closure `pile-disorder`",
+        "**2D**, the grain model at the `standard` preset without a closure",
+        "**2D+closure**, the same with the closure `pile-bulk`",
         // Each scene's thresholds (2D, 2D+closure, 3D): the interval each lies in, and 3D minus each 2D
         // column between their midpoints.
         "| scene | first impact 2D (deg) | 2D+closure | 3D | 3D - 2D | 3D - 2D+closure | sustained rolling 2D (deg) | "
@@ -128,7 +144,7 @@ TEST_CASE("the cross-section analysis reads thresholds, gaps and costs from the 
                                                "first_impact_kept\n"));
     check_contains(rep.maps_csv, {
         "hexagon-small,6,0.25,dem3d,17,1,stopped,1,\n",
-        "hexagon-small,6,0.25,grains+pile-disorder,17,2,stopped,1,\n",
+        "hexagon-small,6,0.25,grains+pile-bulk,17,2,stopped,1,\n",
         "hexagon-small,6,0.25,grains,17,1,stopped_at_first_impact,0.03,\n",
     });
 }

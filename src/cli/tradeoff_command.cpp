@@ -117,8 +117,8 @@ Action add_tradeoff_command(Command& app) {
     sub.footer(
         "Runs a fixed set of scenes with every model and preset (resumable: the same command continues),\n"
         "compares each with the converged reference and writes tradeoff.md, points.csv and tradeoff.png.\n"
-        "With --dem3d, the 2D cross-section against the 3D reference instead: the 2D grain model, the same\n"
-        "with the pile-disorder closure, and the 3D reference (252 runs, a third of them in Yade: 23 minutes\n"
+        "With --dem3d, the 2D cross-section against the 3D reference instead: the 2D grain model without a\n"
+        "closure, the same with the default pile-bulk closure, and the 3D reference (252 runs, a third of them in Yade: 23 minutes\n"
         "measured on 2 idle cores, 26 on busy ones, almost all of it the 3D runs; docs/guide.md): cross-section.md,\n"
         "cross-section.csv and cross-section.png.\n"
         "Examples:\n"
@@ -126,7 +126,7 @@ Action add_tradeoff_command(Command& app) {
         "  polyroll tradeoff --dem3d --out docs/tradeoff");
     sub.add_option("--out", a->out, "folder for tradeoff.md, points.csv and tradeoff.png (default runs/tradeoff)");
     sub.add_flag("--dem3d", a->dem3d,
-                 "the 2D grain model, with and without the pile-disorder closure, against the 3D reference (Yade) "
+                 "the 2D grain model, with and without the default pile-bulk closure, against the 3D reference (Yade) "
                  "instead");
     sub.add_option("--work", a->work, "sweep folder for the runs (default OUT/sweep)");
     sub.add_option("--jobs,-j", a->jobs, "runs at a time (default: all cores)").check(Range(1, 1024));

@@ -160,7 +160,7 @@ def cross_section_models(rows):
     then the 3D reference; only those the csv holds (an older csv has no closure column)."""
     present = {r["model"] for r in rows}
     closures = sorted(m for m in present if m.startswith("grains+"))
-    models = [("grains", "2D grain model (standard)")]
+    models = [("grains", "2D grain model (standard, no closure)")]
     models += [(m, f"2D grain model, closure {m.split('+', 1)[1]}") for m in closures]
     models.append(("dem3d", "3D reference (Yade)"))
     return [(m, title) for m, title in models if m in present]

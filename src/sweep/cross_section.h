@@ -1,5 +1,5 @@
-// What the 2D cross-section costs in accuracy: the grain model (2D, at the standard preset), the same
-// with the pile-disorder closure, and the 3D reference (--model dem3d, Yade) on the small hexagon and
+// What the 2D cross-section costs in accuracy: the grain model (2D, at the standard preset) without a
+// closure, the same with the bundled pile-bulk closure, and the 3D reference (--model dem3d, Yade) on the small hexagon and
 // octagon a quarter, three eighths and half full of BBs, at angles around each scene's thresholds, two
 // seeds each. Per scene: each column's behaviour and distance at every angle, the first-impact and
 // sustained-rolling thresholds, the energy kept at the first impact (read kKineticDelay_s after the
@@ -18,7 +18,7 @@ SweepPlan cross_section_plan();
 
 struct CrossSectionReport {
     std::string markdown;  // cross-section.md
-    // One row per run: scene, model (its column: grains, grains+pile-disorder or dem3d), angle, seed,
+    // One row per run: scene, model (its column: grains, grains+pile-bulk or dem3d), angle, seed,
     // behaviour, distance (the figure's data).
     std::string maps_csv;
 };
