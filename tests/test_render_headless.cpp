@@ -16,6 +16,8 @@
 #include "render/font.h"
 #include "render/frame_builder.h"
 #include "render/frame_encoder.h"
+#include "render/gl_renderer.h"
+#include "render/offscreen_osmesa.h"
 #include "render/png_writer.h"
 #include "render/render_sequence.h"
 #include "render/snapshot.h"
@@ -126,6 +128,44 @@ TEST_CASE("a headless render writes the expected PNG frames with the shell where
     // (seen on the last moving frame: the held ones carry the outcome banner there).
     const DecodedPng moving = read_png(dir / frame_file_name(res.run_frames));
     CHECK(distance(pixel(moving, 320, 120), palette::background) == 0);
+}
+
+TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one", "[render]") {
+    // The renderer draws a long run of discs sharing a fill and an outline with the colours as uniforms
+    // (gl_renderer.cpp, kOneColourRunMin), shorter runs with a colour per point. An invisible disc in
+    // the middle (alpha 0: blending leaves every pixel as it is) cuts the run in two halves too short
+    // for the uniforms, so the second list is drawn the other way; the pixels must not change.
+    constexpr int kW = 72, kH = 48;
+    OffscreenContext context(kW, kH);
+    GlRenderer gl;
+    DrawList one;
+    one.width_px = kW;
+    one.height_px = kH;
+    one.background = palette::background;
+    Layer& layer = one.new_layer();
+    const Rgba fill = rgb8(200, 160, 60), outline = rgb8(90, 60, 20);
+    for (int i = 0; i < 40; ++i) {
+        const int row = i / 10, column = i % 10;
+        const Px centre{4.0f + 6.3f * static_cast<float>(column), 5.0f + 9.7f * static_cast<float>(row)};
+        layer.shapes.push_back(disc(centre, 2.1f + 0.4f * static_cast<float>(i % 3), fill, Tag::grain, 0.7f, outline));
+    }
+    DrawList split = one;
+    split.layers[0].shapes.insert(split.layers[0].shapes.begin() + 20,
+                                  disc({30.0f, 20.0f}, 3.0f, Rgba{1.0f, 0.0f, 0.0f, 0.0f}, Tag::grain, 0.7f,
+                                       Rgba{0.0f, 0.0f, 1.0f, 0.0f}));
+    const auto drawn = [&](const DrawList& list) {
+        gl.draw(list);
+        std::vector<std::uint8_t> rgba(static_cast<size_t>(kW) * kH * 4);
+        context.read_rgba_bottom_up(rgba.data());
+        return rgba;
+    };
+    const std::vector<std::uint8_t> a = drawn(one), b = drawn(split);
+    // The discs are there: most of their pixels are not the background.
+    int covered = 0;
+    for (size_t i = 0; i < a.size(); i += 4)
+        if (a[i] != static_cast<std::uint8_t>(std::lround(palette::background.r * 255.0f))) ++covered;
+    CHECK(covered > 400);
+    CHECK(a == b);
 }
 
 TEST_CASE("two renders of the same scene give byte-identical frames", "[render]") {

@@ -342,9 +342,12 @@ private:
         int fb_w = 0, fb_h = 0;
         win_.framebuffer_size(fb_w, fb_h);
         const float ratio = win_.pixel_ratio();
-        // The scene fills the rest, below the status band (so it never covers a ramp's start).
-        const render::PxRect area{L.panel_w * ratio, top * ratio, std::max(1.0f, (L.width - L.panel_w) * ratio),
-                                  std::max(1.0f, (L.height - L.plots_h - top) * ratio)};
+        // The scene fills the rest, below the status band (so it never covers a ramp's start), a seam
+        // away from the panels beside it (panel_seam_px).
+        const float seam = panel_seam_px(ratio);
+        const render::PxRect area{L.panel_w * ratio + seam, top * ratio + seam,
+                                  std::max(1.0f, (L.width - L.panel_w) * ratio - seam),
+                                  std::max(1.0f, (L.height - L.plots_h - top) * ratio - 2.0f * seam)};
         handle_mouse(area, ratio);
         const double s0 = now_s();
         take_snapshots();

@@ -643,6 +643,12 @@ void draw_plot(const char* title, const char* unit, const PlotRange& r, const st
 }  // namespace
 
 // [SECTION] Layout: where the panel, the scene and the readouts strip go
+float panel_seam_px(float pixel_ratio) {
+    // Half the border and the antialiasing pixel, whole; one more for the panels' copy, which counts a
+    // window as reaching a pixel beyond its vertices (panel_cache.cpp).
+    return std::ceil((0.5f * ImGui::GetStyle().WindowBorderSize + 1.0f) * pixel_ratio) + 1.0f;
+}
+
 UiLayout ui_layout(float width, float height, float ui_scale) {
     UiLayout L;
     L.width = width;

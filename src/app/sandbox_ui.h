@@ -50,6 +50,12 @@ struct UiLayout {
     float panel_w = 0, plots_h = 0, width = 0, height = 0;
 };
 UiLayout ui_layout(float width, float height, float ui_scale);
+// The framebuffer pixels kept between the panels and the scene beside them (left, above, below). A
+// window's border is stroked across its edge, half outside it, with a pixel of antialiasing beyond:
+// where the scene began at the edge, every frame's panels blended their borders over the scene's
+// edge rows, so the scene had to be drawn again there each frame, three more regions of a frame drawn
+// where it changed (docs/sandbox.md). Needs the current ImGui style.
+float panel_seam_px(float pixel_ratio);
 
 
 // What the panels laid out this frame, in window coordinates, for the layout checks

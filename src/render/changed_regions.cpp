@@ -99,19 +99,26 @@ void add_region(std::vector<ClipRect>& regions, const ClipRect& r) {
 
 void hold_whole_discs(const DrawList& list, std::vector<ClipRect>& regions) {
     const ClipRect frame{0, 0, list.width_px, list.height_px};
+    // Each disc's pixels, worked out once: a region may take several passes over all of them, and a
+    // big pile has thousands (measured on every shape in every pass, this and the renderer's culling
+    // were a fifth of the window's UI thread in hexagon-large-bb: docs/sandbox.md).
+    std::vector<ClipRect> discs;
+    for (const Layer& layer : list.layers)
+        for (const Shape& s : layer.shapes) {
+            if (s.kind != ShapeKind::capsule || !(s.a == s.b)) continue;
+            const ClipRect px = intersection(pixels_touched(s), frame);
+            if (!px.empty()) discs.push_back(px);
+        }
     std::vector<ClipRect> grown;
     for (ClipRect r : regions) {
         // Each disc taken in may reach others: repeat until none is added.
         for (bool more = true; more;) {
             more = false;
-            for (const Layer& layer : list.layers)
-                for (const Shape& s : layer.shapes) {
-                    if (s.kind != ShapeKind::capsule || !(s.a == s.b)) continue;
-                    const ClipRect px = intersection(pixels_touched(s), frame);
-                    if (px.empty() || !overlap(px, r) || intersection(px, r) == px) continue;
-                    r = unite(r, px);
-                    more = true;
-                }
+            for (const ClipRect& px : discs) {
+                if (!overlap(px, r) || intersection(px, r) == px) continue;
+                r = unite(r, px);
+                more = true;
+            }
         }
         add_region(grown, r);
     }

@@ -28,22 +28,36 @@ public:
     void draw(const DrawList& list, const std::vector<ClipRect>& regions);
 
 private:
+    // The pixels each item of a layer can touch (changed_regions.h), in the layer's order.
+    struct LayerPixels {
+        std::vector<ClipRect> triangles, shapes, glyphs;
+    };
     void draw_in(const DrawList& list, const std::vector<ClipRect>* regions);
     // Clears `region` and draws the layers there; `whole_frame`: no scissor for the clear or for
-    // layers without a clip (the list has no bounds and the region is the frame).
-    void draw_region(const DrawList& list, const ClipRect& region, bool whole_frame);
+    // layers without a clip (the list has no bounds and the region is the frame). `pixels`: the
+    // layers' items' pixels, measured once for several regions (none: measured here as needed).
+    void draw_region(const DrawList& list, const ClipRect& region, bool whole_frame,
+                     const std::vector<LayerPixels>* pixels);
     void upload_atlas(const FontAtlas& atlas);
     // Whether a shape is drawn as a point sprite: a disc no wider than GL's largest point, centred in the frame.
     bool as_point(const Shape& s, float width_px, float height_px) const;
-    void draw_discs(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px, float height_px);
-    void draw_shapes(const std::vector<Shape>& shapes, size_t begin, size_t end, float width_px, float height_px);
+    // Discs as point sprites, in order: long runs of one fill and outline with the colours as uniforms,
+    // the rest with a colour per point.
+    void draw_discs(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px, float height_px);
+    void draw_discs_one_colour(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
+                               float height_px);
+    void draw_discs_coloured(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
+                             float height_px);
+    void draw_shapes(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
+                     float height_px);
 
-    unsigned tri_program_ = 0, shape_program_ = 0, glyph_program_ = 0, disc_program_ = 0;
-    unsigned tri_vao_ = 0, shape_vao_ = 0, glyph_vao_ = 0, disc_vao_ = 0;
-    unsigned tri_vbo_ = 0, quad_vbo_ = 0, shape_vbo_ = 0, glyph_vbo_ = 0, disc_vbo_ = 0;
+    unsigned tri_program_ = 0, shape_program_ = 0, glyph_program_ = 0, disc_program_ = 0, one_colour_program_ = 0;
+    unsigned tri_vao_ = 0, shape_vao_ = 0, glyph_vao_ = 0, disc_vao_ = 0, one_colour_vao_ = 0;
+    unsigned tri_vbo_ = 0, quad_vbo_ = 0, shape_vbo_ = 0, glyph_vbo_ = 0, disc_vbo_ = 0, one_colour_vbo_ = 0;
     unsigned atlas_texture_ = 0;
     std::uint64_t uploaded_atlas_ = 0;  // FontAtlas::id() of the texture
     int tri_viewport_ = -1, shape_viewport_ = -1, glyph_viewport_ = -1, glyph_sampler_ = -1, disc_viewport_ = -1;
+    int one_colour_viewport_ = -1, one_colour_fill_ = -1, one_colour_outline_ = -1;  // discs of one fill and outline
     float max_point_px_ = 1.0f;  // GL's largest point sprite
 };
 

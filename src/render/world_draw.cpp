@@ -123,13 +123,20 @@ void draw_shell_and_grains(const Snapshot& s, const Camera& cam, const WorldStyl
     std::vector<const GrainState*> order;
     order.reserve(s.grains.size());
     for (const GrainState& g : s.grains) order.push_back(&g);
-    std::stable_sort(order.begin(), order.end(), [](const GrainState* a, const GrainState* b) { return a->depth > b->depth; });
+    // 2D grains have no depth (all -1): their order is the list's, with no sort a frame.
+    if (std::any_of(s.grains.begin(), s.grains.end(), [](const GrainState& g) { return g.depth >= 0.0; }))
+        std::stable_sort(order.begin(), order.end(),
+                         [](const GrainState* a, const GrainState* b) { return a->depth > b->depth; });
+    // The material's colour looked up once, not for each of a big pile's grains.
+    const Rgba material = material_colour(s.material);
     for (const GrainState* g : order) {
         const Px c = cam.to_px(ramp_to_world(g->position_m, s.ramp_angle_deg));
         const float r = cam.to_px_length(g->radius_m);
         // Small grains get a thin outline so neighbours stay apart without turning into dark dots.
         const float outline = std::min(1.2f * st.unit, 0.2f * r);
-        Rgba fill = grain_colour(s, *g, st.grain_colouring, st.colour_speed_max_m_s);
+        Rgba fill = st.grain_colouring == GrainColouring::speed
+                        ? grain_colour(s, *g, st.grain_colouring, st.colour_speed_max_m_s)
+                        : material;
         if (g->depth >= 0.0) fill = shade(fill, static_cast<float>(1.0 - 0.55 * g->depth));
         out.shapes.push_back(disc(c, r, fill, Tag::grain, outline, palette::grain_outline));
     }
