@@ -488,7 +488,7 @@ TEST_CASE("regions grow to hold every disc they reach, whole", "[render]") {
     for (int i = 0; i < 5; ++i) layer.shapes.push_back(disc({100.0f + 6.0f * static_cast<float>(i), 100.0f}, 3.0f, rgb8(1, 2, 3)));
     layer.shapes.push_back(disc({300, 250}, 3.0f, rgb8(1, 2, 3)));  // far away: not taken in
     std::vector<ClipRect> regions{{99, 99, 3, 3}};
-    hold_whole_discs(l, regions);
+    hold_whole_discs(l, pixels_of(l), regions);
     REQUIRE(regions.size() == 1);
     for (int i = 0; i < 5; ++i) {
         const ClipRect px = pixels_touched(layer.shapes[static_cast<std::size_t>(i)]);

@@ -449,15 +449,17 @@ private:
         // Where the back buffer still holds the last frame, the scene is drawn only where its list
         // changed, and where the panels drew over it last frame (render/changed_regions.h).
         scene_changed_.reset();
+        std::vector<render::LayerPixels> pixels;  // measured once for the regions' growth and the drawing
         if (drawn_ && win_.holds_last_frame()) {
             scene_changed_ = render::changed_regions(*drawn_, list);
             if (scene_changed_) {
                 for (const render::ClipRect& r : win_.panels_in_scene()) render::add_region(*scene_changed_, r);
-                render::hold_whole_discs(list, *scene_changed_);
+                pixels = render::pixels_of(list);
+                render::hold_whole_discs(list, pixels, *scene_changed_);
             }
         }
         const double t1 = now_s();
-        if (scene_changed_) gl_.draw(list, *scene_changed_);
+        if (scene_changed_) gl_.draw(list, *scene_changed_, pixels);
         else gl_.draw(list);
         // For --bench: the share of the scene's pixels drawn (regions may overlap: at most all).
         double share = 1.0;

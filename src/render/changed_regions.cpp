@@ -97,16 +97,30 @@ void add_region(std::vector<ClipRect>& regions, const ClipRect& r) {
     }
 }
 
-void hold_whole_discs(const DrawList& list, std::vector<ClipRect>& regions) {
+std::vector<LayerPixels> pixels_of(const DrawList& list) {
+    std::vector<LayerPixels> pixels(list.layers.size());
+    for (size_t i = 0; i < list.layers.size(); ++i) {
+        const Layer& layer = list.layers[i];
+        LayerPixels& px = pixels[i];
+        px.triangles.reserve(layer.triangles.size());
+        for (const Triangle& t : layer.triangles) px.triangles.push_back(pixels_touched(t));
+        px.shapes.reserve(layer.shapes.size());
+        for (const Shape& s : layer.shapes) px.shapes.push_back(pixels_touched(s));
+        px.glyphs.reserve(layer.glyphs.size());
+        for (const GlyphQuad& g : layer.glyphs) px.glyphs.push_back(pixels_touched(g));
+    }
+    return pixels;
+}
+
+void hold_whole_discs(const DrawList& list, const std::vector<LayerPixels>& pixels, std::vector<ClipRect>& regions) {
     const ClipRect frame{0, 0, list.width_px, list.height_px};
-    // Each disc's pixels, worked out once: a region may take several passes over all of them, and a
-    // big pile has thousands (measured on every shape in every pass, this and the renderer's culling
-    // were a fifth of the window's UI thread in hexagon-large-bb: docs/sandbox.md).
+    // The discs' pixels inside the frame, gathered once: a region may take several passes over them.
     std::vector<ClipRect> discs;
-    for (const Layer& layer : list.layers)
-        for (const Shape& s : layer.shapes) {
+    for (size_t i = 0; i < list.layers.size(); ++i)
+        for (size_t j = 0; j < list.layers[i].shapes.size(); ++j) {
+            const Shape& s = list.layers[i].shapes[j];
             if (s.kind != ShapeKind::capsule || !(s.a == s.b)) continue;
-            const ClipRect px = intersection(pixels_touched(s), frame);
+            const ClipRect px = intersection(pixels[i].shapes[j], frame);
             if (!px.empty()) discs.push_back(px);
         }
     std::vector<ClipRect> grown;

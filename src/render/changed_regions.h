@@ -30,12 +30,22 @@ bool overlap(const ClipRect& a, const ClipRect& b);
 // frame (size, background, bounds, font atlas, layers or their clips): draw it whole.
 std::optional<std::vector<ClipRect>> changed_regions(const DrawList& before, const DrawList& now);
 
+// The pixels each item of each layer can touch (pixels_touched), in the list's order. Measured once a
+// frame for all that ask (the regions' growth and the renderer's culling): a big pile has thousands
+// of discs, and measured again in every pass and region they were a fifth of the window's UI thread
+// in hexagon-large-bb (docs/sandbox.md).
+struct LayerPixels {
+    std::vector<ClipRect> triangles, shapes, glyphs;
+};
+std::vector<LayerPixels> pixels_of(const DrawList& list);
+
 // Grows each region until every disc that reaches into it lies in it whole, then merges them again.
 // llvmpipe keeps a point sprite to the scissor only block by block (4x4 pixels): a sprite crossing a
 // region's edge may be blended again onto a row just outside it, over the last frame's pixel there,
 // which a whole redraw would not do (measured: one row of 17 pixels darker after the stops-abruptly
 // preset's pile came to rest). With no sprite crossing an edge, nothing is drawn outside the regions.
-void hold_whole_discs(const DrawList& list, std::vector<ClipRect>& regions);
+// `pixels`: pixels_of(list).
+void hold_whole_discs(const DrawList& list, const std::vector<LayerPixels>& pixels, std::vector<ClipRect>& regions);
 
 // Adds `r` to `regions`, merging rectangles where one rectangle around both is little larger than
 // the two (the renderer sends each region the primitives that reach it, so fewer, slightly larger

@@ -410,11 +410,15 @@ void GlRenderer::draw_shapes(const std::vector<const Shape*>& shapes, size_t beg
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
 }
 
-void GlRenderer::draw(const DrawList& list) { draw_in(list, nullptr); }
+void GlRenderer::draw(const DrawList& list) { draw_in(list, nullptr, nullptr); }
 
-void GlRenderer::draw(const DrawList& list, const std::vector<ClipRect>& regions) { draw_in(list, &regions); }
+void GlRenderer::draw(const DrawList& list, const std::vector<ClipRect>& regions,
+                      const std::vector<LayerPixels>& pixels) {
+    draw_in(list, &regions, &pixels);
+}
 
-void GlRenderer::draw_in(const DrawList& list, const std::vector<ClipRect>* regions) {
+void GlRenderer::draw_in(const DrawList& list, const std::vector<ClipRect>* regions,
+                         const std::vector<LayerPixels>* pixels) {
     const int w = list.width_px, h = list.height_px;
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
@@ -429,24 +433,12 @@ void GlRenderer::draw_in(const DrawList& list, const std::vector<ClipRect>* regi
     const ClipRect frame = list.bounds ? *list.bounds : ClipRect{0, 0, w, h};
     if (!regions) {
         // The whole list: the clear scissored to its bounds (where it has them), each layer to its clip.
-        draw_region(list, frame, !list.bounds, nullptr);
+        // Culled to the bounds where there are some.
+        draw_region(list, frame, !list.bounds, list.bounds ? pixels_of(list) : std::vector<LayerPixels>{});
     } else {
-        // Each item's pixels worked out once for all the regions (a big pile's thousands of discs
-        // were measured again for every region).
-        std::vector<LayerPixels> pixels(list.layers.size());
-        for (size_t i = 0; i < list.layers.size(); ++i) {
-            const Layer& layer = list.layers[i];
-            LayerPixels& px = pixels[i];
-            px.triangles.reserve(layer.triangles.size());
-            for (const Triangle& t : layer.triangles) px.triangles.push_back(pixels_touched(t));
-            px.shapes.reserve(layer.shapes.size());
-            for (const Shape& sh : layer.shapes) px.shapes.push_back(pixels_touched(sh));
-            px.glyphs.reserve(layer.glyphs.size());
-            for (const GlyphQuad& g : layer.glyphs) px.glyphs.push_back(pixels_touched(g));
-        }
         for (const ClipRect& r : *regions) {
             const ClipRect region = intersection(r, frame);
-            if (!region.empty()) draw_region(list, region, false, &pixels);
+            if (!region.empty()) draw_region(list, region, false, *pixels);
         }
     }
     glDisable(GL_SCISSOR_TEST);
@@ -456,7 +448,7 @@ void GlRenderer::draw_in(const DrawList& list, const std::vector<ClipRect>* regi
 }
 
 void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool whole_frame,
-                             const std::vector<LayerPixels>* pixels) {
+                             const std::vector<LayerPixels>& pixels) {
     const int h = list.height_px;
     // GL counts rows from the bottom.
     const auto scissor = [h](const ClipRect& c) { glScissor(c.x, h - c.y - c.height, c.width, c.height); };
@@ -485,11 +477,10 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
             glEnable(GL_SCISSOR_TEST);
             scissor(clip);
         }
-        // Whether the layer's item `i` of a kind reaches the clip: its pixels measured once for all
-        // regions where given, else now.
-        const auto reaches = [&](const auto& item, size_t i, const std::vector<ClipRect> LayerPixels::*kind) {
-            if (!cull) return true;
-            return overlap(pixels ? ((*pixels)[li].*kind)[i] : pixels_touched(item), clip);
+        // Whether the layer's item `i` of a kind reaches the clip, by its pixels as pixels_of measured
+        // them (only read when culling: a whole frame without bounds has none).
+        const auto reaches = [&](const std::vector<ClipRect> LayerPixels::*kind, size_t i) {
+            return !cull || overlap((pixels[li].*kind)[i], clip);
         };
         tris.clear();
         // Decided by all of the layer's triangles, culled or not, so that a region blends as the whole
@@ -498,7 +489,7 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
                                         [](const Triangle& t) { return t.colour.a >= 1.0f; });
         for (size_t i = 0; i < layer.triangles.size(); ++i) {
             const Triangle& t = layer.triangles[i];
-            if (!reaches(t, i, &LayerPixels::triangles)) continue;
+            if (!reaches(&LayerPixels::triangles, i)) continue;
             for (const Px& p : {t.a, t.b, t.c}) {
                 TriVertex v{p.x, p.y, {}};
                 put(v.colour, t.colour);
@@ -520,7 +511,7 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
         }
         shapes.clear();
         for (size_t i = 0; i < layer.shapes.size(); ++i)
-            if (reaches(layer.shapes[i], i, &LayerPixels::shapes)) shapes.push_back(&layer.shapes[i]);
+            if (reaches(&LayerPixels::shapes, i)) shapes.push_back(&layer.shapes[i]);
         // The shapes in order, each run of discs that fit a point sprite as points, the rest as quads.
         for (size_t i = 0; i < shapes.size();) {
             const bool points = as_point(*shapes[i], fw, fh);
@@ -534,7 +525,7 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
         if (list.atlas)
             for (size_t i = 0; i < layer.glyphs.size(); ++i) {
                 const GlyphQuad& g = layer.glyphs[i];
-                if (!reaches(g, i, &LayerPixels::glyphs)) continue;
+                if (!reaches(&LayerPixels::glyphs, i)) continue;
                 GlyphInstance in{{g.p0.x, g.p0.y, g.p1.x, g.p1.y}, {g.u0, g.v0, g.u1, g.v1}, {}};
                 put(in.colour, g.colour);
                 glyphs.push_back(in);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/changed_regions.h"
 #include "render/draw_list.h"
 
 namespace polyroll::render {
@@ -24,20 +25,17 @@ public:
     void draw(const DrawList& list);
     // The same, only inside `regions` (cut to the list's bounds): the framebuffer holds the last
     // frame elsewhere, and these are where this list differs from it (changed_regions.h). Each region
-    // is cleared and gets, in the list's order, every primitive that reaches it.
-    void draw(const DrawList& list, const std::vector<ClipRect>& regions);
+    // is cleared and gets, in the list's order, every primitive that reaches it. `pixels`:
+    // pixels_of(list), measured once for the regions and for this.
+    void draw(const DrawList& list, const std::vector<ClipRect>& regions, const std::vector<LayerPixels>& pixels);
 
 private:
-    // The pixels each item of a layer can touch (changed_regions.h), in the layer's order.
-    struct LayerPixels {
-        std::vector<ClipRect> triangles, shapes, glyphs;
-    };
-    void draw_in(const DrawList& list, const std::vector<ClipRect>* regions);
+    void draw_in(const DrawList& list, const std::vector<ClipRect>* regions, const std::vector<LayerPixels>* pixels);
     // Clears `region` and draws the layers there; `whole_frame`: no scissor for the clear or for
-    // layers without a clip (the list has no bounds and the region is the frame). `pixels`: the
-    // layers' items' pixels, measured once for several regions (none: measured here as needed).
+    // layers without a clip (the list has no bounds and the region is the frame). `pixels`:
+    // pixels_of(list), to send a region smaller than the frame only what reaches it.
     void draw_region(const DrawList& list, const ClipRect& region, bool whole_frame,
-                     const std::vector<LayerPixels>* pixels);
+                     const std::vector<LayerPixels>& pixels);
     void upload_atlas(const FontAtlas& atlas);
     // Whether a shape is drawn as a point sprite: a disc no wider than GL's largest point, centred in the frame.
     bool as_point(const Shape& s, float width_px, float height_px) const;
