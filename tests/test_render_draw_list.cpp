@@ -11,6 +11,7 @@
 
 #include "render/changed_regions.h"
 #include "render/close_up.h"
+#include "render/disc_splat.h"
 #include "render/frame_builder.h"
 #include "render/frame_schedule.h"
 #include "render/overlay.h"
@@ -478,15 +479,18 @@ TEST_CASE("regions close together merge, far apart stay apart, and many become o
     }
 }
 
-// A region's edge never crosses a disc (llvmpipe scissors point sprites block by block): the regions
-// grow to hold each disc they reach whole, and the discs that disc reaches in turn.
+// A region's edge never crosses a point sprite (llvmpipe scissors them block by block): the regions
+// grow to hold each sprite disc they reach whole, and the discs that disc reaches in turn. Small discs
+// are composited into an image cut to the region (disc_splat.h) and need no room.
 TEST_CASE("regions grow to hold every disc they reach, whole", "[render]") {
     DrawList l;
     l.width_px = 400;
     l.height_px = 300;
     Layer& layer = l.new_layer();
-    for (int i = 0; i < 5; ++i) layer.shapes.push_back(disc({100.0f + 6.0f * static_cast<float>(i), 100.0f}, 3.0f, rgb8(1, 2, 3)));
-    layer.shapes.push_back(disc({300, 250}, 3.0f, rgb8(1, 2, 3)));  // far away: not taken in
+    const float r = kSplatMaxRadiusPx + 1.0f;  // a sprite, not composited
+    for (int i = 0; i < 5; ++i)
+        layer.shapes.push_back(disc({100.0f + 2.0f * r * static_cast<float>(i), 100.0f}, r, rgb8(1, 2, 3)));
+    layer.shapes.push_back(disc({300, 250}, r, rgb8(1, 2, 3)));  // far away: not taken in
     std::vector<ClipRect> regions{{99, 99, 3, 3}};
     hold_whole_discs(l, pixels_of(l), regions);
     REQUIRE(regions.size() == 1);
@@ -495,4 +499,61 @@ TEST_CASE("regions grow to hold every disc they reach, whole", "[render]") {
         CHECK(intersection(regions[0], px) == px);
     }
     CHECK(!overlap(regions[0], pixels_touched(layer.shapes[5])));
+
+    // The same row of discs small enough to be composited: the region stays as it was.
+    for (Shape& s : layer.shapes) s.radius = kSplatMaxRadiusPx;
+    std::vector<ClipRect> small{{99, 99, 3, 3}};
+    hold_whole_discs(l, pixels_of(l), small);
+    CHECK(small == std::vector<ClipRect>{{99, 99, 3, 3}});
+}
+
+// The CPU's compositing of small discs (disc_splat.h), without GL: the sprites' coverage formula at
+// the centre, at the edge and past the fringe; an outline's colour at the rim; and an image cut to a
+// clip holds the uncut image's pixels there.
+TEST_CASE("small discs composite to the sprites' coverage, the same pixels however the clip cuts them", "[render]") {
+    const Shape opaque = disc({10.5f, 10.5f}, 3.0f, rgb8(255, 0, 0));
+    const Shape ringed = disc({30.0f, 10.5f}, 4.0f, rgb8(0, 0, 255), Tag::grain, 1.0f, rgb8(0, 255, 0));
+    CHECK(splat_eligible(opaque));
+    CHECK(splat_eligible(ringed));
+    CHECK_FALSE(splat_eligible(disc({0, 0}, kSplatMaxRadiusPx + 0.01f, rgb8(1, 2, 3))));
+    CHECK_FALSE(splat_eligible(segment({0, 0}, {4, 0}, 2.0f, rgb8(1, 2, 3))));
+    const std::vector<const Shape*> shapes{&opaque, &ringed};
+    DiscSplat whole;
+    std::vector<float> scratch;
+    splat_discs(shapes, 0, shapes.size(), {0, 0, 64, 32}, whole, scratch);
+    // The pixels whose centres the discs' coverage reaches: from 7 (centre 7.5, 3 px from the first
+    // disc's) to 33 (3.5 px from the second's), and from 6 to 14 down.
+    CHECK(whole.box == ClipRect{7, 6, 27, 9});
+    const auto at = [](const DiscSplat& s, int x, int y, int c) {
+        return int{s.rgba[(static_cast<size_t>(y - s.box.y) * static_cast<size_t>(s.box.width) +
+                           static_cast<size_t>(x - s.box.x)) * 4 + static_cast<size_t>(c)]};
+    };
+    CHECK(at(whole, 10, 10, 0) == 255);  // the centre: all red, opaque
+    CHECK(at(whole, 10, 10, 3) == 255);
+    // A pixel whose centre is 3 px from the disc's centre is half covered (0.5 - (3 - 3)).
+    CHECK(at(whole, 13, 10, 3) == 128);
+    CHECK(at(whole, 13, 10, 0) == 128);  // premultiplied
+    CHECK(at(whole, 14, 10, 3) == 0);    // 4 px away: past the half-pixel fringe
+    // The ringed disc: blue inside, green in its one-pixel outline (a pixel 3.5 px from the centre: the
+    // outline's colour and whole coverage).
+    CHECK(at(whole, 30, 10, 2) == 255);
+    CHECK(at(whole, 33, 10, 1) == 255);
+    CHECK(at(whole, 33, 10, 2) == 0);
+    // Cut to a clip across both discs: the same bytes there.
+    DiscSplat cut;
+    splat_discs(shapes, 0, shapes.size(), {12, 8, 20, 4}, cut, scratch);
+    REQUIRE(cut.box == ClipRect{12, 8, 20, 4});
+    for (int y = 8; y < 12; ++y)
+        for (int x = 12; x < 32; ++x)
+            for (int c = 0; c < 4; ++c) {
+                INFO(x << ", " << y << " channel " << c);
+                CHECK(at(cut, x, y, c) == at(whole, x, y, c));
+            }
+    // A clip the discs do not reach, and a disc off in the far distance: nothing, no crash.
+    splat_discs(shapes, 0, shapes.size(), {100, 100, 10, 10}, cut, scratch);
+    CHECK(cut.box.empty());
+    const Shape far = disc({3e9f, -3e9f}, 2.0f, rgb8(1, 2, 3));
+    const std::vector<const Shape*> lost{&far};
+    splat_discs(lost, 0, 1, {0, 0, 64, 32}, cut, scratch);
+    CHECK(cut.box.empty());
 }

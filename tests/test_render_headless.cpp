@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "render/disc_splat.h"
 #include "render/font.h"
 #include "render/frame_builder.h"
 #include "render/frame_encoder.h"
@@ -134,8 +135,10 @@ TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one
     // The renderer draws a long run of discs sharing a fill and an outline with the colours as uniforms
     // (gl_renderer.cpp, kOneColourRunMin), shorter runs with a colour per point. An invisible disc in
     // the middle (alpha 0: blending leaves every pixel as it is) cuts the run in two halves too short
-    // for the uniforms, so the second list is drawn the other way; the pixels must not change.
-    constexpr int kW = 72, kH = 48;
+    // for the uniforms, so the second list is drawn the other way; the pixels must not change. The
+    // discs are larger than kSplatMaxRadiusPx, so they are sprites (smaller ones are composited on the
+    // CPU: the test below).
+    constexpr int kW = 120, kH = 80;
     OffscreenContext context(kW, kH);
     GlRenderer gl;
     DrawList one;
@@ -146,13 +149,14 @@ TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one
     const Rgba fill = rgb8(200, 160, 60), outline = rgb8(90, 60, 20);
     for (int i = 0; i < 40; ++i) {
         const int row = i / 10, column = i % 10;
-        const Px centre{4.0f + 6.3f * static_cast<float>(column), 5.0f + 9.7f * static_cast<float>(row)};
-        layer.shapes.push_back(disc(centre, 2.1f + 0.4f * static_cast<float>(i % 3), fill, Tag::grain, 0.7f, outline));
+        const Px centre{6.0f + 11.3f * static_cast<float>(column), 8.0f + 17.7f * static_cast<float>(row)};
+        layer.shapes.push_back(disc(centre, kSplatMaxRadiusPx + 0.2f + 0.4f * static_cast<float>(i % 3), fill,
+                                    Tag::grain, 0.7f, outline));
     }
     DrawList split = one;
     split.layers[0].shapes.insert(split.layers[0].shapes.begin() + 20,
-                                  disc({30.0f, 20.0f}, 3.0f, Rgba{1.0f, 0.0f, 0.0f, 0.0f}, Tag::grain, 0.7f,
-                                       Rgba{0.0f, 0.0f, 1.0f, 0.0f}));
+                                  disc({50.0f, 30.0f}, kSplatMaxRadiusPx + 1.0f, Rgba{1.0f, 0.0f, 0.0f, 0.0f},
+                                       Tag::grain, 0.7f, Rgba{0.0f, 0.0f, 1.0f, 0.0f}));
     const auto drawn = [&](const DrawList& list) {
         gl.draw(list);
         std::vector<std::uint8_t> rgba(static_cast<size_t>(kW) * kH * 4);
@@ -164,8 +168,61 @@ TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one
     int covered = 0;
     for (size_t i = 0; i < a.size(); i += 4)
         if (a[i] != static_cast<std::uint8_t>(std::lround(palette::background.r * 255.0f))) ++covered;
-    CHECK(covered > 400);
+    CHECK(covered > 1500);
     CHECK(a == b);
+}
+
+// Small discs are composited on the CPU into one image drawn as one quad (render/disc_splat.h) where
+// a point sprite each cost a software GL 0.8 us. The picture must be the sprites' picture: the same
+// coverage and outline formula, blended in the same order, rounded to 8 bits once instead of once a
+// disc. A crowded pile of translucent and opaque discs, outlined or not, across the frame's edge:
+// every channel within 3 levels of 255 (a pixel under n discs may differ by up to n/2 levels through
+// the sprites' rounding alone), less than half a level on average.
+TEST_CASE("small discs composited on the CPU draw the point sprites' picture", "[render]") {
+    constexpr int kW = 96, kH = 64;
+    OffscreenContext context(kW, kH);
+    GlRenderer gl;
+    DrawList list;
+    list.width_px = kW;
+    list.height_px = kH;
+    list.background = palette::background;
+    Layer& layer = list.new_layer();
+    for (int i = 0; i < 600; ++i) {
+        // Halfway, a shape that is not a disc (a quad): the discs before and after it are two images.
+        if (i == 300) layer.shapes.push_back(segment({2.0f, 60.0f}, {94.0f, 4.0f}, 5.0f, rgb8(40, 40, 40, 0.8f)));
+        // A deterministic scatter, denser in the middle, some discs half outside the frame.
+        const float u = static_cast<float>((i * 37) % 101) / 100.0f, v = static_cast<float>((i * 53) % 97) / 96.0f;
+        const Px centre{-3.0f + 102.0f * u * u * (3.0f - 2.0f * u), -2.0f + 68.0f * v};
+        const float radius = 0.25f + 3.7f * static_cast<float>((i * 29) % 31) / 30.0f;
+        const Rgba fill = i % 3 == 0 ? rgb8(200, 160, 60, 0.6f) : rgb8(60 + i % 150, 90, 200 - i % 120);
+        layer.shapes.push_back(i % 2 ? disc(centre, radius, fill, Tag::grain, 0.6f, rgb8(90, 60, 20))
+                                     : disc(centre, radius, fill, Tag::grain));
+    }
+    const auto drawn = [&](bool composite) {
+        gl.composite_small_discs(composite);
+        gl.draw(list);
+        std::vector<std::uint8_t> rgba(static_cast<size_t>(kW) * kH * 4);
+        context.read_rgba_bottom_up(rgba.data());
+        return rgba;
+    };
+    const std::vector<std::uint8_t> sprites = drawn(false), composited = drawn(true);
+    REQUIRE(sprites.size() == composited.size());
+    int worst = 0, covered = 0;
+    long sum = 0;
+    for (size_t i = 0; i < sprites.size(); i += 4) {
+        if (sprites[i] != static_cast<std::uint8_t>(std::lround(palette::background.r * 255.0f))) ++covered;
+        int d = 0;
+        for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int{sprites[i + c]} - int{composited[i + c]}));
+        worst = std::max(worst, d);
+        sum += d;
+    }
+    const double mean = static_cast<double>(sum) / covered;
+    INFO("worst " << worst << ", mean " << mean << " levels over " << covered << " covered pixels");
+    CHECK(covered > kW * kH / 2);
+    CHECK(worst <= 3);
+    CHECK(mean < 0.5);
+    // And composited again, byte for byte the same (nothing left over from the last image).
+    CHECK(drawn(true) == composited);
 }
 
 TEST_CASE("two renders of the same scene give byte-identical frames", "[render]") {

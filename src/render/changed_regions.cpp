@@ -5,6 +5,9 @@
 #include <cmath>
 #include <utility>
 
+#include "render/disc_splat.h"
+#include "render/whole_pixels.h"
+
 namespace polyroll::render {
 
 namespace {
@@ -14,8 +17,8 @@ namespace {
 ClipRect around(float x0, float y0, float x1, float y1) {
     if (!(std::isfinite(x0) && std::isfinite(y0) && std::isfinite(x1) && std::isfinite(y1))) return {};
     // Far outside any frame: kept within a range an int holds, the frame cuts it anyway.
-    const auto lo = [](float v) { return static_cast<int>(std::floor(std::clamp(v, -1e6f, 1e6f))) - 1; };
-    const auto hi = [](float v) { return static_cast<int>(std::ceil(std::clamp(v, -1e6f, 1e6f))) + 1; };
+    const auto lo = [](float v) { return floor_px(std::clamp(v, -1e6f, 1e6f)) - 1; };
+    const auto hi = [](float v) { return ceil_px(std::clamp(v, -1e6f, 1e6f)) + 1; };
     const int ix0 = lo(x0), iy0 = lo(y0);
     return {ix0, iy0, hi(x1) - ix0, hi(y1) - iy0};
 }
@@ -119,7 +122,9 @@ void hold_whole_discs(const DrawList& list, const std::vector<LayerPixels>& pixe
     for (size_t i = 0; i < list.layers.size(); ++i)
         for (size_t j = 0; j < list.layers[i].shapes.size(); ++j) {
             const Shape& s = list.layers[i].shapes[j];
-            if (s.kind != ShapeKind::capsule || !(s.a == s.b)) continue;
+            // A small disc is composited into an image cut to the region (disc_splat.h): nothing
+            // of it is drawn outside.
+            if (s.kind != ShapeKind::capsule || !(s.a == s.b) || splat_eligible(s)) continue;
             const ClipRect px = intersection(pixels[i].shapes[j], frame);
             if (!px.empty()) discs.push_back(px);
         }

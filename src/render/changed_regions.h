@@ -44,6 +44,7 @@ std::vector<LayerPixels> pixels_of(const DrawList& list);
 // region's edge may be blended again onto a row just outside it, over the last frame's pixel there,
 // which a whole redraw would not do (measured: one row of 17 pixels darker after the stops-abruptly
 // preset's pile came to rest). With no sprite crossing an edge, nothing is drawn outside the regions.
+// Small discs are not sprites but one image cut to the region (disc_splat.h): they need no room.
 // `pixels`: pixels_of(list).
 void hold_whole_discs(const DrawList& list, const std::vector<LayerPixels>& pixels, std::vector<ClipRect>& regions);
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/changed_regions.h"
+#include "render/disc_splat.h"
 #include "render/font.h"
 #include "render/gl_program.h"
 
@@ -163,6 +164,26 @@ out vec4 frag;
 void main() { frag = disc_colour(v_disc, fill, outline, viewport); }
 )";
 
+// The discs composited on the CPU (disc_splat.h): one quad over their pixels, each pixel its texel,
+// fetched by whole pixel so nothing is filtered. The texel is premultiplied (blended ONE,
+// ONE_MINUS_SRC_ALPHA).
+constexpr const char* kSplatVertex = R"(
+layout(location = 0) in vec2 corner;
+uniform vec2 viewport;
+uniform vec4 rect;  // left, top, right, bottom, pixels
+void main() { gl_Position = to_clip(mix(rect.xy, rect.zw, corner), viewport); }
+)";
+constexpr const char* kSplatFragment = R"(
+uniform highp sampler2D splat;
+uniform ivec2 origin;  // the texture's top-left pixel
+uniform vec2 viewport;
+out vec4 frag;
+void main() {
+    ivec2 texel = ivec2(int(floor(gl_FragCoord.x)), int(floor(viewport.y - gl_FragCoord.y))) - origin;
+    frag = texelFetch(splat, texel, 0);
+}
+)";
+
 constexpr const char* kGlyphVertex = R"(
 layout(location = 0) in vec2 corner;
 layout(location = 1) in vec4 rect;
@@ -238,6 +259,11 @@ GlRenderer::GlRenderer() {
     one_colour_viewport_ = glGetUniformLocation(one_colour_program_, "viewport");
     one_colour_fill_ = glGetUniformLocation(one_colour_program_, "fill");
     one_colour_outline_ = glGetUniformLocation(one_colour_program_, "outline");
+    splat_program_ = link_program(kSplatVertex, kSplatFragment, kToClip);
+    splat_viewport_ = glGetUniformLocation(splat_program_, "viewport");
+    splat_rect_ = glGetUniformLocation(splat_program_, "rect");
+    splat_origin_ = glGetUniformLocation(splat_program_, "origin");
+    splat_sampler_ = glGetUniformLocation(splat_program_, "splat");
     float point_sizes[2] = {1.0f, 1.0f};
     glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, point_sizes);
     max_point_px_ = point_sizes[1];
@@ -289,17 +315,31 @@ GlRenderer::GlRenderer() {
     glBindBuffer(GL_ARRAY_BUFFER, one_colour_vbo_);
     float_attrib(0, 4, 4 * sizeof(float), 0, false);
 
+    glGenVertexArrays(1, &splat_vao_);
+    glBindVertexArray(splat_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+    float_attrib(0, 2, 2 * sizeof(float), 0, false);
+
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glGenTextures(1, &atlas_texture_);
+    glGenTextures(static_cast<GLsizei>(splat_textures_.size()), splat_textures_.data());
+    for (const GLuint t : splat_textures_) {
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 GlRenderer::~GlRenderer() {
     glDeleteTextures(1, &atlas_texture_);
+    glDeleteTextures(static_cast<GLsizei>(splat_textures_.size()), splat_textures_.data());
     const GLuint buffers[6] = {tri_vbo_, quad_vbo_, shape_vbo_, glyph_vbo_, disc_vbo_, one_colour_vbo_};
     glDeleteBuffers(6, buffers);
-    const GLuint arrays[5] = {tri_vao_, shape_vao_, glyph_vao_, disc_vao_, one_colour_vao_};
-    glDeleteVertexArrays(5, arrays);
+    const GLuint arrays[6] = {tri_vao_, shape_vao_, glyph_vao_, disc_vao_, one_colour_vao_, splat_vao_};
+    glDeleteVertexArrays(6, arrays);
+    glDeleteProgram(splat_program_);
     glDeleteProgram(disc_program_);
     glDeleteProgram(one_colour_program_);
     glDeleteProgram(tri_program_);
@@ -387,6 +427,30 @@ void GlRenderer::draw_discs_coloured(const std::vector<const Shape*>& shapes, si
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(discs.size()));
 }
 
+void GlRenderer::draw_discs_splatted(const std::vector<const Shape*>& shapes, size_t begin, size_t end,
+                                     const ClipRect& clip, float width_px, float height_px) {
+    splat_discs(shapes, begin, end, clip, splat_, splat_scratch_);
+    if (splat_.box.empty()) return;
+    const ClipRect& b = splat_.box;
+    glActiveTexture(GL_TEXTURE0);
+    // A texture of its own for each of a frame's first few runs: writing one a draw still waits for
+    // makes a software GL finish that draw first.
+    glBindTexture(GL_TEXTURE_2D, splat_textures_[next_splat_texture_]);
+    next_splat_texture_ = (next_splat_texture_ + 1) % splat_textures_.size();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, b.width, b.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, splat_.rgba.data());
+    glUseProgram(splat_program_);
+    glUniform2f(splat_viewport_, width_px, height_px);
+    glUniform4f(splat_rect_, static_cast<float>(b.x), static_cast<float>(b.y), static_cast<float>(b.x + b.width),
+                static_cast<float>(b.y + b.height));
+    glUniform2i(splat_origin_, b.x, b.y);
+    glUniform1i(splat_sampler_, 0);
+    glBindVertexArray(splat_vao_);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}
+
 void GlRenderer::draw_shapes(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
                              float height_px) {
     std::vector<ShapeInstance> instances;
@@ -466,6 +530,7 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
     std::vector<TriVertex> tris;
     std::vector<GlyphInstance> glyphs;
     std::vector<const Shape*> shapes;
+    std::vector<size_t> batches;  // for each of `shapes`, its run of small discs (see below)
     const float fw = static_cast<float>(list.width_px), fh = static_cast<float>(h);
     for (size_t li = 0; li < list.layers.size(); ++li) {
         const Layer& layer = list.layers[li];
@@ -510,14 +575,30 @@ void GlRenderer::draw_region(const DrawList& list, const ClipRect& region, bool 
             glEnable(GL_BLEND);
         }
         shapes.clear();
-        for (size_t i = 0; i < layer.shapes.size(); ++i)
-            if (reaches(&LayerPixels::shapes, i)) shapes.push_back(&layer.shapes[i]);
-        // The shapes in order, each run of discs that fit a point sprite as points, the rest as quads.
+        batches.clear();
+        // A run of small discs is composited as one image (disc_splat.h), rounded to 8 bits once. The
+        // runs are cut where the whole layer has another shape between two discs, culled from this
+        // region or not, so that every region rounds a pixel as the whole frame does.
+        const auto composited = [this](const Shape& s) { return composite_small_discs_ && splat_eligible(s); };
+        size_t batch = 0;
+        for (size_t i = 0; i < layer.shapes.size(); ++i) {
+            if (!composited(layer.shapes[i])) ++batch;
+            if (!reaches(&LayerPixels::shapes, i)) continue;
+            shapes.push_back(&layer.shapes[i]);
+            batches.push_back(batch);
+        }
+        // The shapes in order: each run of small discs composited, each run of other discs that fit a
+        // point sprite as points, the rest as quads.
+        enum class Way { splat, points, quads };
+        const auto way = [&](const Shape& s) {
+            return composited(s) ? Way::splat : as_point(s, fw, fh) ? Way::points : Way::quads;
+        };
         for (size_t i = 0; i < shapes.size();) {
-            const bool points = as_point(*shapes[i], fw, fh);
+            const Way w = way(*shapes[i]);
             size_t end = i + 1;
-            while (end < shapes.size() && as_point(*shapes[end], fw, fh) == points) ++end;
-            if (points) draw_discs(shapes, i, end, fw, fh);
+            while (end < shapes.size() && way(*shapes[end]) == w && (w != Way::splat || batches[end] == batches[i])) ++end;
+            if (w == Way::splat) draw_discs_splatted(shapes, i, end, clip, fw, fh);
+            else if (w == Way::points) draw_discs(shapes, i, end, fw, fh);
             else draw_shapes(shapes, i, end, fw, fh);
             i = end;
         }

@@ -5,11 +5,13 @@
 // Links no GL itself: the executable brings exactly one GL provider (docs/design.md, "Rendering").
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "render/changed_regions.h"
+#include "render/disc_splat.h"
 #include "render/draw_list.h"
 
 namespace polyroll::render {
@@ -29,6 +31,10 @@ public:
     // pixels_of(list), measured once for the regions and for this.
     void draw(const DrawList& list, const std::vector<ClipRect>& regions, const std::vector<LayerPixels>& pixels);
 
+    // Whether discs of at most kSplatMaxRadiusPx are composited on the CPU (disc_splat.h; the default)
+    // or drawn as point sprites like larger ones: the tests compare the two pictures.
+    void composite_small_discs(bool on) { composite_small_discs_ = on; }
+
 private:
     void draw_in(const DrawList& list, const std::vector<ClipRect>* regions, const std::vector<LayerPixels>* pixels);
     // Clears `region` and draws the layers there; `whole_frame`: no scissor for the clear or for
@@ -46,6 +52,9 @@ private:
                                float height_px);
     void draw_discs_coloured(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
                              float height_px);
+    // Small discs (disc_splat.h) composited on the CPU inside `clip`, then drawn as one textured quad.
+    void draw_discs_splatted(const std::vector<const Shape*>& shapes, size_t begin, size_t end, const ClipRect& clip,
+                             float width_px, float height_px);
     void draw_shapes(const std::vector<const Shape*>& shapes, size_t begin, size_t end, float width_px,
                      float height_px);
 
@@ -57,6 +66,13 @@ private:
     int tri_viewport_ = -1, shape_viewport_ = -1, glyph_viewport_ = -1, glyph_sampler_ = -1, disc_viewport_ = -1;
     int one_colour_viewport_ = -1, one_colour_fill_ = -1, one_colour_outline_ = -1;  // discs of one fill and outline
     float max_point_px_ = 1.0f;  // GL's largest point sprite
+    unsigned splat_program_ = 0, splat_vao_ = 0;
+    std::array<unsigned, 4> splat_textures_{};  // used in turn (gl_renderer.cpp says why)
+    size_t next_splat_texture_ = 0;
+    int splat_viewport_ = -1, splat_rect_ = -1, splat_origin_ = -1, splat_sampler_ = -1;
+    bool composite_small_discs_ = true;
+    DiscSplat splat_;                   // the last run of small discs composited, kept for its buffer
+    std::vector<float> splat_scratch_;  // its float layer
 };
 
 }  // namespace polyroll::render
