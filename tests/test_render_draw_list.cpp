@@ -519,7 +519,7 @@ TEST_CASE("small discs composite to the sprites' coverage, the same pixels howev
     CHECK_FALSE(splat_eligible(segment({0, 0}, {4, 0}, 2.0f, rgb8(1, 2, 3))));
     const std::vector<const Shape*> shapes{&opaque, &ringed};
     DiscSplat whole;
-    std::vector<float> scratch;
+    SplatScratch scratch;
     splat_discs(shapes, 0, shapes.size(), {0, 0, 64, 32}, whole, scratch);
     // The pixels whose centres the discs' coverage reaches: from 7 (centre 7.5, 3 px from the first
     // disc's) to 33 (3.5 px from the second's), and from 6 to 14 down.

@@ -39,23 +39,28 @@ ClipRect bounding(const ClipRect& a, const ClipRect& b) {
 }  // namespace
 
 void splat_discs(const std::vector<const Shape*>& shapes, size_t begin, size_t end, const ClipRect& clip,
-                 DiscSplat& out, std::vector<float>& scratch) {
+                 DiscSplat& out, SplatScratch& scratch) {
     ClipRect box;
-    for (size_t i = begin; i < end; ++i) box = bounding(box, covered_pixels(*shapes[i]));
+    scratch.pixels.clear();
+    for (size_t i = begin; i < end; ++i) {
+        scratch.pixels.push_back(covered_pixels(*shapes[i]));
+        box = bounding(box, scratch.pixels.back());
+    }
     out.box = intersection(box, clip);
     out.rgba.clear();
     if (out.box.empty()) return;
     const ClipRect& b = out.box;
-    scratch.assign(static_cast<size_t>(b.width) * static_cast<size_t>(b.height) * 4, 0.0f);
+    std::vector<float>& layer = scratch.layer;
+    layer.assign(static_cast<size_t>(b.width) * static_cast<size_t>(b.height) * 4, 0.0f);
     for (size_t i = begin; i < end; ++i) {
         const Shape& s = *shapes[i];
-        const ClipRect c = intersection(covered_pixels(s), b);
+        const ClipRect c = intersection(scratch.pixels[i - begin], b);
         if (c.empty()) continue;
         const float r = s.radius, w = s.outline_px;
         const float reach2 = (r + 0.5f) * (r + 0.5f);
         for (int y = c.y; y < c.y + c.height; ++y) {
             const float dy = static_cast<float>(y) + 0.5f - s.a.y;
-            float* row = scratch.data() + (static_cast<size_t>(y - b.y) * static_cast<size_t>(b.width)) * 4;
+            float* row = layer.data() + (static_cast<size_t>(y - b.y) * static_cast<size_t>(b.width)) * 4;
             for (int x = c.x; x < c.x + c.width; ++x) {
                 const float dx = static_cast<float>(x) + 0.5f - s.a.x;
                 // disc_colour in gl_renderer.cpp, term for term.
@@ -79,8 +84,8 @@ void splat_discs(const std::vector<const Shape*>& shapes, size_t begin, size_t e
             }
         }
     }
-    out.rgba.resize(scratch.size());
-    std::transform(scratch.begin(), scratch.end(), out.rgba.begin(), [](float v) {
+    out.rgba.resize(layer.size());
+    std::transform(layer.begin(), layer.end(), out.rgba.begin(), [](float v) {
         // Rounded to the nearest level: the value is never negative here, where truncating v + 0.5 is
         // right, and std::lround is a library call on every channel of every pixel.
         return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);  // NOLINT(bugprone-incorrect-roundings)

@@ -35,9 +35,14 @@ struct DiscSplat {
     std::vector<std::uint8_t> rgba;
 };
 
+// The working memory of splat_discs, kept by the caller so that a frame allocates nothing.
+struct SplatScratch {
+    std::vector<float> layer;      // the premultiplied float layer
+    std::vector<ClipRect> pixels;  // each disc's pixels, worked out once
+};
+
 // Composites shapes[begin, end) (each splat_eligible) in order into `out`, inside `clip` only.
-// `scratch` is the float layer, kept by the caller so a frame allocates nothing.
 void splat_discs(const std::vector<const Shape*>& shapes, size_t begin, size_t end, const ClipRect& clip,
-                 DiscSplat& out, std::vector<float>& scratch);
+                 DiscSplat& out, SplatScratch& scratch);
 
 }  // namespace polyroll::render

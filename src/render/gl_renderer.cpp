@@ -6,6 +6,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -435,10 +436,18 @@ void GlRenderer::draw_discs_splatted(const std::vector<const Shape*>& shapes, si
     glActiveTexture(GL_TEXTURE0);
     // A texture of its own for each of a frame's first few runs: writing one a draw still waits for
     // makes a software GL finish that draw first.
-    glBindTexture(GL_TEXTURE_2D, splat_textures_[next_splat_texture_]);
+    const size_t k = next_splat_texture_;
     next_splat_texture_ = (next_splat_texture_ + 1) % splat_textures_.size();
+    glBindTexture(GL_TEXTURE_2D, splat_textures_[k]);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, b.width, b.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, splat_.rgba.data());
+    // The image goes into the texture's top-left corner (the shader fetches by offset from `origin`);
+    // the texture grows only when an image does not fit, so most frames reallocate nothing.
+    std::array<int, 2>& size = splat_texture_px_[k];
+    if (b.width > size[0] || b.height > size[1]) {
+        size = {std::max(b.width, size[0]), std::max(b.height, size[1])};
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size[0], size[1], 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    }
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, b.width, b.height, GL_RGBA, GL_UNSIGNED_BYTE, splat_.rgba.data());
     glUseProgram(splat_program_);
     glUniform2f(splat_viewport_, width_px, height_px);
     glUniform4f(splat_rect_, static_cast<float>(b.x), static_cast<float>(b.y), static_cast<float>(b.x + b.width),

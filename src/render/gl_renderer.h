@@ -68,11 +68,12 @@ private:
     float max_point_px_ = 1.0f;  // GL's largest point sprite
     unsigned splat_program_ = 0, splat_vao_ = 0;
     std::array<unsigned, 4> splat_textures_{};  // used in turn (gl_renderer.cpp says why)
+    std::array<std::array<int, 2>, 4> splat_texture_px_{};  // each one's allocated width and height
     size_t next_splat_texture_ = 0;
     int splat_viewport_ = -1, splat_rect_ = -1, splat_origin_ = -1, splat_sampler_ = -1;
     bool composite_small_discs_ = true;
     DiscSplat splat_;                   // the last run of small discs composited, kept for its buffer
-    std::vector<float> splat_scratch_;  // its float layer
+    SplatScratch splat_scratch_;        // its working memory
 };
 
 }  // namespace polyroll::render
