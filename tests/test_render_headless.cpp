@@ -131,6 +131,27 @@ TEST_CASE("a headless render writes the expected PNG frames with the shell where
     CHECK(distance(pixel(moving, 320, 120), palette::background) == 0);
 }
 
+namespace {
+
+// An empty list of the frame's size on the default background, for the renderer's own tests.
+DrawList blank_list(int width_px, int height_px) {
+    DrawList list;
+    list.width_px = width_px;
+    list.height_px = height_px;
+    list.background = palette::background;
+    return list;
+}
+
+// The list drawn whole and read back, RGBA rows from the bottom.
+std::vector<std::uint8_t> drawn_rgba(GlRenderer& gl, OffscreenContext& context, const DrawList& list) {
+    gl.draw(list);
+    std::vector<std::uint8_t> rgba(static_cast<size_t>(list.width_px) * static_cast<size_t>(list.height_px) * 4);
+    context.read_rgba_bottom_up(rgba.data());
+    return rgba;
+}
+
+}  // namespace
+
 TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one", "[render]") {
     // The renderer draws a long run of discs sharing a fill and an outline with the colours as uniforms
     // (gl_renderer.cpp, kOneColourRunMin), shorter runs with a colour per point. An invisible disc in
@@ -141,10 +162,7 @@ TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one
     constexpr int kW = 120, kH = 80;
     OffscreenContext context(kW, kH);
     GlRenderer gl;
-    DrawList one;
-    one.width_px = kW;
-    one.height_px = kH;
-    one.background = palette::background;
+    DrawList one = blank_list(kW, kH);
     Layer& layer = one.new_layer();
     const Rgba fill = rgb8(200, 160, 60), outline = rgb8(90, 60, 20);
     for (int i = 0; i < 40; ++i) {
@@ -157,13 +175,7 @@ TEST_CASE("discs of one colour draw the same pixels as discs coloured one by one
     split.layers[0].shapes.insert(split.layers[0].shapes.begin() + 20,
                                   disc({50.0f, 30.0f}, kSplatMaxRadiusPx + 1.0f, Rgba{1.0f, 0.0f, 0.0f, 0.0f},
                                        Tag::grain, 0.7f, Rgba{0.0f, 0.0f, 1.0f, 0.0f}));
-    const auto drawn = [&](const DrawList& list) {
-        gl.draw(list);
-        std::vector<std::uint8_t> rgba(static_cast<size_t>(kW) * kH * 4);
-        context.read_rgba_bottom_up(rgba.data());
-        return rgba;
-    };
-    const std::vector<std::uint8_t> a = drawn(one), b = drawn(split);
+    const std::vector<std::uint8_t> a = drawn_rgba(gl, context, one), b = drawn_rgba(gl, context, split);
     // The discs are there: most of their pixels are not the background.
     int covered = 0;
     for (size_t i = 0; i < a.size(); i += 4)
@@ -182,10 +194,7 @@ TEST_CASE("small discs composited on the CPU draw the point sprites' picture", "
     constexpr int kW = 96, kH = 64;
     OffscreenContext context(kW, kH);
     GlRenderer gl;
-    DrawList list;
-    list.width_px = kW;
-    list.height_px = kH;
-    list.background = palette::background;
+    DrawList list = blank_list(kW, kH);
     Layer& layer = list.new_layer();
     for (int i = 0; i < 600; ++i) {
         // Halfway, a shape that is not a disc (a quad): the discs before and after it are two images.
@@ -200,10 +209,7 @@ TEST_CASE("small discs composited on the CPU draw the point sprites' picture", "
     }
     const auto drawn = [&](bool composite) {
         gl.composite_small_discs(composite);
-        gl.draw(list);
-        std::vector<std::uint8_t> rgba(static_cast<size_t>(kW) * kH * 4);
-        context.read_rgba_bottom_up(rgba.data());
-        return rgba;
+        return drawn_rgba(gl, context, list);
     };
     const std::vector<std::uint8_t> sprites = drawn(false), composited = drawn(true);
     REQUIRE(sprites.size() == composited.size());
