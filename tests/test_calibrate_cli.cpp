@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -53,6 +54,29 @@ double column_mean(const std::string& table, const std::string& column) {
     }
     REQUIRE(n > 0);
     return sum / n;
+}
+
+// One column of a results table, by run id.
+std::map<std::string, double> column_by_run(const std::string& table, const std::string& column) {
+    std::istringstream in(table);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream hs(line);
+    for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
+    const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), column) - header.begin());
+    const auto id = static_cast<std::size_t>(std::find(header.begin(), header.end(), "run_id") - header.begin());
+    REQUIRE(at < header.size());
+    REQUIRE(id < header.size());
+    std::map<std::string, double> out;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream ls(line);
+        for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
+        REQUIRE(std::max(at, id) < cells.size());
+        out[cells[id]] = std::stod(cells[at]);
+    }
+    return out;
 }
 
 // One observation of the scene above: a lab's measured terminal velocity.
@@ -145,6 +169,66 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
     CHECK(other.exit_code == 2);
     CHECK_THAT(other.out, Catch::Contains("holds another calibration"));
     CHECK(read_file(out / "evaluations.csv") == resumed);
+    fs::remove_all(scratch);
+}
+
+TEST_CASE("calibrate: a first pass at one seed in coarser grains searches, and the final pass scores its best at "
+          "every seed in the scene's grains", "[calibrate][cli]") {
+    const fs::path scratch = polyroll::test::scratch_dir("calibrate-first-pass", true);
+    const fs::path obs = write_text(scratch / "lab.json", lab_observations(0.35, 0.006)), out = scratch / "out";
+    constexpr int kMaxEvals = 5;
+    const std::string cmd = kPolyrollExe + " calibrate --params fill.material.restitution=0.3:0.95 --observations " +
+                            obs.string() + " --seeds 2 --first-pass-seeds 1 --first-pass-grains 1.5 --max-evals " +
+                            std::to_string(kMaxEvals) + " --jobs 2 --out " + out.string();
+    const auto first = run_command(cmd);
+    INFO(first.out);
+    REQUIRE(first.exit_code == 0);
+    CHECK_THAT(first.out, Catch::Contains("(1 seed, grains x1.5)") && Catch::Contains("(final pass, 2 seeds)"));
+    const auto doc = nlohmann::json::parse(read_file(out / "calibration.json"));
+    const auto& evals = doc["evaluations"];
+    REQUIRE(evals.size() == kMaxEvals + 2);  // the start, the search's, the final pass
+    // The start and the final pass at every seed in the scene's grains; the search at one seed, coarser.
+    for (std::size_t i = 0; i < evals.size(); ++i) {
+        const bool full = i == 0 || i + 1 == evals.size();
+        INFO("evaluation " << i);
+        CHECK(evals[i]["seeds"] == (full ? 2 : 1));
+        CHECK(evals[i]["grain_scale"].get<double>() == (full ? 1.0 : 1.5));
+        CHECK(evals[i]["runs"] == (full ? 2 : 1));
+    }
+    // The final pass scores the search's best: the lowest objective among the search's evaluations.
+    std::size_t search_best = 1;
+    for (std::size_t i = 1; i + 1 < evals.size(); ++i)
+        if (evals[i]["objective"].get<double>() < evals[search_best]["objective"].get<double>()) search_best = i;
+    CHECK(evals.back()["values"] == evals[search_best]["values"]);
+    CHECK_THAT(doc["stop_reason"].get<std::string>(), Catch::Contains("first pass at 1 seed, grains x1.5"));
+    // Kept only if it beats the start at every seed: never worse than the start.
+    CHECK(doc["objective_after"].get<double>() <= doc["objective_before"].get<double>());
+    const bool kept = evals.back()["objective"].get<double>() < evals[0]["objective"].get<double>();
+    CHECK(doc["best_evaluation"] == (kept ? evals.size() - 1 : 0));
+
+    // The search's runs have grains 1.5 times larger in diameter (these column discs are sized by the
+    // grain's diameter), the same fill mass: fewer discs than every run in the scene's grains.
+    const auto plan = nlohmann::json::parse(read_file(out / "plan.json"));
+    const auto discs = column_by_run(read_file(out / "results.csv"), "grains");
+    int most_coarse = 0, fewest_fine = 1 << 30, coarse_runs = 0;
+    for (const auto& r : plan["runs"]) {
+        const int n = static_cast<int>(discs.at(r["id"].get<std::string>()));
+        if (r["point"].contains("fill.material.diameter_m")) {
+            ++coarse_runs;
+            most_coarse = std::max(most_coarse, n);
+        } else {
+            fewest_fine = std::min(fewest_fine, n);
+        }
+    }
+    CHECK(coarse_runs >= 2);  // the search's distinct candidates, one seed each
+    CHECK(most_coarse < fewest_fine);
+
+    // The same command resumes: everything found done, the same outcome.
+    const auto again = run_command(cmd);
+    INFO(again.out);
+    REQUIRE(again.exit_code == 0);
+    CHECK_FALSE(Catch::Contains(" s); best").match(again.out));
+    CHECK(nlohmann::json::parse(read_file(out / "calibration.json"))["evaluations"] == evals);
     fs::remove_all(scratch);
 }
 
@@ -248,6 +332,10 @@ TEST_CASE("calibrate: bad input gives one line, exit 2, nothing written", "[cali
         {"--params ramp.friction --set ramp.friction=0.5" + lab, {"ramp.friction", "not both"}},
         {"--params ramp.friction=0.1:0.5" + lab, {"the scene's ramp.friction=0.9", "outside the bounds"}},
         {"--params ramp.friction --seeds 0" + lab, {"--seeds"}},
+        {"--params ramp.friction --seeds 2 --first-pass-seeds 2" + lab, {"--first-pass-seeds 2", "1 to --seeds - 1"}},
+        {"--params ramp.friction --first-pass-grains 0.5" + lab, {"--first-pass-grains 0.5", "allowed 1", "to 3"}},
+        {"--params ramp.friction --first-pass-grains 3.5" + lab, {"--first-pass-grains 3.5", "allowed 1", "to 3"}},
+        {"--params ramp.friction --first-pass-grains nan" + lab, {"--first-pass-grains"}},
         {"--params ramp.friction --shard 3/2" + lab, {"3/2"}},
         {"--params ramp.friction --observations " + (scratch / "none.json").string(), {"cannot be read"}},
     };

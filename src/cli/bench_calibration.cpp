@@ -10,6 +10,7 @@
 
 #include "sim/model_registry.h"
 #include "sim/run_cost.h"
+#include "sweep/calibration.h"
 #include "sweep/observations.h"
 #include "sweep/sweep_runner.h"
 
@@ -27,6 +28,12 @@ constexpr int kJobs = 2;
 // both seeds (2), the search's other candidates with new runs at one seed (kEvaluationsWithRuns - 1),
 // the best found at its second seed (1).
 constexpr int kFirstPassSeedEvaluations = 2 + (kEvaluationsWithRuns - 1) + 1;
+// With --first-pass-grains too, the search's runs are all new (the start in coarser grains as well):
+// kEvaluationsWithRuns coarser one-seed evaluations, and the start and the final pass at both seeds in
+// the scene's grains. kCoarserGrains: the documented command's (docs/calibrate.md).
+constexpr double kCoarserGrains = 1.5;
+constexpr int kCoarserSeedEvaluations = kEvaluationsWithRuns;
+constexpr int kFullSeedEvaluations = 2 * kSeeds;
 
 // The share of `sorted` (ascending) below which `q` of the values lie.
 double quantile(const std::vector<double>& sorted, double q) {
@@ -72,31 +79,56 @@ struct CostCheck {
     }
 };
 
-}  // namespace
-
-void bench_calibration(const char* fidelity) {
-    const sweep::ObservationFile file = sweep::read_observations("");
-    const sweep::ValidationPlan vp = sweep::make_validation_plan(file, 1, {{"fidelity.preset", fidelity}}, true);
+// One seed of every observation's runs, one run at a time on this core: the wall time, and the runs.
+struct TimedPlan {
+    double wall_s = 0.0;
     std::size_t failed = 0;
-    CostCheck cost;
+};
+
+TimedPlan time_plan(const sweep::ValidationPlan& vp, CostCheck* cost) {
+    TimedPlan t;
     const auto start = std::chrono::steady_clock::now();
     for (const sweep::PlannedRun& run : vp.plan.runs) {
         const sweep::RunRecord r = sweep::execute_run(vp.plan, run, {}, false);
-        failed += r.ok ? 0 : 1;
-        if (r.result) cost.add(*r.result);
+        t.failed += r.ok ? 0 : 1;
+        if (cost && r.result) cost->add(*r.result);
     }
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return t;
+}
+
+std::string failed_text(std::size_t failed) { return failed ? fmt::format(", {} failed", failed) : std::string(); }
+
+}  // namespace
+
+void bench_calibration(const char* fidelity) {
+    sweep::CalibrationSetup setup;
+    setup.file = sweep::read_observations("");
+    setup.overrides = {{"fidelity.preset", fidelity}};
+    setup.seeds = kSeeds;
+    setup.first_pass_grain_scale = kCoarserGrains;
+    const sweep::ValidationPlan vp = sweep::candidate_plan(setup, {}, 1, 1.0);
+    CostCheck cost;
+    const TimedPlan full = time_plan(vp, &cost);
+    const TimedPlan coarser = time_plan(sweep::candidate_plan(setup, {}, 1, kCoarserGrains), nullptr);
+    const double wall_s = full.wall_s;
     const double fit_s = wall_s * kSeeds * kEvaluationsWithRuns / kJobs;
     const double first_pass_s = wall_s * kFirstPassSeedEvaluations / kJobs;
+    const double coarser_s = (wall_s * kFullSeedEvaluations + coarser.wall_s * kCoarserSeedEvaluations) / kJobs;
     std::size_t early = 0;
     for (const sweep::PlannedRun& run : vp.plan.runs) early += run.point.contains("run.end_at_impact") ? 1 : 0;
     fmt::print("\ncalibration at {}: one evaluation of the bundled observations ({} runs, {} of them ended at the impact "
-               "that decides their observation, 1 seed{}) took {:.1f} s on one core\n  a three-parameter fit (--seeds {}, "
-               "{} evaluations with new runs, --jobs {} on two idle cores): about {:.0f} s ({:.1f} min)\n  the same with "
-               "--first-pass-seeds 1 ({} one-seed evaluations): about {:.0f} s ({:.1f} min)\n",
-               fidelity, vp.plan.runs.size(), early, failed ? fmt::format(", {} failed", failed) : std::string(), wall_s,
-               kSeeds, kEvaluationsWithRuns, kJobs, fit_s, fit_s / 60.0, kFirstPassSeedEvaluations, first_pass_s,
-               first_pass_s / 60.0);
+               "that decides their observation, 1 seed{}) took {:.1f} s on one core, {:.1f} s in grains {:g}x "
+               "larger{}\n"
+               "  a three-parameter fit (--seeds {}, {} evaluations with new runs, --jobs {} on two idle cores): about "
+               "{:.0f} s ({:.1f} min)\n"
+               "  the same with --first-pass-seeds 1 ({} one-seed evaluations): about {:.0f} s ({:.1f} min)\n"
+               "  the same with --first-pass-seeds 1 --first-pass-grains {:g} ({} one-seed evaluations in the "
+               "coarser grains, {} in the scene's): about {:.0f} s ({:.1f} min)\n",
+               fidelity, vp.plan.runs.size(), early, failed_text(full.failed), wall_s, coarser.wall_s, kCoarserGrains,
+               failed_text(coarser.failed), kSeeds, kEvaluationsWithRuns, kJobs, fit_s, fit_s / 60.0,
+               kFirstPassSeedEvaluations, first_pass_s, first_pass_s / 60.0, kCoarserGrains, kCoarserSeedEvaluations,
+               kFullSeedEvaluations, coarser_s, coarser_s / 60.0);
     cost.print();
     std::fflush(stdout);
 }

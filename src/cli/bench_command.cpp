@@ -158,11 +158,12 @@ Action add_bench_command(Command& app) {
         "the cost per disc and step and Box2D's contacts per disc (about 30 s a repeat)");
     Flag calibration_flag = sub.add_flag(
         "--calibration", opts->calibration_only,
-        "measure only the calibration's cost: one evaluation of the bundled observations at standard (about 3 "
-        "minutes on one core) and the three-parameter fit it projects");
+        "measure only the calibration's cost: one evaluation of the bundled observations at standard, in the "
+        "scene's grains and in grains 1.5x larger (about 4 minutes on one core), and the three-parameter fits they "
+        "project");
     sub.add_flag("--all", opts->all,
                  "the default tables, then the grain-count rows, the 3D reference and the calibration's cost "
-                 "(several minutes: the calibration row alone takes about 3 on one core)")
+                 "(several minutes: the calibration row alone takes about 4 on one core)")
         .excludes(dem3d_flag)
         .excludes(scaling_flag)
         .excludes(calibration_flag)

@@ -32,6 +32,9 @@ namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 constexpr int kMaxEvaluations = 10000;
+// --first-pass-grains: the trade study measured discs 1.5 and 2 times larger (docs/tradeoff/); past
+// 3 a small shell holds too few discs for a pile.
+constexpr double kMaxFirstPassGrainScale = 3.0;
 
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -46,6 +49,7 @@ struct CalibrateArgs {
     std::vector<std::string> only;    // observation ids (after --half); empty: every observation
     int seeds = 2, jobs = 0, max_evals = 24;  // measured at standard: docs/calibrate.md
     int first_pass_seeds = 0;                 // 0: no first pass
+    double first_pass_grains = 1.0;           // 1: the first pass's grains are the scene's
     bool force = false, quiet = false, plan_only = false;
     ObservationSceneFlags scene;
 };
@@ -61,6 +65,7 @@ std::string command_text(const CalibrateArgs& a) {
     }
     c += fmt::format(" --seeds {} --max-evals {} --algorithm {}", a.seeds, a.max_evals, a.algorithm);
     if (a.first_pass_seeds > 0) c += fmt::format(" --first-pass-seeds {}", a.first_pass_seeds);
+    if (a.first_pass_grains != 1.0) c += fmt::format(" --first-pass-grains {:g}", a.first_pass_grains);
     for (const std::string& s : a.starts) c += " --start " + s;
     if (!a.shard.empty()) c += " --shard " + a.shard;
     c += observation_flags_text(a.scene);
@@ -94,6 +99,7 @@ json setup_json(const sweep::CalibrationSetup& s) {
              {"overrides", overrides}, {"params", params}, {"algorithm", s.algorithm}};
     // Only when asked for, so that a folder of a calibration without one resumes as before.
     if (s.first_pass_seeds > 0) doc["first_pass_seeds"] = s.first_pass_seeds;
+    if (s.first_pass_grain_scale != 1.0) doc["first_pass_grain_scale"] = s.first_pass_grain_scale;
     return doc;
 }
 
@@ -110,15 +116,18 @@ std::string values_text(const sweep::CalibrationSetup& s, const std::vector<doub
 std::string evaluations_csv(const sweep::CalibrationSetup& s, const std::vector<sweep::Evaluation>& evals) {
     std::vector<std::string> header = {"evaluation"};
     for (const auto& p : s.params) header.push_back(p.path);
-    for (const char* c : {"objective", "checks_agreeing", "checks", "seeds", "runs", "failed", "ran", "wall_time_s"})
+    for (const char* c : {"objective", "checks_agreeing", "checks", "seeds", "grain_scale", "runs", "failed", "ran",
+                          "wall_time_s"})
         header.emplace_back(c);
     std::string out = sweep::csv_line(header);
     for (const sweep::Evaluation& e : evals) {
         std::vector<std::string> row = {std::to_string(e.number)};
         for (double v : e.values) row.push_back(sweep::number_cell(v));
         row.push_back(sweep::number_cell(e.objective));
-        for (std::size_t n : {e.agreeing, e.checks, static_cast<std::size_t>(e.seeds), e.runs, e.failed, e.ran})
+        for (std::size_t n : {e.agreeing, e.checks, static_cast<std::size_t>(e.seeds)})
             row.push_back(std::to_string(n));
+        row.push_back(sweep::number_cell(e.grain_scale));
+        for (std::size_t n : {e.runs, e.failed, e.ran}) row.push_back(std::to_string(n));
         row.push_back(fmt::format("{:.3f}", e.wall_time_s));
         out += sweep::csv_line(row);
     }
@@ -145,7 +154,8 @@ json evaluation_json(const sweep::CalibrationSetup& s, const sweep::Evaluation& 
     json values = json::object();
     for (std::size_t i = 0; i < e.values.size(); ++i) values[s.params[i].path] = e.values[i];
     return json{{"evaluation", e.number}, {"values", values}, {"objective", e.objective},
-                {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"seeds", e.seeds}, {"runs", e.runs},
+                {"checks_agreeing", e.agreeing}, {"checks", e.checks}, {"seeds", e.seeds},
+                {"grain_scale", e.grain_scale}, {"runs", e.runs},
                 {"failed", e.failed}};
 }
 
@@ -171,6 +181,10 @@ sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
             throw InputError(fmt::format("--first-pass-seeds {}: allowed 1 to --seeds - 1 ({}), or 0 for no first pass",
                                          a.first_pass_seeds, a.seeds - 1));
     setup.first_pass_seeds = a.first_pass_seeds;
+    if (!(a.first_pass_grains >= 1.0 && a.first_pass_grains <= kMaxFirstPassGrainScale))
+        throw InputError(fmt::format("--first-pass-grains {:g}: allowed 1 (the scene's grains) to {:g}",
+                                     a.first_pass_grains, kMaxFirstPassGrainScale));
+    setup.first_pass_grain_scale = a.first_pass_grains;
     setup.overrides = observation_overrides(a.scene);
     setup.algorithm = a.algorithm;
     setup.max_evaluations = a.max_evals;
@@ -184,11 +198,12 @@ sweep::CalibrationSetup setup_of(const CalibrateArgs& a) {
                 throw InputError(fmt::format("--params {}: also set on the command line (allowed: fit it or set it, "
                                              "not both; --start {}=VALUE starts the search there)", f, f));
     sweep::set_start_values(setup.params, scene, starts_of(a));
-    // Both corners of the bounds must be valid scenes for every observation: checked before anything is written.
+    // Both corners of the bounds must be valid scenes for every observation, with both passes' grains:
+    // checked before anything is written.
     for (const bool upper : {false, true}) {
-        auto o = setup.overrides;
-        for (const auto& p : setup.params) o.emplace_back(p.path, upper ? p.hi : p.lo);
-        sweep::make_validation_plan(setup.file, 1, o);
+        std::vector<double> corner;
+        for (const auto& p : setup.params) corner.push_back(upper ? p.hi : p.lo);
+        for (const double scale : {1.0, setup.search_grain_scale()}) sweep::candidate_plan(setup, corner, 1, scale);
     }
     return setup;
 }
@@ -339,9 +354,11 @@ int run(const CalibrateArgs& a) {
         write_file_atomic(dir / "evaluations.csv", evaluations_csv(setup, seen));
         if (a.quiet) return;
         std::string what = e.number == 0 ? " (the scene's own values)" : "";
-        if (setup.first_pass_seeds > 0)
+        if (setup.has_first_pass()) {
+            const std::string grains = e.grain_scale == 1.0 ? "" : fmt::format(", grains x{:g}", e.grain_scale);
             what += e.number >= budget ? fmt::format(" (final pass, {} seeds)", e.seeds)
-                                       : fmt::format(" ({} seed{})", e.seeds, e.seeds == 1 ? "" : "s");
+                                       : fmt::format(" ({} seed{}{})", e.seeds, e.seeds == 1 ? "" : "s", grains);
+        }
         fmt::print(stderr, "polyroll calibrate: evaluation {}/{}{} {}: objective {:.4g} ({} of {} checks agree, {} runs{}, "
                            "{}); best {:.4g} (#{})\n",
                    e.number, budget - 1, what, values_text(setup, e.values),
@@ -389,6 +406,11 @@ Action add_calibrate_command(Command& app) {
     sub.add_option("--first-pass-seeds", a->first_pass_seeds,
                    "search with seeds 1..K (cheaper), then score the best candidate found with all --seeds and keep it "
                    "if it beats the start there (default 0: every evaluation at --seeds)");
+    sub.add_option("--first-pass-grains", a->first_pass_grains,
+                   fmt::format("search with grains this many times larger (the same fill mass: the window's coarser "
+                               "models), then score the best candidate at the scene's grains and keep it if it beats "
+                               "the start there (default 1: the scene's grains; 1 to {:g})",
+                               kMaxFirstPassGrainScale));
     sub.add_option("--max-evals", a->max_evals,
                    fmt::format("optimiser evaluations after the start (default 24; 0 to {})", kMaxEvaluations));
     sub.add_option("--algorithm", a->algorithm, "NLopt method: sbplx (default), bobyqa, cobyla, neldermead");

@@ -1,6 +1,7 @@
 // Calibration on the sweep engine with NLopt: see calibration.h.
 #include "sweep/calibration.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -10,6 +11,9 @@
 #include <nlopt.hpp>
 
 #include "sim/errors.h"
+#include "sim/grains/fill_plan.h"
+#include "sim/model_registry.h"
+#include "sim/scene/scene_json.h"
 #include "sweep/table_scoring.h"
 
 namespace polyroll::sweep {
@@ -55,6 +59,49 @@ double calibration_objective(const std::vector<ObservationScore>& scores) {
 
 double tidy_value(double v) { return std::stod(fmt::format("{:.9g}", v)); }
 
+ValidationPlan candidate_plan(const CalibrationSetup& setup, const std::vector<double>& values, int seeds,
+                              double grain_scale) {
+    auto overrides = setup.overrides;
+    for (std::size_t i = 0; i < setup.params.size(); ++i) overrides.emplace_back(setup.params[i].path, values[i]);
+    ValidationPlan vp = make_validation_plan(setup.file, seeds, overrides, true);
+    if (setup.search_grain_scale() == 1.0) return vp;
+    // with_coarser_grains sizes a material's discs by grains_per_disc where it has one, else by the
+    // grain diameter: whichever it changed is set in the point.
+    static constexpr const char* kGrainsPerDisc = "fill.material.grains_per_disc";
+    static constexpr const char* kDiameter = "fill.material.diameter_m";
+    SweepPlan plan;
+    plan.base = vp.plan.base;
+    plan.fields = vp.plan.fields;
+    plan.flags = vp.plan.flags;
+    for (const char* f : {kGrainsPerDisc, kDiameter})
+        if (std::find(plan.fields.begin(), plan.fields.end(), f) == plan.fields.end()) {
+            plan.fields.emplace_back(f);
+            plan.flags.emplace_back(f);
+        }
+    for (const PlannedRun& r : vp.plan.runs) {
+        json point = r.point;
+        const Scene scene = grain_scale == 1.0 ? Scene() : resolve_scene(run_layers(vp.plan, r));
+        const bool coarser = grain_scale != 1.0 && may_step_grains(scene);
+        if (coarser) {
+            const Scene c = with_coarser_grains(scene, grain_scale);
+            if (c.fill.material.grains_per_disc)
+                point[kGrainsPerDisc] = tidy_value(*c.fill.material.grains_per_disc);
+            else
+                point[kDiameter] = tidy_value(c.fill.material.diameter_m);
+        }
+        add_run(plan, std::move(point));
+        if (!coarser) continue;
+        try {
+            resolve_scene(run_layers(plan, plan.runs.back()));
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("--first-pass-grains {:g}: the coarser grains make a bad scene: {}",
+                                         grain_scale, e.what()));
+        }
+    }
+    vp.plan = std::move(plan);
+    return vp;
+}
+
 CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, RunPlan run_plan, bool wait_for_others,
                                  std::function<void(std::size_t)> waiting, std::function<bool()> stop_requested)
     : dir_(std::move(dir)), setup_(setup), run_plan_(std::move(run_plan)), wait_for_others_(wait_for_others),
@@ -67,12 +114,10 @@ CalibrationRuns::CalibrationRuns(fs::path dir, const CalibrationSetup& setup, Ru
     }
 }
 
-Evaluation CalibrationRuns::evaluate(const std::vector<double>& values, int seeds) {
+Evaluation CalibrationRuns::evaluate(const std::vector<double>& values, int seeds, double grain_scale) {
     const auto start = std::chrono::steady_clock::now();
     if (seeds <= 0) seeds = setup_.seeds;
-    auto overrides = setup_.overrides;
-    for (std::size_t i = 0; i < setup_.params.size(); ++i) overrides.emplace_back(setup_.params[i].path, values[i]);
-    const ValidationPlan vp = make_validation_plan(setup_.file, seeds, overrides, true);
+    const ValidationPlan vp = candidate_plan(setup_, values, seeds, grain_scale);
     // A run's place whatever the candidate: its point without the fitted fields.
     std::vector<std::string> slot;
     for (const PlannedRun& r : vp.plan.runs) {
@@ -133,6 +178,7 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values, int seed
     Evaluation e;
     e.values = values;
     e.seeds = seeds;
+    e.grain_scale = grain_scale;
     e.scores = score_validation(setup_.file, vp, outcomes, table_index);
     e.objective = calibration_objective(e.scores);
     for (const ObservationScore& s : e.scores)
@@ -151,27 +197,30 @@ Evaluation CalibrationRuns::evaluate(const std::vector<double>& values, int seed
 CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRuns& runs,
                                    const std::function<void(const Evaluation&, const Evaluation&)>& progress) {
     const std::size_t n = setup.params.size();
-    const bool first_pass = setup.first_pass_seeds > 0 && setup.first_pass_seeds < setup.seeds;
-    const int search_seeds = first_pass ? setup.first_pass_seeds : setup.seeds;
+    const bool first_pass = setup.has_first_pass();
+    const int search_seeds = setup.search_seeds();
+    const double search_scale = setup.search_grain_scale();
+    // Objectives are compared only between evaluations of the same runs: the same seeds and grains.
+    auto in_final = [&](const Evaluation& e) { return e.seeds == setup.seeds && e.grain_scale == 1.0; };
+    auto in_search = [&](const Evaluation& e) { return e.seeds == search_seeds && e.grain_scale == search_scale; };
     CalibrationOutcome out;
-    std::size_t search_best = 0;  // the best of the search's evaluations (at search_seeds)
-    bool searched = false;        // any evaluation at search_seeds yet
-    auto evaluate = [&](std::vector<double> x, int seeds) -> const Evaluation& {
+    std::size_t search_best = 0;  // the best of the search's evaluations
+    bool searched = false;        // any evaluation of the search's kind yet
+    auto evaluate = [&](std::vector<double> x, int seeds, double grain_scale) -> const Evaluation& {
         for (double& v : x) v = tidy_value(v);
-        Evaluation e = runs.evaluate(x, seeds);
+        Evaluation e = runs.evaluate(x, seeds, grain_scale);
         e.number = out.evaluations.size();
         out.evaluations.push_back(std::move(e));
         const Evaluation& last = out.evaluations.back();
-        // Objectives are compared only between evaluations over the same seeds.
-        if (last.seeds == setup.seeds && last.objective < out.evaluations[out.best].objective) out.best = last.number;
-        if (last.seeds == search_seeds && (!searched || last.objective < out.evaluations[search_best].objective)) {
+        if (in_final(last) && last.objective < out.evaluations[out.best].objective) out.best = last.number;
+        if (in_search(last) && (!searched || last.objective < out.evaluations[search_best].objective)) {
             search_best = last.number;
             searched = true;
         }
-        if (progress) progress(last, out.evaluations[last.seeds == search_seeds ? search_best : out.best]);
+        if (progress) progress(last, out.evaluations[in_search(last) ? search_best : out.best]);
         return last;
     };
-    auto record = [&](std::vector<double> x) { return evaluate(std::move(x), search_seeds).objective; };
+    auto record = [&](std::vector<double> x) { return evaluate(std::move(x), search_seeds, search_scale).objective; };
     std::vector<double> x(n), lo(n), hi(n), step(n), xtol(n);
     for (std::size_t i = 0; i < n; ++i) {
         const CalibrationParam& p = setup.params[i];
@@ -182,7 +231,7 @@ CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRun
         step[i] = 0.25 * (p.hi - p.lo);
         xtol[i] = 1e-3 * (p.hi - p.lo);
     }
-    evaluate(x, setup.seeds);  // the scene's own values: the objective before
+    evaluate(x, setup.seeds, 1.0);  // the scene's own values: the objective before
     if (setup.max_evaluations <= 0) {
         out.stop_reason = "no optimiser evaluations asked for (--max-evals 0)";
         return out;
@@ -227,15 +276,18 @@ CalibrationOutcome run_calibration(const CalibrationSetup& setup, CalibrationRun
     if (error) std::rethrow_exception(error);
     out.stop_reason = result_text(r);
     if (first_pass && searched) {
-        // The final pass: the search's best over every seed, kept if it beats the start there.
+        // The final pass: the search's best at every seed and the scene's grains, kept if it beats the
+        // start there.
         const std::vector<double> best_values = out.evaluations[search_best].values;
         const double search_objective = out.evaluations[search_best].objective;
         const std::size_t search_number = search_best;
-        const Evaluation& confirmed = evaluate(best_values, setup.seeds);
+        const Evaluation& confirmed = evaluate(best_values, setup.seeds, 1.0);
         const Evaluation& before = out.evaluations.front();
+        const std::string grains = search_scale == 1.0 ? "" : fmt::format(", grains x{:g}", search_scale);
         out.stop_reason += fmt::format(
-            "; first pass at {} seed{}: best #{} ({:.4g}); final pass at {} seeds: {:.4g} against {:.4g} for the start, {}",
-            search_seeds, search_seeds == 1 ? "" : "s", search_number, search_objective, setup.seeds,
+            "; first pass at {} seed{}{}: best #{} ({:.4g}); final pass at {} seeds: {:.4g} against {:.4g} for the "
+            "start, {}",
+            search_seeds, search_seeds == 1 ? "" : "s", grains, search_number, search_objective, setup.seeds,
             confirmed.objective, before.objective,
             out.best == confirmed.number ? "confirmed" : "not confirmed: the start is kept");
     }

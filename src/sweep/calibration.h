@@ -32,6 +32,14 @@ struct CalibrationSetup {
     // candidate is evaluated again with seeds 1..seeds (the final pass) and kept if it beats the start
     // there. 0 (or >= seeds): no first pass, every evaluation at `seeds`.
     int first_pass_seeds = 0;
+    // ... and in grains this many times larger in diameter, the same fill mass (with_coarser_grains:
+    // the window's coarser models, whose cost and errors the trade study measured). 1: the scene's
+    // own grains. Either makes a first pass; the final pass is always at the scene's grains.
+    double first_pass_grain_scale = 1.0;
+
+    int search_seeds() const { return first_pass_seeds > 0 && first_pass_seeds < seeds ? first_pass_seeds : seeds; }
+    double search_grain_scale() const { return first_pass_grain_scale > 1.0 ? first_pass_grain_scale : 1.0; }
+    bool has_first_pass() const { return search_seeds() != seeds || search_grain_scale() != 1.0; }
     std::vector<std::pair<std::string, nlohmann::ordered_json>> overrides;  // the command line's, on every run
     std::vector<CalibrationParam> params;
     std::string algorithm = "sbplx";
@@ -45,6 +53,7 @@ struct Evaluation {
     std::size_t number = 0;  // 0: the start values (the scene's own)
     std::vector<double> values;
     int seeds = 0;           // seeds 1..seeds: the setup's, or the first pass's
+    double grain_scale = 1.0;  // the grains' diameter against the scene's: 1, or the first pass's
     double objective = 0.0;
     std::size_t checks = 0, agreeing = 0;  // scorecard checks, and those that agree
     std::size_t runs = 0, failed = 0;      // the candidate's runs, and the failed ones
@@ -59,6 +68,14 @@ double calibration_objective(const std::vector<ObservationScore>& scores);
 // Candidate values as evaluated: 9 significant digits, so that tables and files read cleanly and a
 // resumed calibration's candidates are the same text.
 double tidy_value(double v);
+
+// A candidate's runs: every observation at seeds 1..seeds with the fitted fields at `values`, and the
+// grains `grain_scale` times larger where a run steps grains. With a coarser first pass in the setup,
+// the plan also names the fields that make grains coarser, whatever `grain_scale` (a full-detail run
+// leaves them out and keeps its id), so that both passes' runs are rows of one folder. Throws
+// InputError naming a value that makes a bad scene.
+ValidationPlan candidate_plan(const CalibrationSetup& setup, const std::vector<double>& values, int seeds,
+                              double grain_scale);
 
 // Thrown when the sweep of a candidate was interrupted (Ctrl-C): rerunning resumes.
 struct CalibrationInterrupted : std::runtime_error {
@@ -79,8 +96,8 @@ public:
                     bool wait_for_others = false, std::function<void(std::size_t)> waiting = {},
                     std::function<bool()> stop_requested = {});
 
-    // The candidate scored over seeds 1..seeds (0: the setup's).
-    Evaluation evaluate(const std::vector<double>& values, int seeds = 0);
+    // The candidate scored over seeds 1..seeds (0: the setup's), its grains `grain_scale` times larger.
+    Evaluation evaluate(const std::vector<double>& values, int seeds = 0, double grain_scale = 1.0);
     const SweepPlan& plan() const { return plan_; }
 
 private:
