@@ -353,12 +353,15 @@ int run(const CalibrateArgs& a) {
         seen.push_back(e);
         write_file_atomic(dir / "evaluations.csv", evaluations_csv(setup, seen));
         if (a.quiet) return;
-        std::string what = e.number == 0 ? " (the scene's own values)" : "";
+        // In one bracket: what the candidate is, and with a first pass, what its runs were.
+        std::string what = e.number == 0 ? "the scene's own values" : "";
         if (setup.has_first_pass()) {
             const std::string grains = e.grain_scale == 1.0 ? "" : fmt::format(", grains x{:g}", e.grain_scale);
-            what += e.number >= budget ? fmt::format(" (final pass, {} seeds)", e.seeds)
-                                       : fmt::format(" ({} seed{}{})", e.seeds, e.seeds == 1 ? "" : "s", grains);
+            what += (what.empty() ? "" : ", ") +
+                    (e.number >= budget ? fmt::format("final pass, {} seeds", e.seeds)
+                                        : fmt::format("{} seed{}{}", e.seeds, e.seeds == 1 ? "" : "s", grains));
         }
+        if (!what.empty()) what = " (" + what + ")";
         fmt::print(stderr, "polyroll calibrate: evaluation {}/{}{} {}: objective {:.4g} ({} of {} checks agree, {} runs{}, "
                            "{}); best {:.4g} (#{})\n",
                    e.number, budget - 1, what, values_text(setup, e.values),
