@@ -5,13 +5,15 @@
 
 #include "test_helpers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
+
+#include "sweep/results_table.h"
 
 namespace fs = std::filesystem;
 
@@ -32,50 +34,23 @@ using polyroll::test::kPolyrollExe;
 const char* kSceneFlags = " --polygon hexagon-small --fill 0.25 --material bb --ramp wooden --angle 25 --fidelity draft"
                           " --set fill.material.grains_per_disc=null --closure none";
 
-// The mean of one column of a results table.
-double column_mean(const std::string& table, const std::string& column) {
-    std::istringstream in(table);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    std::stringstream hs(line);
-    for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
-    const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), column) - header.begin());
-    REQUIRE(at < header.size());
+// The mean of one column of a results table (the sweep's own reader: sweep/results_table.h).
+double column_mean(const fs::path& results_csv, const std::string& column) {
+    const polyroll::sweep::TableFile t = polyroll::sweep::read_table(results_csv);
+    REQUIRE(polyroll::sweep::find_column(t.header, column));
+    REQUIRE_FALSE(t.rows.empty());
     double sum = 0.0;
-    int n = 0;
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream ls(line);
-        for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
-        REQUIRE(at < cells.size());
-        sum += std::stod(cells[at]);
-        ++n;
-    }
-    REQUIRE(n > 0);
-    return sum / n;
+    for (const auto& row : t.rows) sum += std::stod(polyroll::sweep::cell(t, row, column));
+    return sum / static_cast<double>(t.rows.size());
 }
 
 // One column of a results table, by run id.
-std::map<std::string, double> column_by_run(const std::string& table, const std::string& column) {
-    std::istringstream in(table);
-    std::string line;
-    std::getline(in, line);
-    std::vector<std::string> header;
-    std::stringstream hs(line);
-    for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
-    const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), column) - header.begin());
-    const auto id = static_cast<std::size_t>(std::find(header.begin(), header.end(), "run_id") - header.begin());
-    REQUIRE(at < header.size());
-    REQUIRE(id < header.size());
+std::map<std::string, double> column_by_run(const fs::path& results_csv, const std::string& column) {
+    const polyroll::sweep::TableFile t = polyroll::sweep::read_table(results_csv);
+    REQUIRE(polyroll::sweep::find_column(t.header, column));
     std::map<std::string, double> out;
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream ls(line);
-        for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(cell);
-        REQUIRE(std::max(at, id) < cells.size());
-        out[cells[id]] = std::stod(cells[at]);
-    }
+    for (const auto& row : t.rows)
+        out[polyroll::sweep::cell(t, row, "run_id")] = std::stod(polyroll::sweep::cell(t, row, column));
     return out;
 }
 
@@ -116,7 +91,7 @@ TEST_CASE("calibrate: finds again the restitution polyroll was run with, within 
                                    " --seed 11,12,13,14 --jobs 2 -q --out " + (scratch / "truth").string());
     INFO(truth.out);
     REQUIRE(truth.exit_code == 0);
-    const double observed = column_mean(read_file(scratch / "truth" / "results.csv"), "terminal_velocity_m_s");
+    const double observed = column_mean(scratch / "truth" / "results.csv", "terminal_velocity_m_s");
     // Tolerance: about the standard error of a 4-seed mean (0.01 m/s / sqrt(4) = 0.005 m/s).
     const fs::path obs = write_text(scratch / "lab.json", lab_observations(observed, 0.006));
     const fs::path out = scratch / "out";
@@ -209,7 +184,7 @@ TEST_CASE("calibrate: a first pass at one seed in coarser grains searches, and t
     // The search's runs have grains 1.5 times larger in diameter (these column discs are sized by the
     // grain's diameter), the same fill mass: fewer discs than every run in the scene's grains.
     const auto plan = nlohmann::json::parse(read_file(out / "plan.json"));
-    const auto discs = column_by_run(read_file(out / "results.csv"), "grains");
+    const auto discs = column_by_run(out / "results.csv", "grains");
     int most_coarse = 0, fewest_fine = 1 << 30, coarse_runs = 0;
     for (const auto& r : plan["runs"]) {
         const int n = static_cast<int>(discs.at(r["id"].get<std::string>()));
