@@ -40,7 +40,7 @@ const std::vector<std::string> kSceneFileFields = {
     "release.pose", "release.tilt_deg", "release.pile_tilt_deg",
     "fidelity.preset", "fidelity.step_hz", "fidelity.substeps", "fidelity.velocity_iterations",
     "fidelity.position_iterations",
-    "fidelity.frame",
+    "fidelity.frame", "fidelity.contacts",
     "run.model", "run.seed", "run.time_limit_s", "run.sample_hz", "run.gravity_m_s2", "run.settle_time_s",
     "run.rest_speed_m_s", "run.rest_time_s", "run.end_at_impact",
     "dem3d.contact_time_s", "dem3d.time_step_share", "dem3d.channel_width_m",

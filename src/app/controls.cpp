@@ -140,7 +140,7 @@ json json_of(const FieldValue& value) {
         [](const auto& v) -> json {
             using V = std::decay_t<decltype(v)>;
             if constexpr (std::is_same_v<V, std::optional<double>>) return v ? json(*v) : json(nullptr);
-            else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model> || std::is_same_v<V, EngineFrame>) return to_string(v);
+            else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model> || std::is_same_v<V, EngineFrame> || std::is_same_v<V, GrainContacts>) return to_string(v);
             else return v;
         },
         value);

@@ -154,8 +154,10 @@ Action add_bench_command(Command& app) {
         "--dem3d", opts->dem3d_only, "measure only the 3D reference (--model dem3d: one Yade run, about a minute)");
     Flag scaling_flag = sub.add_flag(
         "--scaling", opts->scaling_only,
-        "measure only the grain engine's cost against the grains: six BB scenes from 124 to about 2,200 discs, "
-        "the cost per disc and step and Box2D's contacts per disc (about 30 s a repeat)");
+        "measure only the grain engine's cost against the grains: six BB scenes from about 140 to 2,550 discs, "
+        "each stepped in the ramp's frame, in the pile's, and in the pile's with contacts for near grains only: "
+        "the cost per disc and step and Box2D's contacts per disc (two tables, from the release and from 3 s; "
+        "several minutes a repeat)");
     Flag calibration_flag = sub.add_flag(
         "--calibration", opts->calibration_only,
         "measure only the calibration's cost: one evaluation of the bundled observations at standard, in the "

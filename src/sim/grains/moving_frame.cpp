@@ -29,6 +29,7 @@ float frame_velocity_units(const SimWorld& w) {
 
 void step_in_frame(SimWorld& w, float dt, float u) {
     const FidelityParams& f = w.scene.fidelity;
+    if (w.near_pairs) w.near_pairs->before_step(w);
     if (u == 0.0f) {
         w.world->Step(dt, f.velocity_iterations, f.position_iterations);
         return;

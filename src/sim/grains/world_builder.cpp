@@ -70,6 +70,13 @@ std::unique_ptr<SimWorld> empty_world(const Scene& scene, std::vector<ForceHook>
     w->materials = std::make_unique<ContactMaterials>(w->scene);
     w->world = std::make_unique<b2World>(to_b2(w->gravity_m_s2, w->units));
     w->world->SetContactListener(w->materials.get());
+    if (scene.fidelity.contacts == GrainContacts::near) {
+        // A pair is given its contact within Box2D's own length tolerance of touching, and keeps it
+        // until twice that apart: the reach decides only how often a contact is made and unmade,
+        // never which pairs touch (near_pairs.h).
+        w->near_pairs = std::make_unique<NearPairs>(b2_linearSlop, 2.0f * b2_linearSlop);
+        w->world->SetContactFilter(w->near_pairs.get());
+    }
     w->world->SetAllowSleeping(true);
     // Continuous collision in Box2D 2.4 only guards dynamic-vs-static pairs, here the shell on the
     // ramp. The ramp is 5 cm thick and the tracker stops any run whose shell nears 1.6 engine

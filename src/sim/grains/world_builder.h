@@ -13,6 +13,7 @@
 #include "sim/grains/engine_units.h"
 #include "sim/grains/fill_plan.h"
 #include "sim/grains/force_hook.h"
+#include "sim/grains/near_pairs.h"
 #include "sim/geometry/geometry.h"
 #include "sim/scene/scene.h"
 #include "sim/geometry/shell_pose.h"
@@ -49,6 +50,7 @@ struct SimWorld {
     double balance_correction_deg = 0.0;    // turn that put the whole centre of mass past balance
 
     std::unique_ptr<ContactMaterials> materials;  // declared before the world: outlives it
+    std::unique_ptr<NearPairs> near_pairs;        // likewise; null: Box2D's own contacts (near_pairs.h)
     std::unique_ptr<b2World> world;
     b2Body* ramp = nullptr;  // static; kinematic where the engine steps in the pile's frame (moving_frame.h)
     b2Body* shell = nullptr;

@@ -83,6 +83,11 @@ struct ReleaseParams {
 // the pile, which gives the same motion in exact arithmetic and keeps Box2D's contact lists short.
 enum class EngineFrame { ramp, pile };
 
+// Which pairs of grains the grain engine keeps a contact for (near_pairs.h): every pair whose boxes,
+// fattened by Box2D's fixed margin, overlap (boxes, Box2D's own), or only those that touch or nearly
+// touch (near). The same motion in exact arithmetic: a contact that does not touch does nothing.
+enum class GrainContacts { boxes, near };
+
 // Time step, sub-steps and solver iterations: what the user pays for accuracy.
 struct FidelityParams {
     std::string preset;
@@ -91,6 +96,7 @@ struct FidelityParams {
     int velocity_iterations = 0;
     int position_iterations = 0;
     EngineFrame frame = EngineFrame::ramp;  // the grain engine's frame; what runs report is always the ramp's
+    GrainContacts contacts = GrainContacts::boxes;  // which grain pairs the engine keeps a contact for
 };
 
 // Which physics computes the run: the grain simulation, or one of the experimenters' reduced models

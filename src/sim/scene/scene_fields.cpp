@@ -236,6 +236,11 @@ std::vector<SceneField> make_table() {
             .help("the frame the grain engine steps in: the ramp's (ramp), or one moving down the track with the "
                   "pile (pile), the same motion in exact arithmetic with shorter contact lists; every output is "
                   "in the ramp's frame either way"),
+        Row("fidelity.contacts", T::choice, member<&Scene::fidelity, &FidelityParams::contacts>())
+            .choices<grain_contacts_names, grain_contacts_named>().flag("--contacts")
+            .help("which pairs of grains the grain engine keeps a contact for: every pair whose boxes, fattened "
+                  "by Box2D's margin (1 mm at the usual 1 cm engine unit), overlap (boxes, Box2D's own), or only pairs that touch or nearly "
+                  "touch (near), the same motion in exact arithmetic with a fraction of the contacts"),
 
         // --- run
         Row("run.model", T::choice, member<&Scene::run, &RunParams::model>())

@@ -18,7 +18,7 @@
 namespace polyroll {
 
 // One field's value, whatever its type.
-using FieldValue = std::variant<int, double, std::optional<double>, std::uint64_t, std::string, ReleasePose, Model, EngineFrame>;
+using FieldValue = std::variant<int, double, std::optional<double>, std::uint64_t, std::string, ReleasePose, Model, EngineFrame, GrainContacts>;
 
 enum class FieldType {
     integer,          // int: a whole number

@@ -363,7 +363,7 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                     if (!v.empty()) (*node)[key] = v;  // a preset name only when there is one
                 } else if constexpr (std::is_same_v<V, std::optional<double>>) {
                     (*node)[key] = v ? json(*v) : json(nullptr);
-                } else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model> || std::is_same_v<V, EngineFrame>) {
+                } else if constexpr (std::is_same_v<V, ReleasePose> || std::is_same_v<V, Model> || std::is_same_v<V, EngineFrame> || std::is_same_v<V, GrainContacts>) {
                     (*node)[key] = to_string(v);
                 } else {
                     (*node)[key] = v;

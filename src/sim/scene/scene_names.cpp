@@ -24,6 +24,11 @@ constexpr std::array<std::pair<EngineFrame, std::string_view>, 2> kFrames = {{
     {EngineFrame::pile, "pile"},
 }};
 
+constexpr std::array<std::pair<GrainContacts, std::string_view>, 2> kContacts = {{
+    {GrainContacts::boxes, "boxes"},
+    {GrainContacts::near, "near"},
+}};
+
 template <class E, std::size_t N>
 std::string name_of(const std::array<std::pair<E, std::string_view>, N>& table, E value) {
     for (const auto& [v, name] : table)
@@ -56,6 +61,7 @@ std::string to_string(Model model) {
     return "unknown";
 }
 std::string to_string(EngineFrame frame) { return name_of(kFrames, frame); }
+std::string to_string(GrainContacts contacts) { return name_of(kContacts, contacts); }
 
 const std::vector<std::string>& release_pose_names() {
     static const std::vector<std::string> names = names_of(kPoses);
@@ -83,5 +89,10 @@ const std::vector<std::string>& engine_frame_names() {
     return names;
 }
 std::optional<EngineFrame> engine_frame_named(std::string_view name) { return value_named(kFrames, name); }
+const std::vector<std::string>& grain_contacts_names() {
+    static const std::vector<std::string> names = names_of(kContacts);
+    return names;
+}
+std::optional<GrainContacts> grain_contacts_named(std::string_view name) { return value_named(kContacts, name); }
 
 }  // namespace polyroll

@@ -14,6 +14,7 @@ namespace polyroll {
 std::string to_string(ReleasePose pose);
 std::string to_string(Model model);
 std::string to_string(EngineFrame frame);
+std::string to_string(GrainContacts contacts);
 
 // Every value's name: the poses in the enum's order ("vertex", "face", "tipped"); the models' names
 // from their registry rows in the rows' order, then "auto" (model_row.h).
@@ -26,5 +27,8 @@ std::optional<Model> model_named(std::string_view name);
 // "ramp", "pile"
 const std::vector<std::string>& engine_frame_names();
 std::optional<EngineFrame> engine_frame_named(std::string_view name);
+// "boxes", "near"
+const std::vector<std::string>& grain_contacts_names();
+std::optional<GrainContacts> grain_contacts_named(std::string_view name);
 
 }  // namespace polyroll

@@ -1,0 +1,59 @@
+// Grain-on-grain contacts kept for the pairs that touch or nearly touch, instead of every pair whose
+// fattened boxes overlap.
+//
+// Why: Box2D 2.4.1 keeps a contact for every pair of fixtures whose boxes, fattened by a fixed
+// 0.1-unit margin (1 mm at the engine's unit: half a BB disc), overlap. In a big pile that is 10-15
+// contacts a disc of which fewer than 2 touch, and every step walks all of them: evaluates each
+// (Collide), walks them while building islands and while checking new pairs (AddPair). A contact
+// whose circles do not touch carries nothing into the solver (no manifold point, so no impulse to
+// warm-start), so a pile whose far pairs have no contact at all steps the same motion.
+//
+// How, before each engine step: every grain-on-grain contact that does not touch and whose circles
+// are further apart than `keep_units` is destroyed, and every pair of grains closer than
+// `reach_units` (found on a grid of cells a disc across) is given a contact if it has none. The
+// engine's own pair search still runs; a contact filter refuses the grain pairs it finds further
+// apart than `reach_units`. Box2D finds new pairs at the end of a step, at the positions the next
+// step's contacts are evaluated at, and this runs at those same positions (nothing moves between
+// the two but ShiftOrigin, which moves everything alike), so every pair that touches when a step
+// begins has its contact. The order of the contact list changes, and with it the solver's order:
+// rounding, grown through the pile's chaos, as the pile's frame does (moving_frame.h).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <box2d/box2d.h>
+
+namespace polyroll {
+
+struct SimWorld;
+
+class NearPairs : public b2ContactFilter {
+public:
+    NearPairs(float reach_units, float keep_units) : reach_units_(reach_units), keep_units_(keep_units) {}
+
+    // Box2D's own pair search: grain pairs further apart than the reach are refused.
+    bool ShouldCollide(b2Fixture* a, b2Fixture* b) override;
+
+    // Before each engine step: far contacts destroyed, near pairs given one.
+    void before_step(SimWorld& w);
+
+private:
+    void map_proxies(SimWorld& w);
+    bool within(size_t i, size_t j, b2Vec2 pi, b2Vec2 pj, float gap) const;
+
+    static constexpr uint64_t kEmpty = ~uint64_t{0};
+    float reach_units_;
+    float keep_units_;
+    float cell_units_ = 0.0f;
+    std::vector<b2FixtureProxy*> proxies_;  // by grain index, found once after the pour
+    std::vector<float> radius_;             // by grain index
+    // Scratch, kept between steps to avoid allocating: the grains' positions, the pairs that have a
+    // contact (an open-addressed set of index pairs), the cell grid.
+    std::vector<b2Vec2> position_;
+    std::vector<uint64_t> pair_set_;
+    std::vector<int> cell_x_, cell_y_, bucket_start_, cursor_, order_;
+};
+
+}  // namespace polyroll
