@@ -65,7 +65,7 @@ TEST_CASE("near contacts: every pair of grains that touches when a step begins h
     CHECK(w->units.to_m(w->shell->GetPosition().x) - w->start_centre_x_m > 0.05);
 }
 
-TEST_CASE("near contacts: the first steps match Box2D's own contacts to rounding; rolling, fewer than half the contacts",
+TEST_CASE("near contacts: the first steps match Box2D's own contacts to rounding, and rolling with fewer than half the contacts",
           "[near_pairs]") {
     auto boxes = build_world(with_contacts("boxes"));
     auto near = build_world(with_contacts("near"));

@@ -104,9 +104,12 @@ TEST_CASE("ramp profile: a sagging track carries a filled octagon past where a s
           "[ramp_profile]") {
     // The same chord angle: the sagging track is steeper near the top, so the polygon rolls further;
     // it comes to rest where the local slope has fallen below the one at which it rolls a straight
-    // track to the end (measured, seeds 1-5: 14.5 degrees).
-    const RunResult straight = run_scene(octagon_bbs(13.0, 0.0));
-    const RunResult curved = run_scene(octagon_bbs(13.0, 1.7));
+    // track to the end (measured, seeds 1-5: 14.5 degrees). At 12.5 degrees every seed 1-5 stops
+    // within 0.2 m on the straight track and after 1.07-1.42 m on the sagging one, with Box2D's own
+    // contacts and with near ones (2026-12-04); 13 degrees lies on the straight track's tipping point,
+    // where one to three seeds of five roll to the end.
+    const RunResult straight = run_scene(octagon_bbs(12.5, 0.0));
+    const RunResult curved = run_scene(octagon_bbs(12.5, 1.7));
     const RunResult rolls = run_scene(octagon_bbs(14.5, 0.0));
     for (const RunResult* r : {&straight, &curved, &rolls}) {
         INFO(to_string(r->measured.behaviour) << " " << r->measured.divergence);

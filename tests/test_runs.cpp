@@ -295,7 +295,8 @@ TEST_CASE("one disc per grain: energy never created and every disc stays inside"
 // to one another than Box2D's fixed margin, so each disc keeps more contacts there: the measured
 // reason its grains cost more each (docs/engine-cost.md).
 TEST_CASE("the engine's load: grains, contacts near and touching, per disc", "[runs][bench]") {
-    const Scene small = test::scene_with(json::parse(R"({"run": {"model": "grains"}})"));
+    // Box2D's own contacts (fidelity.contacts boxes); near contacts below.
+    const Scene small = test::scene_with(json::parse(R"({"run": {"model": "grains"}, "fidelity": {"contacts": "boxes"}})"));
     const EngineLoad a = measure_engine_load(small, 300);
     CHECK(a.grains == 143);  // the default scene: 124 discs at a level of r, 143 at 1.15 r (closure pile-bulk)
     CHECK(a.wall_s > 0.0);
@@ -307,11 +308,22 @@ TEST_CASE("the engine's load: grains, contacts near and touching, per disc", "[r
     CHECK(later.grains == a.grains);
     CHECK(later.shell_speed_m_s > 0.1);
 
-    const Scene large = test::scene_with(
-        json::parse(R"({"shell": {"preset": "hexagon-large"}, "fill": {"ratio": 0.5}, "run": {"model": "grains"}})"));
+    const char* large_json =
+        R"({"shell": {"preset": "hexagon-large"}, "fill": {"ratio": 0.5}, "run": {"model": "grains"}, "fidelity": {"contacts": "boxes"}})";
+    const Scene large = test::scene_with(json::parse(large_json));
     const EngineLoad b = measure_engine_load(large, 300);
     CHECK(b.grains > 1400);
     CHECK(b.contacts_per_grain > 1.3 * a.contacts_per_grain);
     // Touching contacts per disc are a property of the packing, about the same in both piles.
     CHECK(b.touching_per_grain == Approx(a.touching_per_grain).epsilon(0.5));
+
+    // Near contacts (sim/grains/near_pairs.h): the touching pairs and the few within Box2D's slop of
+    // touching, as many a disc in the big pile as in the small one.
+    Scene small_near = small, large_near = large;
+    small_near.fidelity.contacts = large_near.fidelity.contacts = GrainContacts::near;
+    const EngineLoad an = measure_engine_load(small_near, 300), bn = measure_engine_load(large_near, 300);
+    CHECK(an.contacts_per_grain < 0.6 * a.contacts_per_grain);
+    CHECK(bn.contacts_per_grain < 0.6 * b.contacts_per_grain);
+    CHECK(bn.contacts_per_grain == Approx(an.contacts_per_grain).epsilon(0.3));
+    CHECK(bn.touching_per_grain == Approx(b.touching_per_grain).epsilon(0.5));
 }
