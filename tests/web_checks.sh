@@ -6,7 +6,7 @@
 #      program gives (tests/web_preset_check.py: the page runs each preset to its end with key G and
 #      exports its lanes' summaries with key E; `polyroll run --scene` runs the same scenes): the
 #      same behaviour, and a distance within 1 % of the native run's or inside the native seeds 1 to
-#      5's spread; any other outcome fails;
+#      20's spread; any other outcome fails;
 #   2. for the default scene and `race`, every lane's first face impact is the one `polyroll run
 #      --scene` gives for the same scene (its time within one tracker step, its position within 1 %:
 #      the same C++ compiled to WebAssembly, only floating-point details may differ);
