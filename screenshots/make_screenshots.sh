@@ -21,7 +21,7 @@ cp "$work/rice/frame_000090.png" "$here/render-follow-rice.png"            # t =
 sandbox() { xvfb-run -a -s "-screen 0 1280x800x24" "$build/polyroll-sandbox" "$@" >/dev/null; }
 sandbox --screenshot "$here/sandbox-default.png" --frames 30                      # t = 0.5 s
 sandbox --preset race --screenshot "$here/sandbox-race.png" --frames 80           # t = 1.33 s
-sandbox --preset stops-abruptly --screenshot "$here/sandbox-stopped.png" --frames 660  # t = 11 s, past its stop (8.8 s)
+sandbox --preset stops-abruptly --screenshot "$here/sandbox-stopped.png" --frames 660  # t = 11 s, past its stop (8.0 s)
 # A costly scene stepped as asked: the panel says it costs more than real time here and offers the
 # cheaper model; the status band, a capture's, claims no rate (each frame steps 1/60 s).
 printf '%s\n' '{"shell": "hexagon-large", "fill": {"ratio": 0.8, "material": "rice"}, "run": {"model": "grains"}}' \

@@ -149,7 +149,7 @@ TEST_CASE("the sandbox plays at real time with the physics beside the drawing", 
 // picture the back buffer holds after many frames of that must be the one a swapped, fully redrawn
 // window holds, pixel for pixel (the panels kept from earlier frames, the status band and plots
 // copied as they change), and the scene drawn only where its list changed (render/changed_regions.h).
-// The race's four lanes move everywhere; the stops-abruptly octagon's pile comes to rest at 8.8 s,
+// The race's four lanes move everywhere; the stops-abruptly octagon's pile comes to rest at 8.0 s,
 // where a few grains still settle in small regions inside a still pile (a region's edge crossing a
 // disc there once left a row of pixels blended twice: changed_regions.h, hold_whole_discs).
 TEST_CASE("the window shown in parts holds the same picture as the window swapped whole", "[app][sandbox]") {
