@@ -28,6 +28,21 @@ bool touches_with_contact(b2Body* a, const b2Body* b) {
     return false;
 }
 
+// Adds the pairs of grains that touch, and those of them without a contact, to the counts.
+void count_touching_pairs(const SimWorld& w, long& touching, long& missing) {
+    const size_t n = w.grains.size();
+    for (size_t i = 0; i < n; ++i) {
+        const float ri = w.grains[i]->GetFixtureList()->GetShape()->m_radius;
+        for (size_t j = i + 1; j < n; ++j) {
+            const float rj = w.grains[j]->GetFixtureList()->GetShape()->m_radius;
+            const float reach = ri + rj;
+            if (b2DistanceSquared(w.grains[i]->GetPosition(), w.grains[j]->GetPosition()) > reach * reach) continue;
+            ++touching;
+            if (!touches_with_contact(w.grains[i], w.grains[j])) ++missing;
+        }
+    }
+}
+
 }  // namespace
 
 TEST_CASE("near contacts: every pair of grains that touches when a step begins has its contact", "[near_pairs]") {
@@ -44,18 +59,7 @@ TEST_CASE("near contacts: every pair of grains that touches when a step begins h
         // What the engine step does first (and again here: a second pass at the same positions adds
         // and removes nothing), so the contacts below are the ones the step's Collide evaluates.
         w->near_pairs->before_step(*w);
-        if (step % 4 == 0) {
-            for (size_t i = 0; i < n; ++i) {
-                const float ri = w->grains[i]->GetFixtureList()->GetShape()->m_radius;
-                for (size_t j = i + 1; j < n; ++j) {
-                    const float rj = w->grains[j]->GetFixtureList()->GetShape()->m_radius;
-                    const float reach = ri + rj;
-                    if (b2DistanceSquared(w->grains[i]->GetPosition(), w->grains[j]->GetPosition()) > reach * reach) continue;
-                    ++touching;
-                    if (!touches_with_contact(w->grains[i], w->grains[j])) ++missing;
-                }
-            }
-        }
+        if (step % 4 == 0) count_touching_pairs(*w, touching, missing);
         w->step();
     }
     CAPTURE(touching);
@@ -63,6 +67,29 @@ TEST_CASE("near contacts: every pair of grains that touches when a step begins h
     CHECK(missing == 0);
     // The shell rolled well away from its release, so the grains moved.
     CHECK(w->units.to_m(w->shell->GetPosition().x) - w->start_centre_x_m > 0.05);
+}
+
+TEST_CASE("near contacts: with a grain flown far from the pile, the cells are hashed and every touching pair keeps its contact",
+          "[near_pairs]") {
+    // The ramp's frame, where grains travel furthest between steps, as the first test.
+    auto w = build_world(with_contacts("near", "ramp"));
+    const size_t n = w->grains.size();
+    w->near_pairs->before_step(*w);
+    REQUIRE(w->near_pairs->dense_grid());  // a pile's cells: the dense grid
+    // One grain a kilometre from the pile, as a grain that left through a wall would fly off: a dense
+    // grid over both would hold millions of cells, so the pass hashes them into buckets instead.
+    b2Body* flown = w->grains.front();
+    flown->SetTransform(flown->GetPosition() + b2Vec2(1.0e5f, 0.0f), flown->GetAngle());
+    long touching = 0, missing = 0;
+    for (int step = 0; step < 800; ++step) {
+        w->near_pairs->before_step(*w);
+        REQUIRE_FALSE(w->near_pairs->dense_grid());
+        if (step % 4 == 0) count_touching_pairs(*w, touching, missing);
+        w->step();
+    }
+    CAPTURE(touching);
+    CHECK(touching > 100 * static_cast<long>(n));
+    CHECK(missing == 0);
 }
 
 TEST_CASE("near contacts: the first steps match Box2D's own contacts to rounding, and rolling with fewer than half the contacts",

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "sim/grains/world_builder.h"
 
@@ -27,24 +28,12 @@ struct AllProxies {
     }
 };
 
-uint64_t pair_key(size_t i, size_t j) {
-    if (i > j) std::swap(i, j);
-    return (static_cast<uint64_t>(i) << 32) | static_cast<uint64_t>(j);
-}
-
-size_t slot_of(uint64_t key, size_t mask) { return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask; }
-
 }  // namespace
 
 bool NearPairs::ShouldCollide(b2Fixture* a, b2Fixture* b) {
     const size_t ta = tag_of(a), tb = tag_of(b);
     if (ta == 0 || tb == 0) return b2ContactFilter::ShouldCollide(a, b);
     return within(ta - 1, tb - 1, a->GetBody()->GetPosition(), b->GetBody()->GetPosition(), reach_units_);
-}
-
-bool NearPairs::within(size_t i, size_t j, b2Vec2 pi, b2Vec2 pj, float gap) const {
-    const float reach = radius_[i] + radius_[j] + gap;
-    return b2DistanceSquared(pi, pj) <= reach * reach;
 }
 
 void NearPairs::map_proxies(SimWorld& w) {
@@ -67,6 +56,81 @@ void NearPairs::map_proxies(SimWorld& w) {
     cell_units_ = 2.0f * *std::max_element(radius_.begin(), radius_.end()) + reach_units_;
 }
 
+void NearPairs::prune_contacts(SimWorld& w) {
+    const size_t n = w.grains.size();
+    b2ContactManager& cm = contact_manager(*w.world);
+    kept_pairs_.clear();
+    kept_start_.assign(n + 1, 0);
+    for (b2Contact* c = w.world->GetContactList(); c != nullptr;) {
+        b2Contact* next = c->GetNext();
+        const size_t ta = tag_of(c->GetFixtureA()), tb = tag_of(c->GetFixtureB());
+        if (ta != 0 && tb != 0) {
+            const size_t i = std::min(ta, tb) - 1, j = std::max(ta, tb) - 1;
+            if (!c->IsTouching() && !within(i, j, position_[i], position_[j], keep_units_)) {
+                cm.Destroy(c);
+            } else {
+                kept_pairs_.push_back((static_cast<uint64_t>(i) << 32) | j);
+                ++kept_start_[i + 1];
+            }
+        }
+        c = next;
+    }
+    // The kept pairs as lists by their lower grain (a counting sort): a grain has a few.
+    for (size_t i = 0; i < n; ++i) kept_start_[i + 1] += kept_start_[i];
+    kept_other_.resize(kept_pairs_.size());
+    cursor_.assign(kept_start_.begin(), kept_start_.end() - 1);
+    for (const uint64_t key : kept_pairs_) kept_other_[cursor_[key >> 32]++] = static_cast<int>(key & 0xFFFFFFFFu);
+}
+
+bool NearPairs::has_contact(size_t i, size_t j) const {
+    for (int k = kept_start_[i]; k < kept_start_[i + 1]; ++k) {
+        if (static_cast<size_t>(kept_other_[k]) == j) return true;
+    }
+    return false;
+}
+
+size_t NearPairs::cell_of(int cx, int cy) const {
+    if (dense_) {
+        if (cx < grid_x0_ || cy < grid_y0_ || cx - grid_x0_ >= grid_w_ || cy - grid_y0_ >= grid_h_) return buckets_;
+        return static_cast<size_t>(cy - grid_y0_) * static_cast<size_t>(grid_w_) + static_cast<size_t>(cx - grid_x0_);
+    }
+    const auto h = static_cast<uint32_t>(cx) * 73856093u ^ static_cast<uint32_t>(cy) * 19349663u;
+    return static_cast<size_t>(h) & (buckets_ - 1);
+}
+
+void NearPairs::sort_into_cells(size_t n) {
+    cell_x_.resize(n);
+    cell_y_.resize(n);
+    int x_min = std::numeric_limits<int>::max(), y_min = x_min;
+    int x_max = std::numeric_limits<int>::min(), y_max = x_max;
+    for (size_t i = 0; i < n; ++i) {
+        cell_x_[i] = static_cast<int>(std::floor(position_[i].x / cell_units_));
+        cell_y_[i] = static_cast<int>(std::floor(position_[i].y / cell_units_));
+        x_min = std::min(x_min, cell_x_[i]);
+        x_max = std::max(x_max, cell_x_[i]);
+        y_min = std::min(y_min, cell_y_[i]);
+        y_max = std::max(y_max, cell_y_[i]);
+    }
+    // A pile fills its cells' box about half; a grain flown far away would make the box huge.
+    const int64_t w = int64_t{x_max} - x_min + 1, h = int64_t{y_max} - y_min + 1;
+    dense_ = w * h <= 8 * static_cast<int64_t>(n) + 4096;
+    if (dense_) {
+        grid_x0_ = x_min;
+        grid_y0_ = y_min;
+        grid_w_ = static_cast<int>(w);
+        grid_h_ = static_cast<int>(h);
+        buckets_ = static_cast<size_t>(w * h);
+    } else {
+        buckets_ = std::bit_ceil(2 * n);
+    }
+    cell_start_.assign(buckets_ + 1, 0);
+    for (size_t i = 0; i < n; ++i) ++cell_start_[cell_of(cell_x_[i], cell_y_[i]) + 1];
+    for (size_t k = 0; k < buckets_; ++k) cell_start_[k + 1] += cell_start_[k];
+    cursor_.assign(cell_start_.begin(), cell_start_.end() - 1);
+    order_.resize(n);
+    for (size_t i = 0; i < n; ++i) order_[cursor_[cell_of(cell_x_[i], cell_y_[i])]++] = static_cast<int>(i);
+}
+
 void NearPairs::before_step(SimWorld& w) {
     const size_t n = w.grains.size();
     if (n < 2) return;
@@ -77,59 +141,19 @@ void NearPairs::before_step(SimWorld& w) {
     for (size_t i = 0; i < n; ++i) position_[i] = w.grains[i]->GetPosition();
 
     // Far grain contacts go (they do not touch, so they hold no impulse); the rest are remembered.
-    const size_t set_size = std::bit_ceil(4 * static_cast<size_t>(w.world->GetContactCount()) + 16);
-    const size_t set_mask = set_size - 1;
-    pair_set_.assign(set_size, kEmpty);
-    for (b2Contact* c = w.world->GetContactList(); c != nullptr;) {
-        b2Contact* next = c->GetNext();
-        const size_t ta = tag_of(c->GetFixtureA()), tb = tag_of(c->GetFixtureB());
-        if (ta != 0 && tb != 0) {
-            const size_t i = ta - 1, j = tb - 1;
-            if (!c->IsTouching() && !within(i, j, position_[i], position_[j], keep_units_)) {
-                cm.Destroy(c);
-            } else {
-                const uint64_t key = pair_key(i, j);
-                size_t s = slot_of(key, set_mask);
-                while (pair_set_[s] != kEmpty) s = (s + 1) & set_mask;
-                pair_set_[s] = key;
-            }
-        }
-        c = next;
-    }
-    auto has_contact = [&](size_t i, size_t j) {
-        const uint64_t key = pair_key(i, j);
-        for (size_t s = slot_of(key, set_mask); pair_set_[s] != kEmpty; s = (s + 1) & set_mask) {
-            if (pair_set_[s] == key) return true;
-        }
-        return false;
-    };
+    prune_contacts(w);
 
-    // Near pairs, found on a grid of cells at least one reach across, hashed into buckets.
-    const size_t buckets = std::bit_ceil(2 * n);
-    cell_x_.resize(n);
-    cell_y_.resize(n);
-    order_.resize(n);
-    bucket_start_.assign(buckets + 1, 0);
-    auto bucket_of = [&](int cx, int cy) {
-        const auto h = static_cast<uint32_t>(cx) * 73856093u ^ static_cast<uint32_t>(cy) * 19349663u;
-        return static_cast<size_t>(h) & (buckets - 1);
-    };
-    for (size_t i = 0; i < n; ++i) {
-        cell_x_[i] = static_cast<int>(std::floor(position_[i].x / cell_units_));
-        cell_y_[i] = static_cast<int>(std::floor(position_[i].y / cell_units_));
-        ++bucket_start_[bucket_of(cell_x_[i], cell_y_[i]) + 1];
-    }
-    for (size_t k = 0; k < buckets; ++k) bucket_start_[k + 1] += bucket_start_[k];
-    cursor_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (size_t i = 0; i < n; ++i) order_[cursor_[bucket_of(cell_x_[i], cell_y_[i])]++] = static_cast<int>(i);
+    // Near pairs, by grain and then by the cells around it (the order the contacts are made in).
+    sort_into_cells(n);
     for (size_t i = 0; i < n; ++i) {
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
                 const int cx = cell_x_[i] + dx, cy = cell_y_[i] + dy;
-                const size_t k = bucket_of(cx, cy);
-                for (int s = bucket_start_[k]; s < bucket_start_[k + 1]; ++s) {
+                const size_t k = cell_of(cx, cy);
+                if (k == buckets_) continue;
+                for (int s = cell_start_[k]; s < cell_start_[k + 1]; ++s) {
                     const auto j = static_cast<size_t>(order_[s]);
-                    if (j <= i || cell_x_[j] != cx || cell_y_[j] != cy) continue;
+                    if (j <= i || (!dense_ && (cell_x_[j] != cx || cell_y_[j] != cy))) continue;
                     if (!within(i, j, position_[i], position_[j], reach_units_) || has_contact(i, j)) continue;
                     cm.AddPair(proxies_[i], proxies_[j]);
                 }

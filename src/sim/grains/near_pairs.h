@@ -39,21 +39,39 @@ public:
     // Before each engine step: far contacts destroyed, near pairs given one.
     void before_step(SimWorld& w);
 
+    // Whether the last pass sorted the grains on a dense grid (false: hashed buckets), for tests.
+    bool dense_grid() const { return dense_; }
+
 private:
     void map_proxies(SimWorld& w);
-    bool within(size_t i, size_t j, b2Vec2 pi, b2Vec2 pj, float gap) const;
+    // Far grain contacts destroyed; the kept pairs listed by their lower grain (has_contact).
+    void prune_contacts(SimWorld& w);
+    // The grains sorted into cells at least one reach across: a dense grid over the pile's cells, or
+    // hashed buckets when a grain has flown so far that the dense grid would be too big.
+    void sort_into_cells(size_t n);
+    bool has_contact(size_t i, size_t j) const;  // i < j
+    bool within(size_t i, size_t j, b2Vec2 pi, b2Vec2 pj, float gap) const {
+        const float reach = radius_[i] + radius_[j] + gap;
+        return b2DistanceSquared(pi, pj) <= reach * reach;
+    }
 
-    static constexpr uint64_t kEmpty = ~uint64_t{0};
     float reach_units_;
     float keep_units_;
     float cell_units_ = 0.0f;
     std::vector<b2FixtureProxy*> proxies_;  // by grain index, found once after the pour
     std::vector<float> radius_;             // by grain index
-    // Scratch, kept between steps to avoid allocating: the grains' positions, the pairs that have a
-    // contact (an open-addressed set of index pairs), the cell grid.
+    // Scratch, kept between steps to avoid allocating: the grains' positions and cells; the pairs
+    // that have a contact, as a list of the higher grain's index per lower grain (kept_start_ and
+    // kept_other_, from the pairs kept_pairs_ collects); the grains in cell order (cell_start_ and
+    // order_; within a cell, by ascending index, so contacts are made in the same order either way).
     std::vector<b2Vec2> position_;
-    std::vector<uint64_t> pair_set_;
-    std::vector<int> cell_x_, cell_y_, bucket_start_, cursor_, order_;
+    std::vector<uint64_t> kept_pairs_;
+    std::vector<int> kept_start_, kept_other_;
+    std::vector<int> cell_x_, cell_y_, cell_start_, order_, cursor_;
+    bool dense_ = true;  // cells on a dense grid (else hashed into buckets)
+    int grid_x0_ = 0, grid_y0_ = 0, grid_w_ = 0, grid_h_ = 0;
+    size_t buckets_ = 0;
+    size_t cell_of(int cx, int cy) const;  // the cell's list in cell_start_; buckets_ if none
 };
 
 }  // namespace polyroll
