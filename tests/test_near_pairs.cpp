@@ -77,9 +77,12 @@ TEST_CASE("near contacts: with a grain flown far from the pile, the cells are ha
     w->near_pairs->before_step(*w);
     REQUIRE(w->near_pairs->dense_grid());  // a pile's cells: the dense grid
     // One grain a kilometre from the pile, as a grain that left through a wall would fly off: a dense
-    // grid over both would hold millions of cells, so the pass hashes them into buckets instead.
+    // grid over both would hold millions of cells, so the pass hashes them into buckets instead. Or
+    // ten million kilometres off, further in cells than an int counts (a diverging run's grain).
+    const float off_units = GENERATE(1.0e5f, 1.0e12f);
+    CAPTURE(off_units);
     b2Body* flown = w->grains.front();
-    flown->SetTransform(flown->GetPosition() + b2Vec2(1.0e5f, 0.0f), flown->GetAngle());
+    flown->SetTransform(flown->GetPosition() + b2Vec2(off_units, -off_units), flown->GetAngle());
     long touching = 0, missing = 0;
     for (int step = 0; step < 800; ++step) {
         w->near_pairs->before_step(*w);

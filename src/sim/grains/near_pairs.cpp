@@ -28,6 +28,16 @@ struct AllProxies {
     }
 };
 
+// A coordinate's cell, in cells: a grain flung far away, or a diverging run's infinity or NaN (the
+// run's divergence check reports it), gets a cell far from the pile's instead of overflowing an int.
+int cell_index(float cells) {
+    constexpr float kFar = 1.0e9f;
+    const float c = std::floor(cells);
+    if (!(c > -kFar)) return -static_cast<int>(kFar);
+    if (c > kFar) return static_cast<int>(kFar);
+    return static_cast<int>(c);
+}
+
 }  // namespace
 
 bool NearPairs::ShouldCollide(b2Fixture* a, b2Fixture* b) {
@@ -104,8 +114,8 @@ void NearPairs::sort_into_cells(size_t n) {
     int x_min = std::numeric_limits<int>::max(), y_min = x_min;
     int x_max = std::numeric_limits<int>::min(), y_max = x_max;
     for (size_t i = 0; i < n; ++i) {
-        cell_x_[i] = static_cast<int>(std::floor(position_[i].x / cell_units_));
-        cell_y_[i] = static_cast<int>(std::floor(position_[i].y / cell_units_));
+        cell_x_[i] = cell_index(position_[i].x / cell_units_);
+        cell_y_[i] = cell_index(position_[i].y / cell_units_);
         x_min = std::min(x_min, cell_x_[i]);
         x_max = std::max(x_max, cell_x_[i]);
         y_min = std::min(y_min, cell_y_[i]);
