@@ -92,22 +92,6 @@ void NearPairs::prune_contacts(SimWorld& w) {
     for (const uint64_t key : kept_pairs_) kept_other_[cursor_[key >> 32]++] = static_cast<int>(key & 0xFFFFFFFFu);
 }
 
-bool NearPairs::has_contact(size_t i, size_t j) const {
-    for (int k = kept_start_[i]; k < kept_start_[i + 1]; ++k) {
-        if (static_cast<size_t>(kept_other_[k]) == j) return true;
-    }
-    return false;
-}
-
-size_t NearPairs::cell_of(int cx, int cy) const {
-    if (dense_) {
-        if (cx < grid_x0_ || cy < grid_y0_ || cx - grid_x0_ >= grid_w_ || cy - grid_y0_ >= grid_h_) return buckets_;
-        return static_cast<size_t>(cy - grid_y0_) * static_cast<size_t>(grid_w_) + static_cast<size_t>(cx - grid_x0_);
-    }
-    const auto h = static_cast<uint32_t>(cx) * 73856093u ^ static_cast<uint32_t>(cy) * 19349663u;
-    return static_cast<size_t>(h) & (buckets_ - 1);
-}
-
 void NearPairs::sort_into_cells(size_t n) {
     cell_x_.resize(n);
     cell_y_.resize(n);
@@ -153,19 +137,30 @@ void NearPairs::before_step(SimWorld& w) {
     // Far grain contacts go (they do not touch, so they hold no impulse); the rest are remembered.
     prune_contacts(w);
 
-    // Near pairs, by grain and then by the cells around it (the order the contacts are made in).
+    // Near pairs, by grain, then by the cells around it row by row (the order the contacts are made
+    // in), each cell's grains in ascending order.
     sort_into_cells(n);
+    auto consider = [&](size_t i, size_t j) {
+        if (j <= i || !within(i, j, position_[i], position_[j], reach_units_) || has_contact(i, j)) return;
+        cm.AddPair(proxies_[i], proxies_[j]);
+    };
     for (size_t i = 0; i < n; ++i) {
         for (int dy = -1; dy <= 1; ++dy) {
+            const int cy = cell_y_[i] + dy;
+            if (dense_) {
+                // A row's three cells sit side by side in the grid: one run of grains.
+                if (cy < grid_y0_ || cy - grid_y0_ >= grid_h_) continue;
+                const int x_lo = std::max(cell_x_[i] - 1, grid_x0_), x_hi = std::min(cell_x_[i] + 1, grid_x0_ + grid_w_ - 1);
+                const int end = cell_start_[cell_of(x_hi, cy) + 1];
+                for (int s = cell_start_[cell_of(x_lo, cy)]; s < end; ++s) consider(i, static_cast<size_t>(order_[s]));
+                continue;
+            }
             for (int dx = -1; dx <= 1; ++dx) {
-                const int cx = cell_x_[i] + dx, cy = cell_y_[i] + dy;
+                const int cx = cell_x_[i] + dx;
                 const size_t k = cell_of(cx, cy);
-                if (k == buckets_) continue;
                 for (int s = cell_start_[k]; s < cell_start_[k + 1]; ++s) {
                     const auto j = static_cast<size_t>(order_[s]);
-                    if (j <= i || (!dense_ && (cell_x_[j] != cx || cell_y_[j] != cy))) continue;
-                    if (!within(i, j, position_[i], position_[j], reach_units_) || has_contact(i, j)) continue;
-                    cm.AddPair(proxies_[i], proxies_[j]);
+                    if (cell_x_[j] == cx && cell_y_[j] == cy) consider(i, j);  // a bucket holds other cells too
                 }
             }
         }
