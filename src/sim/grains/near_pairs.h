@@ -49,6 +49,15 @@ private:
     // The grains sorted into cells at least one reach across: a dense grid over the pile's cells, or
     // hashed buckets when a grain has flown so far that the dense grid would be too big.
     void sort_into_cells(size_t n);
+    // The cell's list in cell_start_; on the dense grid, buckets_ for a cell outside it.
+    size_t cell_of(int cx, int cy) const {
+        if (dense_) {
+            if (cx < grid_x0_ || cy < grid_y0_ || cx - grid_x0_ >= grid_w_ || cy - grid_y0_ >= grid_h_) return buckets_;
+            return static_cast<size_t>(cy - grid_y0_) * static_cast<size_t>(grid_w_) + static_cast<size_t>(cx - grid_x0_);
+        }
+        const auto h = static_cast<uint32_t>(cx) * 73856093u ^ static_cast<uint32_t>(cy) * 19349663u;
+        return static_cast<size_t>(h) & (buckets_ - 1);
+    }
     bool has_contact(size_t i, size_t j) const {  // i < j
         for (int k = kept_start_[i]; k < kept_start_[i + 1]; ++k) {
             if (static_cast<size_t>(kept_other_[k]) == j) return true;
@@ -76,15 +85,6 @@ private:
     bool dense_ = true;  // cells on a dense grid (else hashed into buckets)
     int grid_x0_ = 0, grid_y0_ = 0, grid_w_ = 0, grid_h_ = 0;
     size_t buckets_ = 0;
-    // The cell's list in cell_start_; on the dense grid, buckets_ for a cell outside it.
-    size_t cell_of(int cx, int cy) const {
-        if (dense_) {
-            if (cx < grid_x0_ || cy < grid_y0_ || cx - grid_x0_ >= grid_w_ || cy - grid_y0_ >= grid_h_) return buckets_;
-            return static_cast<size_t>(cy - grid_y0_) * static_cast<size_t>(grid_w_) + static_cast<size_t>(cx - grid_x0_);
-        }
-        const auto h = static_cast<uint32_t>(cx) * 73856093u ^ static_cast<uint32_t>(cy) * 19349663u;
-        return static_cast<size_t>(h) & (buckets_ - 1);
-    }
 };
 
 }  // namespace polyroll
